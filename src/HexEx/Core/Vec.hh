@@ -1,0 +1,17 @@
+#pragma once
+/// @file Vec.hh
+/// Vector types: OpenMesh's Vec3d for points and parameters, Vec3i for integer grid points.
+
+#include <OpenMesh/Core/Geometry/VectorT.hh>
+
+namespace HexEx {
+
+/// A point or parameter in R^3 (the vector type OpenVolumeMesh's kernels use).
+using Vec3d = OpenMesh::Vec3d;
+/// An integer grid point.
+using Vec3i = OpenMesh::Vec3i;
+
+/// The integer grid point as a double vector (exact for |x| < 2^53).
+inline Vec3d toVec3d(const Vec3i& v) { return Vec3d(v[0], v[1], v[2]); }
+
+} // namespace HexEx

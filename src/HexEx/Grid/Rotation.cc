@@ -1,0 +1,99 @@
+#include "Rotation.hh"
+
+namespace HexEx {
+
+namespace {
+
+/// The group tables, built once from the definition (signed permutations with det +1).
+struct RotationTables {
+    std::array<std::array<AxisDir, 3>, 24> images{};  // image direction of +x, +y, +z
+    std::array<std::array<std::uint8_t, 24>, 24> mul{};
+    std::array<std::uint8_t, 24> inv{};
+    std::array<std::uint8_t, 24> angle{};
+
+    RotationTables() {
+        static const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+        int n = 0;
+        for (const auto& p : perms) {
+            const int parity = (&p - perms) < 3 ? 1 : -1;
+            for (int s = 0; s < 8; ++s) {
+                const int sg[3] = {(s & 1) ? -1 : 1, (s & 2) ? -1 : 1, (s & 4) ? -1 : 1};
+                if (parity * sg[0] * sg[1] * sg[2] != 1) continue;
+                for (int j = 0; j < 3; ++j) images[n][j] = makeDir(p[j], sg[j]);
+                ++n;
+            }
+        }
+        for (int a = 0; a < 24; ++a)
+            for (int b = 0; b < 24; ++b) {
+                std::array<AxisDir, 3> c;
+                for (int j = 0; j < 3; ++j) {
+                    const AxisDir db = images[b][j];
+                    const AxisDir da = images[a][dirAxis(db)];
+                    c[j] = dirSign(db) > 0 ? da : dirNeg(da);
+                }
+                for (int k = 0; k < 24; ++k)
+                    if (images[k] == c) mul[a][b] = static_cast<std::uint8_t>(k);
+            }
+        for (int a = 0; a < 24; ++a)
+            for (int b = 0; b < 24; ++b)
+                if (mul[a][b] == 0) inv[a] = static_cast<std::uint8_t>(b);
+        for (int a = 0; a < 24; ++a) {
+            int trace = 0;
+            for (int j = 0; j < 3; ++j)
+                if (dirAxis(images[a][j]) == j) trace += dirSign(images[a][j]);
+            // trace 3: identity, 1: 90 deg, -1: 180 deg, 0: 120 deg
+            angle[a] = static_cast<std::uint8_t>(trace == 3 ? 0 : trace == 1 ? 1 : trace == -1 ? 2 : 3);
+        }
+    }
+};
+
+const RotationTables& tables() {
+    static const RotationTables t;  // immutable after construction: not mutable global state
+    return t;
+}
+
+} // namespace
+
+int frameHandedness(AxisDir a, AxisDir b, AxisDir c) {
+    if (dirAxis(a) == dirAxis(b) || dirAxis(b) == dirAxis(c) || dirAxis(a) == dirAxis(c)) return 0;
+    return dirCross(a, b) == c ? 1 : -1;
+}
+
+AxisDir dirCross(AxisDir a, AxisDir b) {
+    const int ia = dirAxis(a), ib = dirAxis(b);
+    const int ic = 3 - ia - ib;
+    const int cyclic = ((ia + 1) % 3 == ib) ? 1 : -1;
+    return makeDir(ic, cyclic * dirSign(a) * dirSign(b));
+}
+
+int Rotation::perm(int j) const { return dirAxis(tables().images[idx_][j]); }
+int Rotation::sign(int j) const { return dirSign(tables().images[idx_][j]); }
+
+Vec3d Rotation::apply(const Vec3d& u) const {
+    Vec3d r;
+    for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
+    return r;
+}
+
+Vec3i Rotation::apply(const Vec3i& u) const {
+    Vec3i r;
+    for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
+    return r;
+}
+
+AxisDir Rotation::apply(AxisDir d) const {
+    const AxisDir img = tables().images[idx_][dirAxis(d)];
+    return dirSign(d) > 0 ? img : dirNeg(img);
+}
+
+Rotation Rotation::operator*(const Rotation& o) const { return Rotation(tables().mul[idx_][o.idx_]); }
+Rotation Rotation::inverse() const { return Rotation(tables().inv[idx_]); }
+int Rotation::angleClass() const { return tables().angle[idx_]; }
+
+int Rotation::fromColumns(const std::array<AxisDir, 3>& images) {
+    for (int k = 0; k < 24; ++k)
+        if (tables().images[k] == images) return k;
+    return -1;
+}
+
+} // namespace HexEx

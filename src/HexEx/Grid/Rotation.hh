@@ -1,0 +1,74 @@
+#pragma once
+/// @file Rotation.hh
+/// The chiral cubical group: the 24 rotations that map the coordinate axes onto
+/// themselves, as signed axis permutations with composition and inverse tables.
+
+#include "../Core/Vec.hh"
+
+#include <array>
+#include <cstdint>
+
+namespace HexEx {
+
+/// An axis direction: 0..5 = +x, -x, +y, -y, +z, -z (axis = code/2, negative if code is odd).
+using AxisDir = std::uint8_t;
+
+/// Axis (0,1,2) of a direction code.
+inline int dirAxis(AxisDir d) { return d >> 1; }
+/// Sign (+1/-1) of a direction code.
+inline int dirSign(AxisDir d) { return (d & 1) ? -1 : 1; }
+/// The opposite direction.
+inline AxisDir dirNeg(AxisDir d) { return static_cast<AxisDir>(d ^ 1); }
+/// The direction as an integer vector.
+inline Vec3i dirVec(AxisDir d) { Vec3i v(0, 0, 0); v[dirAxis(d)] = dirSign(d); return v; }
+/// Direction code from axis and sign.
+inline AxisDir makeDir(int axis, int sign) { return static_cast<AxisDir>(2 * axis + (sign < 0 ? 1 : 0)); }
+/// Handedness of the frame (a, b, c): +1 if a x b = c, -1 if a x b = -c, 0 if axes repeat.
+int frameHandedness(AxisDir a, AxisDir b, AxisDir c);
+/// The direction a x b (a, b on different axes).
+AxisDir dirCross(AxisDir a, AxisDir b);
+
+/// One of the 24 orientation-preserving signed axis permutations, stored as an index 0..23.
+/// Index 0 is the identity. R maps axis j to axis perm(j) with sign sign(j).
+class Rotation {
+public:
+    /// Number of rotations in the group.
+    static constexpr int kCount = 24;
+    /// The identity.
+    constexpr Rotation() = default;
+    /// Rotation number @p idx (0..23).
+    explicit constexpr Rotation(int idx) : idx_(static_cast<std::uint8_t>(idx)) {}
+    /// Index 0..23.
+    int index() const { return idx_; }
+    /// True for the identity.
+    bool is_identity() const { return idx_ == 0; }
+    /// Image axis of axis @p j.
+    int perm(int j) const;
+    /// Sign of the image of axis @p j.
+    int sign(int j) const;
+    /// Entry (row r, column c) of the matrix.
+    int matrix(int r, int c) const { return perm(c) == r ? sign(c) : 0; }
+    /// R u for a double vector (exact: only permutes and negates).
+    Vec3d apply(const Vec3d& u) const;
+    /// R u for an integer vector.
+    Vec3i apply(const Vec3i& u) const;
+    /// Image of a direction code.
+    AxisDir apply(AxisDir d) const;
+    /// Composition: (*this)*(o), i.e. apply @p o first.
+    Rotation operator*(const Rotation& o) const;
+    /// The inverse rotation.
+    Rotation inverse() const;
+    /// Equality.
+    bool operator==(const Rotation& o) const { return idx_ == o.idx_; }
+    /// Inequality.
+    bool operator!=(const Rotation& o) const { return idx_ != o.idx_; }
+    /// Finds the rotation with the given matrix columns (image of each axis), or -1.
+    static int fromColumns(const std::array<AxisDir, 3>& images);
+    /// Angle class: 0 (identity), 1 (90 deg), 2 (180 deg), 3 (120 deg about a diagonal).
+    int angleClass() const;
+
+private:
+    std::uint8_t idx_ = 0;
+};
+
+} // namespace HexEx

@@ -1,0 +1,250 @@
+#include "TetMesh.hh"
+
+#include "../Core/Error.hh"
+
+#include <algorithm>
+#include <sstream>
+
+namespace HexEx {
+
+constexpr int TetMesh::kFaceCorners[4][3];
+constexpr int TetMesh::kEdgeCorners[6][2];
+
+VertexHandle TetMesh::add_vertex(const Vec3d& p) {
+    positions_.push_back(p);
+    vprops_.resize(positions_.size());
+    return VertexHandle(static_cast<int>(positions_.size()) - 1);
+}
+
+CellHandle TetMesh::add_cell(const std::array<VertexHandle, 4>& v) {
+    cells_.push_back(v);
+    adjacency_built_ = false;
+    cprops_.resize(cells_.size());
+    hfprops_.resize(4 * cells_.size());
+    ccprops_.resize(4 * cells_.size());
+    return CellHandle(static_cast<int>(cells_.size()) - 1);
+}
+
+void TetMesh::reserve(std::size_t nv, std::size_t nc) {
+    positions_.reserve(nv);
+    cells_.reserve(nc);
+}
+
+void TetMesh::swap_corners(CellHandle c, int i, int j) {
+    std::swap(cells_[c.uidx()][i], cells_[c.uidx()][j]);
+    adjacency_built_ = false;
+}
+
+std::array<VertexHandle, 3> TetMesh::halfface_vertices(HalfFaceHandle hf) const {
+    const auto& cv = cells_[cell(hf).uidx()];
+    const int* fc = kFaceCorners[opposite_corner(hf)];
+    return {cv[fc[0]], cv[fc[1]], cv[fc[2]]};
+}
+
+std::array<HalfFaceHandle, 2> TetMesh::face_halffaces(FaceHandle f) const {
+    const auto& h = face_halffaces_[f.uidx()];
+    return {HalfFaceHandle(h[0]), HalfFaceHandle(h[1])};
+}
+
+EdgeHandle TetMesh::find_edge(VertexHandle a, VertexHandle b) const {
+    if (b < a) std::swap(a, b);
+    const int* first = ve_idx_.data() + ve_off_[a.uidx()];
+    const int* last = ve_idx_.data() + ve_off_[a.uidx() + 1];
+    // Edges of vertex a (as smaller endpoint) are sorted by their other endpoint.
+    const int* it = std::lower_bound(first, last, b.idx(), [&](int e, int v) { return edges_[e][1].idx() < v; });
+    if (it != last && edges_[*it][1] == b) return EdgeHandle(*it);
+    return EdgeHandle();
+}
+
+void TetMesh::build_adjacency() {
+    const std::size_t nv = positions_.size(), nc = cells_.size();
+    // Vertex -> cells (counting sort keeps cells ascending).
+    vc_off_.assign(nv + 1, 0);
+    for (const auto& c : cells_)
+        for (auto v : c) ++vc_off_[v.uidx() + 1];
+    for (std::size_t i = 0; i < nv; ++i) vc_off_[i + 1] += vc_off_[i];
+    vc_idx_.resize(vc_off_[nv]);
+    {
+        std::vector<int> fill(vc_off_.begin(), vc_off_.end() - 1);
+        for (std::size_t c = 0; c < nc; ++c)
+            for (auto v : cells_[c]) vc_idx_[fill[v.uidx()]++] = static_cast<int>(c);
+    }
+
+    // Opposite halffaces: search the star of the face's least-used vertex.
+    opposite_.assign(4 * nc, -2);  // -2: not yet searched, -1: boundary
+    for (std::size_t c = 0; c < nc; ++c) {
+        for (int i = 0; i < 4; ++i) {
+            const std::size_t hf = 4 * c + i;
+            if (opposite_[hf] != -2) continue;
+            VertexHandle fv[3];
+            for (int k = 0; k < 3; ++k) fv[k] = cells_[c][kFaceCorners[i][k]];
+            int best = 0;
+            for (int k = 1; k < 3; ++k)
+                if (vc_off_[fv[k].uidx() + 1] - vc_off_[fv[k].uidx()] <
+                    vc_off_[fv[best].uidx() + 1] - vc_off_[fv[best].uidx()])
+                    best = k;
+            int found = -1, n_found = 0;
+            for (int o = vc_off_[fv[best].uidx()]; o < vc_off_[fv[best].uidx() + 1]; ++o) {
+                const int c2 = vc_idx_[o];
+                if (c2 == static_cast<int>(c)) continue;
+                const auto& cv = cells_[c2];
+                int mask = 0;
+                for (int k = 0; k < 3; ++k)
+                    for (int j = 0; j < 4; ++j)
+                        if (cv[j] == fv[k]) mask |= 1 << j;
+                if (__builtin_popcount(mask) == 3) {
+                    ++n_found;
+                    found = 4 * c2 + __builtin_ctz(~mask & 0xF);
+                }
+            }
+            if (n_found > 1) {
+                std::ostringstream os;
+                os << "non-manifold mesh: face (" << fv[0] << ", " << fv[1] << ", " << fv[2] << ") of tet " << c
+                   << " is shared by " << (n_found + 1) << " tets";
+                throw InputError(os.str());
+            }
+            if (found >= 0 && opposite_[found] != -2) {
+                std::ostringstream os;
+                os << "non-manifold mesh: tet " << c << " repeats a face of tet " << found / 4;
+                throw InputError(os.str());
+            }
+            opposite_[hf] = found;
+            if (found >= 0) opposite_[found] = static_cast<int>(hf);
+        }
+    }
+
+    // Faces.
+    halfface_face_.assign(4 * nc, -1);
+    face_halffaces_.clear();
+    face_halffaces_.reserve(2 * nc + 1);
+    n_boundary_faces_ = 0;
+    for (std::size_t hf = 0; hf < 4 * nc; ++hf) {
+        const int opp = opposite_[hf];
+        if (opp >= 0 && opp < static_cast<int>(hf)) {
+            halfface_face_[hf] = halfface_face_[opp];
+            continue;
+        }
+        halfface_face_[hf] = static_cast<int>(face_halffaces_.size());
+        face_halffaces_.push_back({static_cast<int>(hf), opp});
+        if (opp < 0) ++n_boundary_faces_;
+    }
+
+    // Edges, grouped by smaller endpoint and sorted by the larger one.
+    edges_.clear();
+    ve_off_.assign(nv + 1, 0);
+    ve_idx_.clear();
+    std::vector<int> nbrs;
+    for (std::size_t v = 0; v < nv; ++v) {
+        nbrs.clear();
+        for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
+            for (auto w : cells_[vc_idx_[o]])
+                if (w.idx() > static_cast<int>(v)) nbrs.push_back(w.idx());
+        std::sort(nbrs.begin(), nbrs.end());
+        nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+        for (int w : nbrs) {
+            ve_idx_.push_back(static_cast<int>(edges_.size()));
+            edges_.push_back({VertexHandle(static_cast<int>(v)), VertexHandle(w)});
+        }
+        ve_off_[v + 1] = static_cast<int>(ve_idx_.size());
+    }
+    cell_edges_.resize(6 * nc);
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int k = 0; k < 6; ++k)
+            cell_edges_[6 * c + k] = find_edge(cells_[c][kEdgeCorners[k][0]], cells_[c][kEdgeCorners[k][1]]).idx();
+
+    // Edge -> cells in cyclic order: walk across the faces that contain the edge.
+    const std::size_t ne = edges_.size();
+    ec_off_.assign(ne + 1, 0);
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int k = 0; k < 6; ++k) ++ec_off_[cell_edges_[6 * c + k] + 1];
+    for (std::size_t e = 0; e < ne; ++e) ec_off_[e + 1] += ec_off_[e];
+    ec_idx_.assign(ec_off_[ne], -1);
+    std::vector<int> start(ne, -1);     // a cell of the edge, preferring one at the boundary
+    std::vector<int> start_hf(ne, -1);  // the halfface of start through which the walk must NOT leave
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int k = 0; k < 6; ++k) {
+            const int e = cell_edges_[6 * c + k];
+            const int a = kEdgeCorners[k][0], b = kEdgeCorners[k][1];
+            int others[2], n = 0;
+            for (int j = 0; j < 4; ++j)
+                if (j != a && j != b) others[n++] = j;
+            for (int s = 0; s < 2; ++s)
+                if (opposite_[4 * c + others[s]] < 0) {
+                    start[e] = static_cast<int>(c);
+                    start_hf[e] = static_cast<int>(4 * c + others[s]);
+                }
+            if (start[e] < 0) start[e] = static_cast<int>(c);
+        }
+    boundary_edge_.assign(ne, 0);
+    for (std::size_t e = 0; e < ne; ++e) {
+        int c = start[e], in_hf = start_hf[e];
+        if (in_hf >= 0) boundary_edge_[e] = 1;
+        int pos = ec_off_[e];
+        const int end = ec_off_[e + 1];
+        while (pos < end) {
+            ec_idx_[pos++] = c;
+            // The two halffaces of c that contain the edge: opposite the corners not on it.
+            int k = 0;
+            while (cell_edges_[6 * c + k] != static_cast<int>(e)) ++k;
+            const int a = kEdgeCorners[k][0], b = kEdgeCorners[k][1];
+            int out = -1;
+            for (int j = 0; j < 4; ++j)
+                if (j != a && j != b && 4 * c + j != in_hf) {
+                    out = 4 * c + j;
+                    if (in_hf < 0) break;  // first step of an interior ring: either direction
+                }
+            const int next = opposite_[out];
+            if (next < 0 || next / 4 == start[e]) break;
+            c = next / 4;
+            in_hf = next;
+        }
+        // A non-manifold edge leaves slots unfilled; check_manifold() reports it.
+    }
+
+    boundary_vertex_.assign(nv, 0);
+    for (std::size_t hf = 0; hf < 4 * nc; ++hf)
+        if (opposite_[hf] < 0)
+            for (int k = 0; k < 3; ++k) boundary_vertex_[cells_[hf / 4][kFaceCorners[hf % 4][k]].uidx()] = 1;
+    adjacency_built_ = true;
+}
+
+std::string TetMesh::check_manifold() const {
+    std::ostringstream os;
+    for (std::size_t e = 0; e < edges_.size(); ++e)
+        for (int o = ec_off_[e]; o < ec_off_[e + 1]; ++o)
+            if (ec_idx_[o] < 0) {
+                os << "non-manifold edge " << e << " (" << edges_[e][0] << ", " << edges_[e][1]
+                   << "): its tets do not form a single fan";
+                return os.str();
+            }
+    // Vertex stars must be connected through faces that contain the vertex.
+    std::vector<int> stack, mark(cells_.size(), -1);
+    for (std::size_t v = 0; v < positions_.size(); ++v) {
+        const int first = vc_off_[v], last = vc_off_[v + 1];
+        if (first == last) continue;
+        int reached = 0;
+        stack.assign(1, vc_idx_[first]);
+        mark[vc_idx_[first]] = static_cast<int>(v);
+        while (!stack.empty()) {
+            const int c = stack.back();
+            stack.pop_back();
+            ++reached;
+            for (int j = 0; j < 4; ++j) {
+                if (cells_[c][j].idx() == static_cast<int>(v)) continue;  // face opposite v does not contain it
+                const int opp = opposite_[4 * c + j];
+                if (opp >= 0 && mark[opp / 4] != static_cast<int>(v)) {
+                    mark[opp / 4] = static_cast<int>(v);
+                    stack.push_back(opp / 4);
+                }
+            }
+        }
+        if (reached != last - first) {
+            os << "non-manifold vertex " << v << ": its " << (last - first)
+               << " tets form more than one connected fan";
+            return os.str();
+        }
+    }
+    return {};
+}
+
+} // namespace HexEx

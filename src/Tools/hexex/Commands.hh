@@ -1,0 +1,20 @@
+#pragma once
+/// @file Commands.hh
+/// Subcommands of the hexex tool. Each returns the process exit status:
+/// 0 success, 2 bad input or usage, 3 output written but not all-hex.
+
+#include <string>
+#include <vector>
+
+namespace HexExTool {
+
+/// Arguments after the subcommand name.
+using Args = std::vector<std::string>;
+
+int runInfo(const Args& args);      ///< hexex info IN [--json]
+int runExtract(const Args& args);   ///< hexex extract IN -o OUT [...]
+int runGenerate(const Args& args);  ///< hexex generate SHAPE [...] -o OUT.hexex
+int runPerturb(const Args& args);   ///< hexex perturb IN -a A --seed S -o OUT.hexex
+int runValidate(const Args& args);  ///< hexex validate MESH [--json]
+
+} // namespace HexExTool

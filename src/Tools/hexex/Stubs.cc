@@ -1,0 +1,10 @@
+// Temporary stubs; each subcommand gets its own file (InfoCommand.cc, ...) that replaces one line here.
+#include "Commands.hh"
+#include <iostream>
+namespace HexExTool {
+int runInfo(const Args&) { std::cerr << "not implemented\n"; return 2; }
+int runExtract(const Args&) { std::cerr << "not implemented\n"; return 2; }
+int runGenerate(const Args&) { std::cerr << "not implemented\n"; return 2; }
+int runPerturb(const Args&) { std::cerr << "not implemented\n"; return 2; }
+int runValidate(const Args&) { std::cerr << "not implemented\n"; return 2; }
+}

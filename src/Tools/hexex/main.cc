@@ -1,0 +1,42 @@
+/// @file main.cc
+/// Entry point of the hexex tool: dispatches to the subcommands.
+
+#include "Commands.hh"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+
+namespace {
+const char* kUsage =
+    "usage: hexex <command> [options]\n"
+    "commands:\n"
+    "  info IN [--json]                          statistics of a .hexex tet mesh with its map\n"
+    "  extract IN -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
+    "                                            extract the hex mesh (.vtu, .vtk, .ovm, .mesh)\n"
+    "  generate cube|cylinder|ring|twisted-ring [options] -o OUT.hexex\n"
+    "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
+    "  validate MESH [--json]                    check a hex mesh file\n"
+    "exit status: 0 ok, 2 bad input or usage, 3 output not all-hex\n";
+}
+
+int main(int argc, char** argv) {
+    if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+        std::cerr << kUsage;
+        return argc < 2 ? 2 : 0;
+    }
+    const std::string cmd = argv[1];
+    HexExTool::Args args(argv + 2, argv + argc);
+    try {
+        if (cmd == "info") return HexExTool::runInfo(args);
+        if (cmd == "extract") return HexExTool::runExtract(args);
+        if (cmd == "generate") return HexExTool::runGenerate(args);
+        if (cmd == "perturb") return HexExTool::runPerturb(args);
+        if (cmd == "validate") return HexExTool::runValidate(args);
+    } catch (const std::exception& e) {
+        std::cerr << "hexex " << cmd << ": error: " << e.what() << "\n";
+        return 2;
+    }
+    std::cerr << "hexex: unknown command '" << cmd << "'\n" << kUsage;
+    return 2;
+}
