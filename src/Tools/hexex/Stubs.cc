@@ -2,7 +2,6 @@
 #include "Commands.hh"
 #include <iostream>
 namespace HexExTool {
-int runInfo(const Args&) { std::cerr << "not implemented\n"; return 2; }
 int runExtract(const Args&) { std::cerr << "not implemented\n"; return 2; }
 int runGenerate(const Args&) { std::cerr << "not implemented\n"; return 2; }
 int runPerturb(const Args&) { std::cerr << "not implemented\n"; return 2; }

@@ -1,0 +1,384 @@
+/// @file HexExFile.cc
+/// Implementation of the `.hexex` reader (in-memory tokenizer with std::from_chars) and writer.
+
+#include "HexExFile.hh"
+
+#include "../Core/Error.hh"
+#include "../Predicates/ExactPredicates.hh"
+
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <climits>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+
+namespace HexEx {
+
+namespace {
+
+/// Largest vertex count accepted (vertex handles are ints).
+constexpr long long kMaxVertices = INT_MAX;
+/// Largest tet count accepted (halffaces 4*c and cell edges 6*c must fit an int).
+constexpr long long kMaxTets = INT_MAX / 8;
+
+/// Whitespace as understood by the format.
+inline bool isSpace(char ch) {
+    return ch == ' ' || ch == '\n' || ch == '\t' || ch == '\r' || ch == '\v' || ch == '\f';
+}
+
+/// A token quoted for an error message: at most 40 characters, non-printable bytes as '?'.
+std::string quoted(std::string_view tok) {
+    std::string s = "'";
+    const std::size_t n = std::min<std::size_t>(tok.size(), 40);
+    for (std::size_t i = 0; i < n; ++i) {
+        const unsigned char ch = static_cast<unsigned char>(tok[i]);
+        s += (ch >= 0x20 && ch < 0x7f) ? static_cast<char>(ch) : '?';
+    }
+    if (tok.size() > n) s += "...";
+    return s + "'";
+}
+
+/// Splits the text into whitespace-separated tokens, tracking line numbers, and parses
+/// them; every failure becomes an InputError "<name>:<line>: <reason>".
+class Parser {
+public:
+    Parser(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+
+    /// Throws InputError at @p line with @p reason.
+    [[noreturn]] void fail(int line, const std::string& reason) const {
+        throw InputError(name_ + ":" + std::to_string(line) + ": " + reason);
+    }
+
+    /// Skips whitespace; true if a token follows (then tokenLine() is its line).
+    bool atToken() {
+        while (pos_ < text_.size() && isSpace(text_[pos_])) {
+            if (text_[pos_] == '\n') ++line_;
+            ++pos_;
+        }
+        return pos_ < text_.size();
+    }
+
+    /// Line of the current position (of the next token after atToken()).
+    int line() const { return line_; }
+
+    /// Bytes not yet consumed.
+    std::size_t remaining() const { return text_.size() - pos_; }
+
+    /// Next token; @p what() describes the expected item for the end-of-file message.
+    template <class What>
+    std::string_view token(const What& what) {
+        if (!atToken()) fail(line_, "unexpected end of file: expected " + what());
+        const std::size_t start = pos_;
+        while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
+        return text_.substr(start, pos_ - start);
+    }
+
+    /// Next token as a signed integer (no range check beyond long long).
+    template <class What>
+    long long integer(const What& what) {
+        const std::string_view tok = token(what);
+        const char* first = tok.data();
+        const char* last = first + tok.size();
+        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
+        long long value = 0;
+        const auto res = std::from_chars(first, last, value);
+        if (res.ec == std::errc::result_out_of_range && res.ptr == last)
+            fail(line_, "integer " + quoted(tok) + " out of range for " + what());
+        if (res.ec != std::errc() || res.ptr != last)
+            fail(line_, "expected an integer for " + what() + ", got " + quoted(tok));
+        return value;
+    }
+
+    /// Next token as a finite double.
+    template <class What>
+    double real(const What& what) {
+        const std::string_view tok = token(what);
+        const char* first = tok.data();
+        const char* last = first + tok.size();
+        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
+        double value = 0;
+        const auto res = std::from_chars(first, last, value, std::chars_format::general);
+        if (res.ec == std::errc::result_out_of_range && res.ptr == last)
+            fail(line_, "number " + quoted(tok) + " out of double range for " + what());
+        if (res.ec != std::errc() || res.ptr != last)
+            fail(line_, "expected a number for " + what() + ", got " + quoted(tok));
+        if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoted(tok) + " for " + what());
+        return value;
+    }
+
+    /// Next token as a count in [0, maxCount].
+    long long count(const char* what, long long maxCount) {
+        const auto desc = [&] { return std::string(what); };
+        const long long n = integer(desc);
+        if (n < 0) fail(line_, "negative " + std::string(what) + " " + std::to_string(n));
+        if (n > maxCount)
+            fail(line_, std::string(what) + " " + std::to_string(n) + " too large (at most " +
+                            std::to_string(maxCount) + ")");
+        return n;
+    }
+
+private:
+    std::string_view text_;
+    const std::string& name_;
+    std::size_t pos_ = 0;
+    int line_ = 1;
+};
+
+const char* const kAxisName[3] = {"x", "y", "z"};
+const char* const kParamName[3] = {"u", "v", "w"};
+
+/// Swaps corners 2 and 3 of every tet and of its parameters.
+void reorientAll(std::vector<std::array<int, 4>>& cells, CornerParams& params) {
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        std::swap(cells[c][2], cells[c][3]);
+        std::swap(params[c][2], params[c][3]);
+    }
+}
+
+/// Appends "tet K (line L), ..." for up to five tets of @p list.
+std::string listTets(const std::vector<std::size_t>& list, const std::vector<int>& lines) {
+    std::string s;
+    const std::size_t n = std::min<std::size_t>(list.size(), 5);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (i) s += ", ";
+        s += "tet " + std::to_string(list[i]) + " (line " + std::to_string(lines[list[i]]) + ")";
+    }
+    if (list.size() > n) s += " and " + std::to_string(list.size() - n) + " more";
+    return s;
+}
+
+} // namespace
+
+ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name, ReadReport* report) {
+    Parser in(text, name);
+
+    // Vertices.
+    const long long nv = in.count("vertex count", kMaxVertices);
+    if (nv == 0) in.fail(in.line(), "mesh has no vertices (vertex count is 0)");
+    std::vector<Vec3d> positions;
+    // A vertex takes at least 6 bytes ("0 0 0\n"): never reserve more than the file can hold.
+    positions.reserve(static_cast<std::size_t>(std::min<long long>(nv, in.remaining() / 5 + 1)));
+    for (long long v = 0; v < nv; ++v) {
+        Vec3d p;
+        for (int k = 0; k < 3; ++k)
+            p[k] = in.real([&] {
+                return std::string(kAxisName[k]) + " coordinate of vertex " + std::to_string(v) + " (file declares " +
+                       std::to_string(nv) + " vertices)";
+            });
+        positions.push_back(p);
+    }
+
+    // Tets.
+    const long long nc = in.count("tet count", kMaxTets);
+    if (nc == 0) in.fail(in.line(), "mesh has no tets (tet count is 0)");
+    const std::size_t ncReserve = static_cast<std::size_t>(std::min<long long>(nc, in.remaining() / 31 + 1));
+    std::vector<std::array<int, 4>> cells;
+    CornerParams params;
+    std::vector<int> lines;  // line of each tet's first token
+    cells.reserve(ncReserve);
+    params.reserve(ncReserve);
+    lines.reserve(ncReserve);
+    for (long long c = 0; c < nc; ++c) {
+        const auto tetDesc = [&] {
+            return "tet " + std::to_string(c) + " (file declares " + std::to_string(nc) + " tets)";
+        };
+        std::array<int, 4> cv;
+        for (int i = 0; i < 4; ++i) {
+            const auto desc = [&] { return "vertex index " + std::to_string(i) + " of " + tetDesc(); };
+            if (i == 0) {
+                in.atToken();
+                lines.push_back(in.line());
+            }
+            const long long idx = in.integer(desc);
+            if (idx < 0 || idx >= nv)
+                in.fail(in.line(), "vertex index " + std::to_string(idx) + " of tet " + std::to_string(c) +
+                                       " out of range [0, " + std::to_string(nv) + ")");
+            cv[i] = static_cast<int>(idx);
+            for (int j = 0; j < i; ++j)
+                if (cv[j] == cv[i])
+                    in.fail(in.line(), "tet " + std::to_string(c) + " repeats vertex " + std::to_string(idx));
+        }
+        std::array<Vec3d, 4> cp;
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k)
+                cp[i][k] = in.real([&] {
+                    return "parameter " + std::string(kParamName[k]) + " of corner " + std::to_string(i) + " of " +
+                           tetDesc();
+                });
+        cells.push_back(cv);
+        params.push_back(cp);
+    }
+    if (in.atToken()) in.fail(in.line(), "unexpected data after last tet");
+
+    // 3D orientation (exact): all positive, or all negative (mirrored), nothing else.
+    std::vector<std::size_t> negative, positive;
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+        const auto& cv = cells[c];
+        const int s = orient3d(positions[cv[0]], positions[cv[1]], positions[cv[2]], positions[cv[3]]);
+        if (s == 0) in.fail(lines[c], "tet " + std::to_string(c) + " is degenerate in 3D (zero volume)");
+        (s < 0 ? negative : positive).push_back(c);
+    }
+    std::vector<std::string> warnings;
+    bool reoriented = false;
+    if (positive.empty()) {
+        reorientAll(cells, params);
+        reoriented = true;
+        warnings.push_back(name + ": mesh is mirrored: all " + std::to_string(cells.size()) +
+                           " tets were negatively oriented and have been reoriented");
+    } else if (!negative.empty()) {
+        const std::string total = std::to_string(cells.size());
+        if (negative.size() <= positive.size())
+            in.fail(lines[negative.front()],
+                    "inconsistent tet orientation: " + std::to_string(negative.size()) + " of " + total +
+                        " tets are inverted in 3D (negatively oriented): " + listTets(negative, lines));
+        in.fail(lines[positive.front()],
+                "inconsistent tet orientation: " + std::to_string(positive.size()) + " of " + total +
+                    " tets are positively oriented while the others are inverted in 3D: " +
+                    listTets(positive, lines));
+    }
+
+    // Assemble the mesh.
+    ParametrizedTetMesh pm;
+    pm.mesh.reserve(positions.size(), cells.size());
+    for (const auto& p : positions) pm.mesh.add_vertex(p);
+    std::vector<char> used(positions.size(), 0);
+    for (const auto& cv : cells) {
+        pm.mesh.add_cell({VertexHandle(cv[0]), VertexHandle(cv[1]), VertexHandle(cv[2]), VertexHandle(cv[3])});
+        for (int v : cv) used[static_cast<std::size_t>(v)] = 1;
+    }
+    pm.params = std::move(params);
+    const auto nUnused = std::count(used.begin(), used.end(), 0);
+    if (nUnused > 0)
+        warnings.push_back(name + ": " + std::to_string(nUnused) + " of " + std::to_string(positions.size()) +
+                           " vertices are not used by any tet");
+
+    try {
+        pm.mesh.build_adjacency();
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
+    const std::string manifold = pm.mesh.check_manifold();
+    if (!manifold.empty()) throw InputError(name + ": " + manifold);
+
+    if (report) {
+        report->reoriented = reoriented;
+        report->warnings.insert(report->warnings.end(), warnings.begin(), warnings.end());
+    }
+    return pm;
+}
+
+ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, ReadReport* report) {
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(name + ": read error");
+    return readHexExBuffer(text, name, report);
+}
+
+ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file: is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
+    std::string text;
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size >= 0) {
+        text.resize(static_cast<std::size_t>(size));
+        in.seekg(0, std::ios::beg);
+        in.read(text.data(), size);
+        if (in.gcount() != size) throw InputError(path + ": read error");
+    } else {
+        in.clear();
+        in.seekg(0, std::ios::beg);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+        if (in.bad()) throw InputError(path + ": read error");
+    }
+    return readHexExBuffer(text, path, report);
+}
+
+namespace {
+
+/// Output buffer that flushes to a stream in large chunks.
+class Writer {
+public:
+    explicit Writer(std::ostream& out) : out_(out) { buf_.reserve(kChunk + 512); }
+    ~Writer() = default;
+
+    void put(double x) {
+        char tmp[64];
+        const auto res = std::to_chars(tmp, tmp + sizeof tmp, x);  // shortest round-trip form
+        buf_.append(tmp, res.ptr);
+    }
+    void put(long long x) {
+        char tmp[32];
+        const auto res = std::to_chars(tmp, tmp + sizeof tmp, x);
+        buf_.append(tmp, res.ptr);
+    }
+    void put(char ch) {
+        buf_ += ch;
+        if (ch == '\n' && buf_.size() >= kChunk) flush();
+    }
+    void flush() {
+        out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
+        buf_.clear();
+    }
+
+private:
+    static constexpr std::size_t kChunk = 1 << 20;
+    std::ostream& out_;
+    std::string buf_;
+};
+
+} // namespace
+
+void writeHexExStream(std::ostream& out, const ParametrizedTetMesh& pm) {
+    const TetMesh& mesh = pm.mesh;
+    if (pm.params.size() != mesh.n_cells())
+        throw std::invalid_argument("writeHexExStream: " + std::to_string(pm.params.size()) +
+                                    " parameter sets for " + std::to_string(mesh.n_cells()) + " tets");
+    Writer w(out);
+    w.put(static_cast<long long>(mesh.n_vertices()));
+    w.put('\n');
+    for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+        const Vec3d& p = mesh.position(VertexHandle(static_cast<int>(v)));
+        w.put(p[0]);
+        w.put(' ');
+        w.put(p[1]);
+        w.put(' ');
+        w.put(p[2]);
+        w.put('\n');
+    }
+    w.put(static_cast<long long>(mesh.n_cells()));
+    w.put('\n');
+    for (std::size_t c = 0; c < mesh.n_cells(); ++c) {
+        const auto& cv = mesh.cell_vertices(CellHandle(static_cast<int>(c)));
+        for (int i = 0; i < 4; ++i) {
+            w.put(static_cast<long long>(cv[i].idx()));
+            w.put(' ');
+        }
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k) {
+                w.put(pm.params[c][i][k]);
+                w.put(i == 3 && k == 2 ? '\n' : ' ');
+            }
+    }
+    w.flush();
+    out.flush();
+}
+
+void writeHexExFile(const std::string& path, const ParametrizedTetMesh& pm) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw std::runtime_error(path + ": cannot open file for writing: " + std::strerror(errno));
+    writeHexExStream(out, pm);
+    out.close();
+    if (!out) throw std::runtime_error(path + ": write error");
+}
+
+} // namespace HexEx

@@ -1,0 +1,126 @@
+/// @file InfoCommand.cc
+/// `hexex info IN [--json]`: statistics of a .hexex tet mesh with its map.
+
+#include "Commands.hh"
+
+#include <HexEx/Core/Error.hh>
+#include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/MapStatistics.hh>
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <string>
+
+namespace HexExTool {
+
+namespace {
+
+/// Shortest round-trip text of a double; "null" for non-finite values (JSON has none).
+std::string num(double x) {
+    if (!std::isfinite(x)) return "null";
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, res.ptr);
+}
+
+/// A JSON string literal.
+std::string jsonString(const std::string& s) {
+    std::string out = "\"";
+    for (const char ch : s) {
+        const unsigned char u = static_cast<unsigned char>(ch);
+        if (ch == '"' || ch == '\\') {
+            out += '\\';
+            out += ch;
+        } else if (ch == '\n') {
+            out += "\\n";
+        } else if (ch == '\t') {
+            out += "\\t";
+        } else if (u < 0x20) {
+            static const char* hex = "0123456789abcdef";
+            out += "\\u00";
+            out += hex[u >> 4];
+            out += hex[u & 15];
+        } else {
+            out += ch;
+        }
+    }
+    return out + "\"";
+}
+
+/// "[x, y, z]".
+std::string jsonVec(const HexEx::Vec3d& v) {
+    return "[" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + "]";
+}
+
+const char* kInfoUsage = "usage: hexex info IN.hexex [--json]\n";
+
+} // namespace
+
+int runInfo(const Args& args) {
+    std::string input;
+    bool json = false;
+    for (const auto& a : args) {
+        if (a == "--json") {
+            json = true;
+        } else if (a == "-h" || a == "--help") {
+            std::cout << kInfoUsage;
+            return 0;
+        } else if (!a.empty() && a[0] == '-' && a != "-") {
+            std::cerr << "hexex info: unknown option '" << a << "'\n" << kInfoUsage;
+            return 2;
+        } else if (input.empty()) {
+            input = a;
+        } else {
+            std::cerr << "hexex info: more than one input file given\n" << kInfoUsage;
+            return 2;
+        }
+    }
+    if (input.empty()) {
+        std::cerr << "hexex info: no input file given\n" << kInfoUsage;
+        return 2;
+    }
+
+    HexEx::ReadReport report;
+    HexEx::ParametrizedTetMesh pm;
+    try {
+        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &report)
+                          : HexEx::readHexExFile(input, &report);
+    } catch (const HexEx::InputError& e) {
+        std::cerr << "hexex info: error: " << e.what() << "\n";
+        return 2;
+    }
+    const HexEx::MapStatistics s = HexEx::computeMapStatistics(pm);
+
+    if (json) {
+        std::cout << "{\n"
+                  << "  \"vertices\": " << s.vertices << ",\n"
+                  << "  \"tets\": " << s.tets << ",\n"
+                  << "  \"boundary_faces\": " << s.boundary_faces << ",\n"
+                  << "  \"flipped_tets\": " << s.flipped_tets << ",\n"
+                  << "  \"degenerate_tets\": " << s.degenerate_tets << ",\n"
+                  << "  \"parametric_volume\": " << num(s.parametric_volume) << ",\n"
+                  << "  \"param_bbox_min\": " << jsonVec(s.param_bbox_min) << ",\n"
+                  << "  \"param_bbox_max\": " << jsonVec(s.param_bbox_max) << ",\n"
+                  << "  \"warnings\": [";
+        for (std::size_t i = 0; i < report.warnings.size(); ++i)
+            std::cout << (i ? ", " : "") << jsonString(report.warnings[i]);
+        std::cout << "]\n}\n";
+    } else {
+        std::cout << "file:              " << input << "\n"
+                  << "vertices:          " << s.vertices << "\n"
+                  << "tets:              " << s.tets << "\n"
+                  << "boundary faces:    " << s.boundary_faces << "\n"
+                  << "flipped tets:      " << s.flipped_tets << "\n"
+                  << "degenerate tets:   " << s.degenerate_tets << "\n"
+                  << "parametric volume: " << num(s.parametric_volume) << "\n"
+                  << "param bbox min:    " << num(s.param_bbox_min[0]) << " " << num(s.param_bbox_min[1]) << " "
+                  << num(s.param_bbox_min[2]) << "\n"
+                  << "param bbox max:    " << num(s.param_bbox_max[0]) << " " << num(s.param_bbox_max[1]) << " "
+                  << num(s.param_bbox_max[2]) << "\n";
+        for (const auto& w : report.warnings) std::cout << "warning: " << w << "\n";
+    }
+    return 0;
+}
+
+} // namespace HexExTool
