@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Installs the build dependencies (Debian/Ubuntu, only when something is missing) and
+# configures + builds HexEx in Release mode into <repo>/build.
+# Idempotent: a second run skips apt and only rebuilds what changed.
+#
+# Environment: BUILD_DIR (default <repo>/build), BUILD_TYPE (default Release),
+#              HEXEX_SKIP_APT=1 to never touch apt, CMAKE_ARGS for extra configure flags.
+set -euo pipefail
+
+REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
+BUILD_TYPE="${BUILD_TYPE:-Release}"
+
+PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev libgtest-dev
+          doxygen xz-utils python3 python3-numpy)
+
+missing_packages() {
+    local p status
+    for p in "${PACKAGES[@]}"; do
+        status="$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)"
+        [[ "$status" == "install ok installed" ]] || echo "$p"
+    done
+}
+
+if [[ "${HEXEX_SKIP_APT:-0}" != 1 ]] && command -v dpkg-query >/dev/null 2>&1; then
+    mapfile -t missing < <(missing_packages)
+    if (( ${#missing[@]} > 0 )); then
+        echo "setup: installing ${missing[*]}"
+        SUDO=()
+        if [[ "$(id -u)" != 0 ]]; then
+            command -v sudo >/dev/null 2>&1 || { echo "setup: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+            SUDO=(sudo)
+        fi
+        export DEBIAN_FRONTEND=noninteractive
+        "${SUDO[@]}" apt-get update
+        "${SUDO[@]}" apt-get install -y --no-install-recommends "${PACKAGES[@]}"
+    else
+        echo "setup: all build dependencies are installed"
+    fi
+fi
+
+GENERATOR_ARGS=()
+# Keep the generator of an existing build tree; use Ninja for new ones when available.
+if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]] && command -v ninja >/dev/null 2>&1; then
+    GENERATOR_ARGS=(-G Ninja)
+fi
+# shellcheck disable=SC2086  # CMAKE_ARGS is a list of flags
+cmake -S "$REPO_ROOT" -B "$BUILD_DIR" "${GENERATOR_ARGS[@]}" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" ${CMAKE_ARGS:-}
+cmake --build "$BUILD_DIR" --parallel "$(nproc 2>/dev/null || echo 2)"
+echo "setup: built $BUILD_TYPE into $BUILD_DIR"
