@@ -11,6 +11,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -19,6 +20,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
+#include <utility>
 
 namespace HexEx {
 
@@ -69,13 +71,17 @@ public:
     /// Line of the current position (of the next token after atToken()).
     int line() const { return line_; }
 
+    /// Sets the note added to end-of-file messages (e.g. "file declares 5 vertices").
+    void setNote(std::string note) { note_ = std::move(note); }
+
     /// Bytes not yet consumed.
     std::size_t remaining() const { return text_.size() - pos_; }
 
     /// Next token; @p what() describes the expected item for the end-of-file message.
     template <class What>
     std::string_view token(const What& what) {
-        if (!atToken()) fail(line_, "unexpected end of file: expected " + what());
+        if (!atToken())
+            fail(line_, "unexpected end of file: expected " + what() + (note_.empty() ? "" : " (" + note_ + ")"));
         const std::size_t start = pos_;
         while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
         return text_.substr(start, pos_ - start);
@@ -106,8 +112,12 @@ public:
         if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
         double value = 0;
         const auto res = std::from_chars(first, last, value, std::chars_format::general);
-        if (res.ec == std::errc::result_out_of_range && res.ptr == last)
-            fail(line_, "number " + quoted(tok) + " out of double range for " + what());
+        if (res.ec == std::errc::result_out_of_range && res.ptr == last) {
+            // Underflow (e.g. 1e-400) rounds to zero as strtod does; overflow is an error.
+            value = std::strtod(std::string(first, last).c_str(), nullptr);
+            if (std::isinf(value)) fail(line_, "number " + quoted(tok) + " out of double range for " + what());
+            return value;
+        }
         if (res.ec != std::errc() || res.ptr != last)
             fail(line_, "expected a number for " + what() + ", got " + quoted(tok));
         if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoted(tok) + " for " + what());
@@ -130,6 +140,7 @@ private:
     const std::string& name_;
     std::size_t pos_ = 0;
     int line_ = 1;
+    std::string note_;
 };
 
 const char* const kAxisName[3] = {"x", "y", "z"};
@@ -165,31 +176,31 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     if (nv == 0) in.fail(in.line(), "mesh has no vertices (vertex count is 0)");
     std::vector<Vec3d> positions;
     // A vertex takes at least 6 bytes ("0 0 0\n"): never reserve more than the file can hold.
+    in.setNote("file declares " + std::to_string(nv) + " vertices");
     positions.reserve(static_cast<std::size_t>(std::min<long long>(nv, in.remaining() / 5 + 1)));
     for (long long v = 0; v < nv; ++v) {
         Vec3d p;
         for (int k = 0; k < 3; ++k)
             p[k] = in.real([&] {
-                return std::string(kAxisName[k]) + " coordinate of vertex " + std::to_string(v) + " (file declares " +
-                       std::to_string(nv) + " vertices)";
+                return std::string(kAxisName[k]) + " coordinate of vertex " + std::to_string(v);
             });
         positions.push_back(p);
     }
 
     // Tets.
+    in.setNote("");
     const long long nc = in.count("tet count", kMaxTets);
     if (nc == 0) in.fail(in.line(), "mesh has no tets (tet count is 0)");
     const std::size_t ncReserve = static_cast<std::size_t>(std::min<long long>(nc, in.remaining() / 31 + 1));
     std::vector<std::array<int, 4>> cells;
     CornerParams params;
     std::vector<int> lines;  // line of each tet's first token
+    in.setNote("file declares " + std::to_string(nc) + " tets");
     cells.reserve(ncReserve);
     params.reserve(ncReserve);
     lines.reserve(ncReserve);
     for (long long c = 0; c < nc; ++c) {
-        const auto tetDesc = [&] {
-            return "tet " + std::to_string(c) + " (file declares " + std::to_string(nc) + " tets)";
-        };
+        const auto tetDesc = [&] { return "tet " + std::to_string(c); };
         std::array<int, 4> cv;
         for (int i = 0; i < 4; ++i) {
             const auto desc = [&] { return "vertex index " + std::to_string(i) + " of " + tetDesc(); };
