@@ -1,6 +1,7 @@
 #include "ExactPredicates.hh"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/intersections.h>
 
 namespace HexEx {
 
@@ -82,6 +83,25 @@ PointClassification classifyPoint(const Vec3d p[4], const Vec3d& x) {
         if (c.location == PointLocation::OnFace) return {PointLocation::OnFace, 0xFu & ~(1u << f)};
     }
     return {};
+}
+
+bool triangleContainsPoint(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& x) {
+    return classifyTriangle(a, b, c, x).location != PointLocation::Outside;
+}
+
+bool triangleIntersectsSegment(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& p, const Vec3d& q) {
+    if (p == q) return triangleContainsPoint(a, b, c, p);
+    const K::Segment_3 s(P3(p), P3(q));
+    if (CGAL::collinear(P3(a), P3(b), P3(c))) {
+        const Vec3d t[3] = {a, b, c};
+        for (int i = 0; i < 3; ++i) {
+            const Vec3d& u = t[i];
+            const Vec3d& v = t[(i + 1) % 3];
+            if (u == v ? s.has_on(P3(u)) : CGAL::do_intersect(s, K::Segment_3(P3(u), P3(v)))) return true;
+        }
+        return false;
+    }
+    return CGAL::do_intersect(K::Triangle_3(P3(a), P3(b), P3(c)), s);
 }
 
 } // namespace HexEx

@@ -38,3 +38,10 @@ struct PointClassification {
 PointClassification classifyPoint(const Vec3d p[4], const Vec3d& x);
 
 } // namespace HexEx
+
+namespace HexEx {
+/// True if @p x lies in the closed triangle (a, b, c); handles degenerate triangles. Exact.
+bool triangleContainsPoint(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& x);
+/// True if the closed segment [p, q] meets the closed triangle (a, b, c). Exact.
+bool triangleIntersectsSegment(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& p, const Vec3d& q);
+} // namespace HexEx

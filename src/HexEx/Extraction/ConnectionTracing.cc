@@ -1,0 +1,184 @@
+#include "ConnectionTracing.hh"
+
+#include "../Core/Parallel.hh"
+#include "../Predicates/ExactPredicates.hh"
+
+#include <utility>
+
+namespace HexEx {
+
+namespace {
+
+/// A dart description (grid point and frame) in the chart of the current tet.
+struct Desc {
+    Vec3i z;
+    std::array<AxisDir, 3> d;
+};
+
+Desc alphaStar(int i, const Desc& s) {
+    switch (i) {
+        case 0: return {s.z + dirVec(s.d[0]), {dirNeg(s.d[0]), s.d[1], s.d[2]}};
+        case 1: return {s.z, {s.d[1], s.d[0], s.d[2]}};
+        case 2: return {s.z, {s.d[0], s.d[2], s.d[1]}};
+        default: return {s.z, {s.d[0], s.d[1], dirNeg(s.d[2])}};
+    }
+}
+
+Desc transform(const GridTransform& g, const Desc& s) {
+    return {g.apply(s.z), {g.applyDir(s.d[0]), g.applyDir(s.d[1]), g.applyDir(s.d[2])}};
+}
+
+int signOf(double x) { return (x > 0) - (x < 0); }
+
+/// Sign of orient3d(P, Q, a, b) for the line P = z + e^2 e2 + e^3 e3, Q = P + D:
+/// det(D, a-z, b-z) - e^2 h (b-a).e3 + e^3 h (b-a).e2 with h the handedness of (D, e2, e3).
+int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, int h, const Vec3d& a, const Vec3d& b) {
+    const int t0 = dirSign(D) * orient2dAxis(z, a, b, dirAxis(D));
+    if (t0 != 0) return t0;
+    const int t2 = -h * dirSign(e3) * signOf(b[dirAxis(e3)] - a[dirAxis(e3)]);
+    if (t2 != 0) return t2;
+    return h * dirSign(e2) * signOf(b[dirAxis(e2)] - a[dirAxis(e2)]);
+}
+
+/// The face through which the rotation at z leaves tet T first: the candidate whose
+/// inward normal is the most clockwise with respect to the rotation (d_from -> d_to).
+/// `normal_axis` is the axis the rotation plane is perpendicular to (for the cross sign),
+/// `offset` the direction that breaks exact ties (alpha_1 only).
+int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_axis, int h, AxisDir offset) {
+    int best = cand[0];
+    for (int k = 1; k < n; ++k) {
+        const int a = cand[k], b = best;
+        const int x = h * T.gradCrossSign(a, b, normal_axis);
+        bool aFirst;
+        if (x != 0) {
+            aFirst = x > 0;
+        } else {
+            // Both faces meet the rotation plane in the same line (their common edge lies in
+            // it): the path passes the edge on the offset side, leaving through the face that
+            // rises towards that side. Face a's vertex off the common edge is corner b.
+            int c = 0;
+            while (c == a || c == b) ++c;
+            aFirst = dirSign(offset) * signOf(T.p[b][dirAxis(offset)] - T.p[c][dirAxis(offset)]) > 0;
+        }
+        if (aFirst) best = a;
+    }
+    return best;
+}
+
+/// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
+int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
+    const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
+    const int h = frameHandedness(d0, d1, d2);
+    int cand[4], n = 0;
+    if (i == 0) {
+        const Vec3d z = toVec3d(s.z);
+        for (int j = 0; j < 4; ++j) {
+            if (j == entry) continue;
+            if (T.vol * dirSign(d0) * T.g[j][dirAxis(d0)] >= 0) continue;  // not leaving along d0
+            cand[n++] = j;
+        }
+        for (int k = 0; k < n; ++k) {
+            const int j = cand[k];
+            int o[3], m = 0;
+            for (int q = 0; q < 4; ++q)
+                if (q != j) o[m++] = q;
+            const int s0 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[0]], T.p[o[1]]);
+            const int s1 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[1]], T.p[o[2]]);
+            const int s2 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[2]], T.p[o[0]]);
+            if (s0 == s1 && s1 == s2 && s0 != 0) return j;
+        }
+        return n == 1 ? cand[0] : -1;
+    }
+    const std::array<int, 4> oz = T.sides(toVec3d(s.z));
+    for (int j = 0; j < 4; ++j) {
+        if (j == entry || oz[j] != 0) continue;
+        const int g0 = T.g[j][dirAxis(d0)], g1 = T.g[j][dirAxis(d1)], g2 = T.g[j][dirAxis(d2)];
+        if (i == 1 && (g0 != 0 || g1 != 0)) cand[n++] = j;
+        if (i == 2 && g0 == 0) cand[n++] = j;
+        if (i == 3 && g0 == 0 && g1 == 0 && T.vol * dirSign(d2) * g2 > 0) cand[n++] = j;
+    }
+    if (n == 0) return -1;
+    if (i == 3) return cand[0];
+    if (i == 1) return firstRotationalExit(T, cand, n, d2, h, d2);
+    return firstRotationalExit(T, cand, n, d0, h, d2);
+}
+
+/// Exit face of a degenerate tet: the first other face that meets the traced entity.
+int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry) {
+    const Vec3d z = toVec3d(s.z);
+    for (int j = 0; j < 4; ++j) {
+        if (j == entry) continue;
+        int o[3], m = 0;
+        for (int q = 0; q < 4; ++q)
+            if (q != j) o[m++] = q;
+        const bool hit = i == 0 ? triangleIntersectsSegment(T.p[o[0]], T.p[o[1]], T.p[o[2]], z, z + toVec3d(dirVec(s.d[0])))
+                                : triangleContainsPoint(T.p[o[0]], T.p[o[1]], T.p[o[2]], z);
+        if (hit) return j;
+    }
+    return -1;
+}
+
+constexpr int kMaxSteps = 4096;
+
+long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
+              long dart, int i, long& steps) {
+    const Dart& D = set.darts[static_cast<std::size_t>(dart)];
+    int t = D.tet;
+    int s = tets[static_cast<std::size_t>(t)].vol;
+    Desc start{D.z, D.d};
+    Desc target = alphaStar(i, start);
+    int entry = -1;
+    for (int step = 0; step < kMaxSteps; ++step) {
+        const TetSoS& T = tets[static_cast<std::size_t>(t)];
+        if (T.vol != 0) {
+            const long found = set.find(t, target.z, target.d);
+            if (found >= 0) return found;
+        }
+        const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry);
+        if (f < 0) return kUnconnected;
+        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        if (!opp.is_valid()) return i == 3 ? dart : kUnconnected;
+        const GridTransform& g = tr.halfface[hf.uidx()];
+        start = transform(g, start);
+        target = transform(g, target);
+        t = TetMesh::cell(opp).idx();
+        entry = TetMesh::opposite_corner(opp);
+        ++steps;
+        const int sv = tets[static_cast<std::size_t>(t)].vol;
+        if (sv != 0 && sv != s) {
+            std::swap(start, target);
+            s = sv;
+        }
+    }
+    return kUnconnected;
+}
+
+} // namespace
+
+std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Transitions& tr,
+                                                  const std::vector<TetSoS>& tets, const DartSet& darts,
+                                                  int threads, TraceStats& stats) {
+    const std::size_t n = darts.darts.size();
+    std::vector<std::array<long, 4>> alpha(n);
+    const int chunks = std::max(1, threads);
+    std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        TraceStats& st = part[static_cast<std::size_t>(k)];
+        for (std::size_t d = b; d < e; ++d)
+            for (int i = 0; i < 4; ++i) {
+                const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
+                alpha[d][i] = p;
+                if (p == kUnconnected) ++st.unconnected[i];
+                else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
+            }
+    });
+    for (const auto& p : part) {
+        for (int i = 0; i < 4; ++i) stats.unconnected[i] += p.unconnected[i];
+        stats.boundary_alpha3 += p.boundary_alpha3;
+        stats.steps += p.steps;
+    }
+    return alpha;
+}
+
+} // namespace HexEx

@@ -1,0 +1,32 @@
+#pragma once
+/// @file ConnectionTracing.hh
+/// Connection extraction (paper 4.3.2, Algorithm 2): for every dart and every i, trace
+/// from the dart towards its expected partner alpha_i*(d) through the tets, across
+/// transitions, swapping start and target whenever the flippedness changes. The face a
+/// trace leaves through is chosen by the same symbolic perturbation that assigns darts.
+
+#include "../Preprocessing/Transitions.hh"
+#include "DartExtraction.hh"
+
+#include <array>
+#include <vector>
+
+namespace HexEx {
+
+/// Partner value meaning "not connected" (trace failed or ran into the boundary for i < 3).
+constexpr long kUnconnected = -1;
+
+/// Counters of the tracing.
+struct TraceStats {
+    long unconnected[4] = {0, 0, 0, 0};  ///< darts without alpha_i partner, per i
+    long boundary_alpha3 = 0;            ///< darts whose alpha_3 runs into the boundary (boundary faces)
+    long steps = 0;                      ///< total tets visited beyond the first
+};
+
+/// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
+/// kUnconnected marks a failure. Deterministic for any thread count.
+std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Transitions& tr,
+                                                  const std::vector<TetSoS>& tets, const DartSet& darts,
+                                                  int threads, TraceStats& stats);
+
+} // namespace HexEx

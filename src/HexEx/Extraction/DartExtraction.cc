@@ -1,0 +1,109 @@
+#include "DartExtraction.hh"
+
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace HexEx {
+
+const std::array<std::array<AxisDir, 3>, 48>& allFrames() {
+    static const auto frames = [] {
+        std::array<std::array<AxisDir, 3>, 48> f{};
+        int n = 0;
+        for (int a = 0; a < 6; ++a)
+            for (int b = 0; b < 6; ++b)
+                for (int c = 0; c < 6; ++c)
+                    if (a / 2 != b / 2 && b / 2 != c / 2 && a / 2 != c / 2)
+                        f[n++] = {static_cast<AxisDir>(a), static_cast<AxisDir>(b), static_cast<AxisDir>(c)};
+        return f;
+    }();
+    return frames;
+}
+
+long DartSet::find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
+    auto first = darts.begin() + static_cast<long>(tet_begin[t]);
+    auto last = darts.begin() + static_cast<long>(tet_begin[t + 1]);
+    auto it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
+    if (it != last && it->z == z && it->d == d) return it - darts.begin();
+    return -1;
+}
+
+std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads) {
+    std::vector<TetSoS> out(params.size());
+    parallelChunks(params.size(), threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t c = b; c < e; ++c) out[c] = TetSoS(params[c]);
+    });
+    return out;
+}
+
+DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points) {
+    const std::size_t n = tets.size();
+    const int chunks = std::max(1, threads);
+    std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
+    std::vector<std::size_t> count(n, 0);
+    const auto& frames = allFrames();
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        auto& out = parts[static_cast<std::size_t>(k)];
+        for (std::size_t c = b; c < e; ++c) {
+            const TetSoS& T = tets[c];
+            if (T.vol == 0) continue;
+            Vec3d lo = T.p[0], hi = T.p[0];
+            for (int i = 1; i < 4; ++i) {
+                lo.minimize(T.p[i]);
+                hi.maximize(T.p[i]);
+            }
+            double points = 1;
+            int ilo[3], ihi[3];
+            for (int a = 0; a < 3; ++a) {
+                if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
+                    throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
+                ilo[a] = static_cast<int>(std::ceil(lo[a]));
+                ihi[a] = static_cast<int>(std::floor(hi[a]));
+                points *= std::max(0, ihi[a] - ilo[a] + 1);
+            }
+            if (points > max_points)
+                throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(points) +
+                                 " grid points (limit " + std::to_string(max_points) + ")");
+            const std::size_t before = out.size();
+            for (int x = ilo[0]; x <= ihi[0]; ++x)
+                for (int y = ilo[1]; y <= ihi[1]; ++y)
+                    for (int zc = ilo[2]; zc <= ihi[2]; ++zc) {
+                        const Vec3d zp(x, y, zc);
+                        std::array<int, 4> oz;
+                        bool outside = false, interior = true;
+                        for (int j = 0; j < 4 && !outside; ++j) {
+                            oz[j] = T.side(j, zp);
+                            if (oz[j] == -T.vol) outside = true;
+                            if (oz[j] == 0) interior = false;
+                        }
+                        if (outside) continue;
+                        for (const auto& f : frames) {
+                            if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
+                            Dart d;
+                            d.tet = static_cast<int>(c);
+                            d.z = Vec3i(x, y, zc);
+                            d.d = f;
+                            d.sign = static_cast<signed char>(T.vol);
+                            out.push_back(d);
+                        }
+                    }
+            count[c] = out.size() - before;
+        }
+    });
+    DartSet s;
+    std::size_t total = 0;
+    for (const auto& p : parts) total += p.size();
+    s.darts.reserve(total);
+    for (auto& p : parts) {
+        s.darts.insert(s.darts.end(), p.begin(), p.end());
+        std::vector<Dart>().swap(p);
+    }
+    s.tet_begin.assign(n + 1, 0);
+    for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+    return s;
+}
+
+} // namespace HexEx

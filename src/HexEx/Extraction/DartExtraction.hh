@@ -1,0 +1,52 @@
+#pragma once
+/// @file DartExtraction.hh
+/// Dart extraction (paper 4.3.1) with the symbolic-perturbation ownership rule: the dart
+/// (z, d1, d2, d3) belongs to the tet whose parameter image contains z + e d1 + e^2 d2 + e^3 d3.
+/// Darts of flipped tets are anti darts.
+
+#include "../Mesh/ParametrizedTetMesh.hh"
+#include "TetSoS.hh"
+
+#include <array>
+#include <vector>
+
+namespace HexEx {
+
+/// A dart as extracted: hex corner z with frame (d1, d2, d3), seen from tet `tet`, in that
+/// tet's chart. The edge runs along d1, the face spans d1, d2, the cell spans d1, d2, d3.
+struct Dart {
+    int tet = -1;                  ///< owning tet
+    Vec3i z{0, 0, 0};              ///< grid point in the tet's chart
+    std::array<AxisDir, 3> d{};    ///< frame directions
+    signed char sign = 1;          ///< +1 regular dart, -1 anti dart
+};
+
+/// Orders darts by (z, d1, d2, d3) within a tet.
+inline bool dartKeyLess(const Vec3i& za, const std::array<AxisDir, 3>& da, const Vec3i& zb,
+                        const std::array<AxisDir, 3>& db) {
+    for (int k = 0; k < 3; ++k)
+        if (za[k] != zb[k]) return za[k] < zb[k];
+    return da < db;
+}
+
+/// All darts, grouped by tet (ascending) and sorted by key within a tet.
+struct DartSet {
+    std::vector<Dart> darts;            ///< the darts
+    std::vector<std::size_t> tet_begin; ///< darts of tet t are [tet_begin[t], tet_begin[t+1])
+
+    /// Index of the dart of tet @p t with key (z, d), or -1.
+    long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
+};
+
+/// The 48 axis frames (d1, d2, d3) in lexicographic order.
+const std::array<std::array<AxisDir, 3>, 48>& allFrames();
+
+/// Per-tet symbolic-perturbation data for every tet (computed in parallel).
+std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads);
+
+/// Extracts every dart of every non-degenerate tet. Deterministic for any thread count.
+/// Throws InputError if a tet's parameter image is absurdly large (more than
+/// @p max_points_per_tet grid points in its bounding box).
+DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9);
+
+} // namespace HexEx

@@ -1,0 +1,182 @@
+#include "../HexEx.hh"
+
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+#include "../Postprocessing/DartAnnihilation.hh"
+#include "../Postprocessing/HexMeshAssembly.hh"
+#include "../Preprocessing/Sanitization.hh"
+#include "ConnectionTracing.hh"
+#include "DartExtraction.hh"
+
+#include <chrono>
+
+namespace HexEx {
+
+namespace {
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+} // namespace
+
+const char* version() { return "0.1.0"; }
+
+ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt) {
+    ExtractionReport rep;
+    const TetMesh& mesh = input.mesh;
+    if (!mesh.has_adjacency()) throw InputError("extractHexMesh: call build_adjacency() on the tet mesh first");
+    if (input.params.size() != mesh.n_cells()) throw InputError("extractHexMesh: one parameter set per tet required");
+    const int threads = resolveThreadCount(opt.threads);
+    rep.threads = threads;
+    auto progress = [&](const char* phase, double f) {
+        if (opt.progress) opt.progress(phase, f);
+    };
+    rep.input.vertices = static_cast<long>(mesh.n_vertices());
+    rep.input.tets = static_cast<long>(mesh.n_cells());
+    rep.input.boundary_faces = static_cast<long>(mesh.n_boundary_faces());
+
+    // Preprocessing: transitions, sanitization, classification.
+    auto t0 = std::chrono::steady_clock::now();
+    progress("preprocess", 0);
+    CornerParams params = input.params;
+    for (std::size_t c = 0; c < params.size(); ++c)
+        for (const auto& p : params[c])
+            for (int k = 0; k < 3; ++k)
+                if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
+    const Transitions tr = computeTransitions(mesh, params, opt.given_rotations);
+    rep.input.ambiguous_transitions = tr.n_ambiguous;
+    rep.input.unresolved_transitions = tr.n_unresolved;
+    SanitizeOptions so;
+    so.epsilon = opt.epsilon;
+    rep.input.snapped_coordinates = sanitizeParameters(mesh, params, tr, so).snapped_coordinates;
+    const Singularities sing = findSingularities(mesh, params, tr);
+    rep.input.singular_edges = static_cast<long>(sing.edges.size());
+    rep.input.singular_vertices = static_cast<long>(sing.vertices.size());
+    const std::vector<TetSoS> tets = buildTetSoS(params, threads);
+    for (const auto& T : tets) {
+        if (T.vol < 0) ++rep.input.flipped_tets;
+        if (T.vol == 0) ++rep.input.degenerate_tets;
+        const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
+        rep.input.parametric_volume += ((e1 % e2) | e3) / 6.0;
+    }
+    if (tr.n_unresolved > 0)
+        rep.warnings.push_back(std::to_string(tr.n_unresolved) + " transitions on degenerate faces could not be resolved from their neighbours");
+    rep.timings_s.preprocess = secondsSince(t0);
+
+    // Darts (the h-vertices are the grid points the darts sit on).
+    t0 = std::chrono::steady_clock::now();
+    progress("darts", 0);
+    const DartSet ds = extractDarts(tets, threads);
+    const std::size_t nd = ds.darts.size();
+    rep.darts.extracted = static_cast<long>(nd);
+    std::vector<signed char> sign(nd);
+    for (std::size_t d = 0; d < nd; ++d) {
+        sign[d] = ds.darts[d].sign;
+        if (sign[d] < 0) ++rep.darts.anti;
+    }
+    rep.timings_s.darts = secondsSince(t0);
+
+    // Connections.
+    t0 = std::chrono::steady_clock::now();
+    progress("connect", 0);
+    TraceStats ts;
+    std::vector<std::array<long, 4>> alpha = traceConnections(mesh, tr, tets, ds, threads, ts);
+    // Keep only mutual links.
+    for (std::size_t d = 0; d < nd; ++d)
+        for (int i = 0; i < 4; ++i) {
+            const long p = alpha[d][i];
+            if (p < 0 || p == static_cast<long>(d)) continue;
+            if (alpha[static_cast<std::size_t>(p)][i] != static_cast<long>(d)) {
+                ++rep.darts.asymmetric_links;
+                alpha[d][i] = kUnconnected;
+            }
+        }
+    rep.timings_s.connect = secondsSince(t0);
+
+    // Postprocessing: annihilation.
+    t0 = std::chrono::steady_clock::now();
+    progress("postprocess", 0);
+    std::vector<char> alive(nd, 1);
+    if (opt.merge) {
+        const AnnihilationStats as = annihilateDarts(alpha, sign, alive);
+        rep.darts.annihilated_pairs = as.pairs;
+        rep.darts.remaining_anti = as.remaining_anti;
+    } else {
+        rep.darts.remaining_anti = rep.darts.anti;
+    }
+    // Compact the surviving darts into a generalized map.
+    std::vector<int> newIndex(nd, -1);
+    int n_alive = 0;
+    for (std::size_t d = 0; d < nd; ++d)
+        if (alive[d]) newIndex[d] = n_alive++;
+    GMap<3> g;
+    g.add_darts(static_cast<std::size_t>(n_alive));
+    DartGeometry geo;
+    geo.position.resize(static_cast<std::size_t>(n_alive));
+    geo.on_boundary.assign(static_cast<std::size_t>(n_alive), 0);
+    geo.handedness.resize(static_cast<std::size_t>(n_alive));
+    for (std::size_t d = 0; d < nd; ++d) {
+        if (!alive[d]) continue;
+        const DartHandle h(newIndex[d]);
+        for (int i = 0; i < 4; ++i) {
+            const long p = alpha[d][i];
+            if (p >= 0 && alive[static_cast<std::size_t>(p)]) g.link(h, DartHandle(newIndex[static_cast<std::size_t>(p)]), i);
+            else if (i < 3) ++rep.output.unconnected_darts;
+        }
+    }
+    rep.timings_s.postprocess = secondsSince(t0);
+
+    // Geometry of the surviving darts.
+    t0 = std::chrono::steady_clock::now();
+    progress("vertices", 0);
+    parallelChunks(nd, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            if (!alive[d]) continue;
+            const Dart& D = ds.darts[d];
+            const TetSoS& T = tets[static_cast<std::size_t>(D.tet)];
+            const auto& cv = mesh.cell_vertices(CellHandle(D.tet));
+            const Vec3d z = toVec3d(D.z);
+            const auto oz = T.sides(z);
+            // Barycentric coordinates: lambda_j = o_j(z) / V, exact zeros where o_j(z) = 0.
+            const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
+            const double V = (e1 % e2) | e3;
+            double lam[4];
+            double sum = 0;
+            for (int j = 0; j < 4; ++j) {
+                if (oz[j] == 0) { lam[j] = 0; continue; }
+                Vec3d q[4] = {T.p[0], T.p[1], T.p[2], T.p[3]};
+                q[j] = z;
+                lam[j] = std::max(0.0, (((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / V);
+                sum += lam[j];
+            }
+            Vec3d pos(0, 0, 0);
+            bool boundary = false;
+            for (int j = 0; j < 4; ++j) {
+                pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
+                if (oz[j] == 0 && mesh.is_boundary(TetMesh::halfface(CellHandle(D.tet), j))) boundary = true;
+            }
+            const auto k = static_cast<std::size_t>(newIndex[d]);
+            geo.position[k] = pos;
+            geo.on_boundary[k] = boundary;
+            geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
+        }
+    });
+    rep.timings_s.vertices = secondsSince(t0);
+
+    // Validation and assembly.
+    t0 = std::chrono::steady_clock::now();
+    progress("assemble", 0);
+    rep.validation = validateHexGMap(g);
+    AssemblyStats st;
+    output = assembleHexMesh(g, geo, st);
+    rep.output.vertices = static_cast<long>(output.vertices.size());
+    rep.output.hexes = static_cast<long>(output.hexes.size());
+    rep.output.non_hex_cells = st.non_hex_cells;
+    rep.output.quads = st.quads;
+    rep.output.boundary_quads = st.boundary_quads;
+    rep.valid_all_hex = rep.validation.valid() && st.non_hex_cells == 0 && rep.darts.remaining_anti == 0;
+    rep.timings_s.assemble = secondsSince(t0);
+    progress("done", 1);
+    return rep;
+}
+
+} // namespace HexEx

@@ -1,0 +1,49 @@
+#include "TetSoS.hh"
+
+#include "../Predicates/ExactPredicates.hh"
+
+namespace HexEx {
+
+namespace {
+int permSign(int a, int b, int c, int d) {
+    const int p[4] = {a, b, c, d};
+    int s = 1;
+    for (int i = 0; i < 4; ++i)
+        for (int j = i + 1; j < 4; ++j)
+            if (p[i] > p[j]) s = -s;
+    return s;
+}
+int signOf(double x) { return (x > 0) - (x < 0); }
+} // namespace
+
+TetSoS::TetSoS(const std::array<Vec3d, 4>& corners) : p(corners) {
+    vol = orient3d(p[0], p[1], p[2], p[3]);
+    for (int j = 0; j < 4; ++j) {
+        int o[3], n = 0;
+        for (int k = 0; k < 4; ++k)
+            if (k != j) o[n++] = k;
+        // o_j(x) = (-1)^(3-j) * orient3d(p_o0, p_o1, p_o2, x); its gradient's k-th component
+        // is the 2D orientation of the face projected along axis k.
+        const int parity = ((3 - j) % 2 == 0) ? 1 : -1;
+        for (int k = 0; k < 3; ++k)
+            g[j][k] = static_cast<std::int8_t>(parity * orient2dAxis(p[o[0]], p[o[1]], p[o[2]], k));
+    }
+}
+
+int TetSoS::side(int j, const Vec3d& x) const {
+    Vec3d q[4] = {p[0], p[1], p[2], p[3]};
+    q[j] = x;
+    return orient3d(q[0], q[1], q[2], q[3]);
+}
+
+std::array<int, 4> TetSoS::sides(const Vec3d& z) const { return {side(0, z), side(1, z), side(2, z), side(3, z)}; }
+
+int TetSoS::gradCrossSign(int a, int b, AxisDir dir) const {
+    int c = -1, d = -1;
+    for (int k = 0; k < 4; ++k)
+        if (k != a && k != b) (c < 0 ? c : d) = k;
+    const int k = dirAxis(dir);
+    return permSign(a, b, c, d) * vol * signOf(p[d][k] - p[c][k]) * dirSign(dir);
+}
+
+} // namespace HexEx

@@ -1,0 +1,110 @@
+#include "GMapValidator.hh"
+
+#include <sstream>
+
+namespace HexEx {
+
+namespace {
+
+/// Labels orbits under a set of generator functions; returns orbit sizes per label.
+template <class Next>
+std::vector<int> labelBy(const GMap<3>& g, int n_gen, Next next, std::vector<int>& size) {
+    const std::size_t n = g.n_darts();
+    std::vector<int> label(n, -1);
+    std::vector<int> stack;
+    size.clear();
+    for (std::size_t s = 0; s < n; ++s) {
+        if (!g.is_alive(DartHandle(static_cast<int>(s))) || label[s] >= 0) continue;
+        const int l = static_cast<int>(size.size());
+        size.push_back(0);
+        label[s] = l;
+        stack.assign(1, static_cast<int>(s));
+        while (!stack.empty()) {
+            const int d = stack.back();
+            stack.pop_back();
+            ++size[static_cast<std::size_t>(l)];
+            for (int k = 0; k < n_gen; ++k) {
+                const int e = next(d, k);
+                if (e < 0 || static_cast<std::size_t>(e) >= n || !g.is_alive(DartHandle(e))) continue;
+                if (label[static_cast<std::size_t>(e)] < 0) {
+                    label[static_cast<std::size_t>(e)] = l;
+                    stack.push_back(e);
+                }
+            }
+        }
+    }
+    return label;
+}
+
+} // namespace
+
+std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
+    const auto& L = g.links();
+    int gens[4], ng = 0;
+    for (int i = 0; i < 4; ++i)
+        if (mask & (1u << i)) gens[ng++] = i;
+    std::vector<int> size;
+    auto label = labelBy(g, ng, [&](int d, int k) { return L[static_cast<std::size_t>(d)][gens[k]]; }, size);
+    if (n_labels) *n_labels = static_cast<int>(size.size());
+    return label;
+}
+
+GMapValidation validateHexGMap(const GMap<3>& g) {
+    GMapValidation v;
+    const auto& L = g.links();
+    const std::size_t n = g.n_darts();
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    for (std::size_t s = 0; s < n; ++s) {
+        const int d = static_cast<int>(s);
+        if (!g.is_alive(DartHandle(d))) continue;
+        ++v.darts;
+        bool bad = false;
+        for (int i = 0; i < 4; ++i) {
+            const int e = a(d, i);
+            if (!g.is_alive(DartHandle(e)) || a(e, i) != d) bad = true;
+        }
+        if (bad) {
+            ++v.not_involution;
+            continue;
+        }
+        if (a(d, 0) == d || a(d, 1) == d || a(d, 2) == d) ++v.open_links;
+        if (a(a(a(a(d, 0), 2), 0), 2) != d) ++v.eq1_edge_connection;
+        if (a(d, 3) == d) {
+            ++v.boundary_darts;
+        } else if (a(a(a(a(d, 0), 3), 0), 3) != d || a(a(a(a(d, 1), 3), 1), 3) != d) {
+            ++v.eq2_face_connection;
+        }
+    }
+    auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
+        long bad = 0;
+        for (std::size_t s = 0; s < n; ++s)
+            if (label[s] >= 0 && size[static_cast<std::size_t>(label[s])] != want) ++bad;
+        return bad;
+    };
+    std::vector<int> size;
+    auto l01 = labelBy(g, 2, [&](int d, int k) { return a(d, k); }, size);
+    v.eq3_quad = countBad(l01, size, 8);
+    auto l12 = labelBy(g, 2, [&](int d, int k) { return a(d, k + 1); }, size);
+    v.eq4_corner = countBad(l12, size, 6);
+    auto l0121 = labelBy(g, 2, [&](int d, int k) { return k == 0 ? a(d, 0) : a(a(a(d, 1), 2), 1); }, size);
+    v.eq5_strip = countBad(l0121, size, 8);
+    auto l012 = labelBy(g, 3, [&](int d, int k) { return a(d, k); }, size);
+    v.eq6_hex = countBad(l012, size, 48);
+    return v;
+}
+
+std::string GMapValidation::summary() const {
+    std::ostringstream os;
+    os << (valid() ? "valid" : "INVALID") << ": " << darts << " darts";
+    if (not_involution) os << ", " << not_involution << " non-involutive";
+    if (open_links) os << ", " << open_links << " open";
+    if (eq1_edge_connection) os << ", eq1 " << eq1_edge_connection;
+    if (eq2_face_connection) os << ", eq2 " << eq2_face_connection;
+    if (eq3_quad) os << ", eq3 " << eq3_quad;
+    if (eq4_corner) os << ", eq4 " << eq4_corner;
+    if (eq5_strip) os << ", eq5 " << eq5_strip;
+    if (eq6_hex) os << ", eq6 " << eq6_hex;
+    return os.str();
+}
+
+} // namespace HexEx

@@ -1,0 +1,42 @@
+#pragma once
+/// @file GMapValidator.hh
+/// The one validator of paper section 3.1, equations 1-6, for 3D generalized maps of
+/// hexahedral meshes. Used by the tests, the CLI report and the benchmarks.
+
+#include "GMap.hh"
+
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// Violations found by validateHexGMap(), counted per dart (or per orbit where noted).
+struct GMapValidation {
+    long darts = 0;                 ///< alive darts checked
+    long not_involution = 0;        ///< darts with alpha_i(alpha_i(d)) != d or linked to an erased dart
+    long open_links = 0;            ///< darts with a free alpha_0, alpha_1 or alpha_2 (cell not closed)
+    long eq1_edge_connection = 0;   ///< (alpha_0 alpha_2)^2 != id: faces not connected over a whole edge
+    long eq2_face_connection = 0;   ///< (alpha_0 alpha_3)^2 or (alpha_1 alpha_3)^2 != id (alpha_3 not free)
+    long eq3_quad = 0;              ///< darts whose <alpha_0, alpha_1> orbit does not have 8 darts
+    long eq4_corner = 0;            ///< darts whose <alpha_1, alpha_2> orbit does not have 6 darts
+    long eq5_strip = 0;             ///< darts whose <alpha_0, alpha_1 alpha_2 alpha_1> orbit does not have 8 darts
+    long eq6_hex = 0;               ///< darts whose <alpha_0, alpha_1, alpha_2> orbit does not have 48 darts
+    long boundary_darts = 0;        ///< darts with free alpha_3 (on the boundary)
+    /// True if no violation was found.
+    bool valid() const {
+        return not_involution == 0 && open_links == 0 && eq1_edge_connection == 0 && eq2_face_connection == 0 &&
+               eq3_quad == 0 && eq4_corner == 0 && eq5_strip == 0 && eq6_hex == 0;
+    }
+    /// One-line human-readable summary.
+    std::string summary() const;
+};
+
+/// Checks every alive dart of @p g against equations 1-6 of the paper and the involution
+/// property. Linear time.
+GMapValidation validateHexGMap(const GMap<3>& g);
+
+/// Labels the orbits of @p g for the links in @p mask (bit i = alpha_i): returns a label
+/// per dart (-1 for erased darts), labels numbered 0.. in order of their smallest dart.
+std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels = nullptr);
+
+} // namespace HexEx

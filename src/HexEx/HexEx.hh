@@ -1,0 +1,21 @@
+#pragma once
+/// @file HexEx.hh
+/// The one-call API: extract a hex mesh from a tet mesh with an integer-grid map.
+
+#include "Extraction/ExtractionReport.hh"
+#include "Mesh/HexMesh.hh"
+#include "Mesh/ParametrizedTetMesh.hh"
+
+namespace HexEx {
+
+/// Extracts the hex mesh of @p input (adjacency must be built; see TetMesh::build_adjacency())
+/// into @p output. Never throws for defective maps: what could not be resolved is counted
+/// in the report and non-hex cells are returned as polyhedra. Throws InputError only for
+/// unusable input (e.g. non-finite or absurdly large parameters).
+ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output,
+                                const ExtractionOptions& options = {});
+
+/// Library version string (x.y.z).
+const char* version();
+
+} // namespace HexEx

@@ -1,0 +1,25 @@
+#pragma once
+/// @file DartAnnihilation.hh
+/// Dart annihilation (paper 4.4.1): a regular dart and an anti dart linked by any alpha_i
+/// cancel; the darts around them are reconnected by
+/// alpha_j(alpha_j(d)) = alpha_j(d'), alpha_j(alpha_j(d')) = alpha_j(d) for all j with alpha_j(d) != d'.
+
+#include <array>
+#include <vector>
+
+namespace HexEx {
+
+/// Result counters.
+struct AnnihilationStats {
+    long pairs = 0;           ///< annihilated regular/anti pairs
+    long remaining_anti = 0;  ///< anti darts left at the fixed point
+};
+
+/// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the
+/// links (a free link is the dart itself, -1 means unconnected and is left alone);
+/// @p sign is +1/-1 per dart; @p alive is cleared for removed darts. Processing order is
+/// by ascending dart index with a work list, so the result is deterministic.
+AnnihilationStats annihilateDarts(std::vector<std::array<long, 4>>& alpha, const std::vector<signed char>& sign,
+                                  std::vector<char>& alive);
+
+} // namespace HexEx

@@ -1,0 +1,123 @@
+#include "HexMeshAssembly.hh"
+
+#include "../GMap/GMapValidator.hh"
+
+#include <algorithm>
+
+namespace HexEx {
+
+namespace {
+/// Groups dart indices by label (counting sort, ascending darts within a group).
+void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>& off, std::vector<int>& idx) {
+    off.assign(static_cast<std::size_t>(n_labels) + 1, 0);
+    for (int l : label)
+        if (l >= 0) ++off[static_cast<std::size_t>(l) + 1];
+    for (int l = 0; l < n_labels; ++l) off[static_cast<std::size_t>(l) + 1] += off[static_cast<std::size_t>(l)];
+    idx.assign(static_cast<std::size_t>(off.back()), 0);
+    std::vector<int> fill(off.begin(), off.end() - 1);
+    for (std::size_t d = 0; d < label.size(); ++d)
+        if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
+}
+} // namespace
+
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats& stats) {
+    HexMesh out;
+    const auto& L = g.links();
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+
+    int nv = 0;
+    const std::vector<int> vlabel = labelOrbits(g, 0b1110, &nv);
+    {
+        std::vector<Vec3d> sumAll(static_cast<std::size_t>(nv), Vec3d(0, 0, 0)), sumB(static_cast<std::size_t>(nv), Vec3d(0, 0, 0));
+        std::vector<int> nAll(static_cast<std::size_t>(nv), 0), nB(static_cast<std::size_t>(nv), 0);
+        for (std::size_t d = 0; d < vlabel.size(); ++d) {
+            const int l = vlabel[d];
+            if (l < 0) continue;
+            sumAll[static_cast<std::size_t>(l)] += geo.position[d];
+            ++nAll[static_cast<std::size_t>(l)];
+            if (geo.on_boundary[d]) {
+                sumB[static_cast<std::size_t>(l)] += geo.position[d];
+                ++nB[static_cast<std::size_t>(l)];
+            }
+        }
+        out.vertices.resize(static_cast<std::size_t>(nv));
+        for (int l = 0; l < nv; ++l) {
+            const auto k = static_cast<std::size_t>(l);
+            out.vertices[k] = nB[k] > 0 ? sumB[k] / nB[k] : sumAll[k] / nAll[k];
+        }
+    }
+
+    int nf = 0, nc = 0, nq = 0, ncorner = 0;
+    const std::vector<int> flabel = labelOrbits(g, 0b0011, &nf);
+    const std::vector<int> clabel = labelOrbits(g, 0b0111, &nc);
+    const std::vector<int> qlabel = labelOrbits(g, 0b1011, &nq);
+    const std::vector<int> klabel = labelOrbits(g, 0b0110, &ncorner);
+    std::vector<int> fsize(static_cast<std::size_t>(nf), 0), ksize(static_cast<std::size_t>(ncorner), 0);
+    for (std::size_t d = 0; d < flabel.size(); ++d)
+        if (flabel[d] >= 0) {
+            ++fsize[static_cast<std::size_t>(flabel[d])];
+            ++ksize[static_cast<std::size_t>(klabel[d])];
+        }
+    stats.quads = nq;
+    {
+        std::vector<char> bq(static_cast<std::size_t>(nq), 0);
+        for (std::size_t d = 0; d < qlabel.size(); ++d)
+            if (qlabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d)) bq[static_cast<std::size_t>(qlabel[d])] = 1;
+        stats.boundary_quads = std::count(bq.begin(), bq.end(), 1);
+    }
+
+    std::vector<int> off, idx;
+    groupByLabel(clabel, nc, off, idx);
+    auto V = [&](int d) { return vlabel[static_cast<std::size_t>(d)]; };
+    for (int c = 0; c < nc; ++c) {
+        const int* first = idx.data() + off[static_cast<std::size_t>(c)];
+        const int size = off[static_cast<std::size_t>(c) + 1] - off[static_cast<std::size_t>(c)];
+        bool hex = size == 48;
+        int d0 = -1;
+        for (int k = 0; k < size && hex; ++k) {
+            const int d = first[k];
+            if (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
+                ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6)
+                hex = false;
+            if (d0 < 0 && geo.handedness[static_cast<std::size_t>(d)] > 0) d0 = d;
+        }
+        if (hex && d0 >= 0) {
+            auto up = [&](int d) { return a(a(a(d, 2), 1), 0); };
+            const int d1 = a(d0, 0), d3 = a(a(d0, 1), 0), d2 = a(a(d1, 1), 0);
+            std::array<int, 8> h = {V(d0), V(d1), V(d2), V(d3), V(up(d0)), V(up(d1)), V(up(d2)), V(up(d3))};
+            std::array<int, 8> s = h;
+            std::sort(s.begin(), s.end());
+            if (std::adjacent_find(s.begin(), s.end()) == s.end()) {
+                out.hexes.push_back(h);
+                continue;
+            }
+        }
+        // Not a hexahedron: write every face of the cell as a vertex loop.
+        Polyhedron poly;
+        std::vector<int> seenFaces;
+        for (int k = 0; k < size; ++k) {
+            const int f0 = first[k];
+            const int fl = flabel[static_cast<std::size_t>(f0)];
+            if (std::find(seenFaces.begin(), seenFaces.end(), fl) != seenFaces.end()) continue;
+            seenFaces.push_back(fl);
+            std::vector<int> loop;
+            int d = f0;
+            for (int step = 0; step < size; ++step) {
+                loop.push_back(V(d));
+                const int e = a(d, 0);
+                const int nx = a(e, 1);
+                if (e == d || nx == e || nx == f0) break;
+                d = nx;
+            }
+            loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+            if (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+            if (geo.handedness[static_cast<std::size_t>(f0)] < 0) std::reverse(loop.begin(), loop.end());
+            poly.faces.push_back(loop);
+        }
+        out.polyhedra.push_back(std::move(poly));
+    }
+    stats.non_hex_cells = static_cast<long>(out.polyhedra.size());
+    return out;
+}
+
+} // namespace HexEx

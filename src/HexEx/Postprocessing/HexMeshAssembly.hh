@@ -1,0 +1,33 @@
+#pragma once
+/// @file HexMeshAssembly.hh
+/// Builds the output mesh from the final generalized map: vertices are the
+/// <alpha_1, alpha_2, alpha_3> orbits (so h-vertices that annihilation or degenerate tets
+/// joined are merged), cells the <alpha_0, alpha_1, alpha_2> orbits.
+
+#include "../GMap/GMap.hh"
+#include "../Mesh/HexMesh.hh"
+
+#include <vector>
+
+namespace HexEx {
+
+/// Counts produced by the assembly.
+struct AssemblyStats {
+    long quads = 0;           ///< <alpha_0, alpha_1, alpha_3> orbits
+    long boundary_quads = 0;  ///< of those, on the boundary (alpha_3 free)
+    long non_hex_cells = 0;   ///< cells written as polyhedra
+};
+
+/// Per-dart input of the assembly.
+struct DartGeometry {
+    std::vector<Vec3d> position;       ///< 3D position of the dart's grid point in its tet
+    std::vector<char> on_boundary;     ///< the grid point lies on a boundary face of its tet
+    std::vector<signed char> handedness; ///< +1 if the dart's frame (d1, d2, d3) is right-handed
+};
+
+/// Assembles vertices (position: mean of the class's boundary darts if it has any, else of
+/// all its darts), hexes in VTK order (from a right-handed dart of each cell) and polyhedra
+/// for every other cell.
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats& stats);
+
+} // namespace HexEx

@@ -1,0 +1,81 @@
+#include "Sanitization.hh"
+
+#include "../Predicates/ExactPredicates.hh"
+
+#include <algorithm>
+#include <cmath>
+
+namespace HexEx {
+
+SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, const Transitions& tr,
+                                 const SanitizeOptions& opt) {
+    SanitizeStats stats;
+    std::vector<int> star;                 // cells around the vertex, BFS order
+    std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
+    std::vector<int> slot(mesh.n_cells(), -1);
+    for (std::size_t vi = 0; vi < mesh.n_vertices(); ++vi) {
+        const VertexHandle v(static_cast<int>(vi));
+        auto cells = mesh.vertex_cells(v);
+        if (cells.first == cells.second) continue;
+        star.assign(1, *cells.first);
+        toChart.assign(1, GridTransform());
+        slot[star[0]] = 0;
+        for (std::size_t q = 0; q < star.size(); ++q) {
+            const CellHandle c(star[q]);
+            for (int j = 0; j < 4; ++j) {
+                if (mesh.cell_vertex(c, j) == v) continue;  // that face does not contain v
+                const HalfFaceHandle hf = TetMesh::halfface(c, j);
+                const HalfFaceHandle o = mesh.opposite_halfface(hf);
+                if (!o.is_valid()) continue;
+                const int n = TetMesh::cell(o).idx();
+                if (slot[n] >= 0) continue;
+                slot[n] = static_cast<int>(star.size());
+                star.push_back(n);
+                toChart.push_back(tr.halfface[hf.uidx()] * toChart[q]);
+            }
+        }
+        auto corner = [&](int c) -> Vec3d& {
+            const auto& cv = mesh.cell_vertices(CellHandle(c));
+            int k = 0;
+            while (cv[k] != v) ++k;
+            return params[static_cast<std::size_t>(c)][k];
+        };
+        // Largest magnitude the parameter reaches in any chart (raw values, plus the
+        // propagated ones' bound), so that truncation leaves every chart exact.
+        Vec3d u = corner(star[0]);
+        double bound = 0;
+        const double umax = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])});
+        for (std::size_t q = 0; q < star.size(); ++q) {
+            const Vec3d& p = corner(star[q]);
+            const Vec3i& t = toChart[q].t;
+            bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]),
+                              umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
+        }
+        int e = 0;
+        std::frexp(bound + 1.0, &e);  // bound + 1 < 2^e
+        const double quantum = std::ldexp(1.0, e - 52);
+        for (int k = 0; k < 3; ++k) {
+            if (!std::isfinite(u[k])) continue;
+            u[k] = std::nearbyint(u[k] / quantum) * quantum;
+            const double r = std::nearbyint(u[k]);
+            if (u[k] != r && std::fabs(u[k] - r) <= opt.epsilon) {
+                u[k] = r;
+                ++stats.snapped_coordinates;
+            }
+        }
+        for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
+        for (int c : star) slot[c] = -1;
+    }
+    return stats;
+}
+
+std::vector<signed char> classifyTets(const CornerParams& params) {
+    std::vector<signed char> s(params.size());
+    for (std::size_t c = 0; c < params.size(); ++c) {
+        const auto& p = params[c];
+        s[c] = static_cast<signed char>(orient3d(p[0], p[1], p[2], p[3]));
+    }
+    return s;
+}
+
+} // namespace HexEx

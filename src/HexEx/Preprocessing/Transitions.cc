@@ -1,0 +1,222 @@
+#include "Transitions.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace HexEx {
+
+namespace {
+
+/// Local index of vertex @p v in cell @p c, or -1.
+int localIndex(const TetMesh& mesh, CellHandle c, VertexHandle v) {
+    const auto& cv = mesh.cell_vertices(c);
+    for (int k = 0; k < 4; ++k)
+        if (cv[k] == v) return k;
+    return -1;
+}
+
+Vec3i roundVec(const Vec3d& v) {
+    return Vec3i(static_cast<int>(std::lround(v[0])), static_cast<int>(std::lround(v[1])),
+                 static_cast<int>(std::lround(v[2])));
+}
+
+/// Per interior face: the candidate rotations (bit mask) and the translation per rotation.
+struct FaceFit {
+    std::uint32_t candidates = 0;
+    int best = 0;
+    bool ambiguous = false;
+};
+
+FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
+    FaceFit f;
+    const Vec3d e1 = u[1] - u[0], e2 = u[2] - u[0];
+    const Vec3d f1 = w[1] - w[0], f2 = w[2] - w[0];
+    double res[24];
+    double best = std::numeric_limits<double>::max();
+    for (int r = 0; r < 24; ++r) {
+        const Rotation R(r);
+        res[r] = (R.apply(e1) - f1).sqrnorm() + (R.apply(e2) - f2).sqrnorm();
+        if (res[r] < best) {
+            best = res[r];
+            f.best = r;
+        }
+    }
+    const double l1 = e1.sqrnorm(), l2 = e2.sqrnorm();
+    const double area2 = (e1 % e2).sqrnorm();
+    f.ambiguous = !(area2 > 1e-12 * l1 * l2) || l1 == 0 || l2 == 0;
+    if (!f.ambiguous) {
+        f.candidates = 1u << f.best;
+    } else {
+        const double tol = 1e-6 * (l1 + l2) + 1e-12;
+        for (int r = 0; r < 24; ++r)
+            if (res[r] <= best + tol) f.candidates |= 1u << r;
+    }
+    return f;
+}
+
+} // namespace
+
+HalfFaceHandle halffaceTowards(const TetMesh& mesh, CellHandle c, CellHandle next) {
+    for (int j = 0; j < 4; ++j) {
+        const HalfFaceHandle hf = TetMesh::halfface(c, j);
+        const HalfFaceHandle o = mesh.opposite_halfface(hf);
+        if (o.is_valid() && TetMesh::cell(o) == next) return hf;
+    }
+    return HalfFaceHandle();
+}
+
+Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, const std::vector<int>* given) {
+    Transitions out;
+    const std::size_t nhf = mesh.n_halffaces();
+    out.halfface.assign(nhf, GridTransform());
+    std::vector<FaceFit> fits(nhf);
+    std::vector<char> decided(nhf, 1);
+
+    auto setTransition = [&](std::size_t h, int rot) {
+        const HalfFaceHandle hf(static_cast<int>(h));
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
+        const Rotation R(rot);
+        Vec3d acc(0, 0, 0);
+        for (int k = 0; k < 3; ++k) {
+            const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
+            const int l2 = localIndex(mesh, c2, mesh.cell_vertex(c, lc));
+            acc += params[c2.uidx()][l2] - R.apply(params[c.uidx()][lc]);
+        }
+        const GridTransform g(R, roundVec(acc / 3.0));
+        out.halfface[h] = g;
+        out.halfface[opp.uidx()] = g.inverse();
+        decided[h] = decided[opp.uidx()] = 1;
+    };
+
+    for (std::size_t h = 0; h < nhf; ++h) {
+        const HalfFaceHandle hf(static_cast<int>(h));
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
+        if (given) {
+            setTransition(h, (*given)[h]);
+            continue;
+        }
+        const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
+        Vec3d u[3], w[3];
+        for (int k = 0; k < 3; ++k) {
+            const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
+            u[k] = params[c.uidx()][lc];
+            w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
+        }
+        fits[h] = fitFace(u, w);
+        if (fits[h].ambiguous) {
+            ++out.n_ambiguous;
+            decided[h] = decided[opp.uidx()] = 0;
+        } else {
+            setTransition(h, fits[h].best);
+        }
+    }
+    if (out.n_ambiguous == 0) return out;
+
+    // Resolve ambiguous faces from edge consistency: the rotation that makes the holonomy
+    // around one of the face's edges trivial, once all other faces around that edge are known.
+    bool progress = true;
+    while (progress) {
+        progress = false;
+        for (std::size_t h = 0; h < nhf; ++h) {
+            if (decided[h]) continue;
+            const HalfFaceHandle hf(static_cast<int>(h));
+            const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+            if (opp.idx() < hf.idx()) continue;
+            const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
+            const int oc = TetMesh::opposite_corner(hf);
+            for (int k = 0; k < 3 && !decided[h]; ++k) {
+                const VertexHandle a = mesh.cell_vertex(c, TetMesh::kFaceCorners[oc][k]);
+                const VertexHandle b = mesh.cell_vertex(c, TetMesh::kFaceCorners[oc][(k + 1) % 3]);
+                const EdgeHandle e = mesh.find_edge(a, b);
+                if (mesh.is_boundary(e)) continue;
+                auto ring = mesh.edge_cells(e);
+                const int m = static_cast<int>(ring.second - ring.first);
+                int j = 0;
+                while (j < m && ring.first[j] != c2.idx()) ++j;
+                // Walk from c2 around the ring back to c (the long way), composing transitions.
+                GridTransform A;
+                bool known = true;
+                int cur = j;
+                int dir = (ring.first[(j + 1) % m] == c.idx()) ? -1 : 1;
+                for (int step = 0; step < m - 1; ++step) {
+                    const int nxt = ((cur + dir) % m + m) % m;
+                    const HalfFaceHandle t = halffaceTowards(mesh, CellHandle(ring.first[cur]), CellHandle(ring.first[nxt]));
+                    if (!t.is_valid() || !decided[t.uidx()]) { known = false; break; }
+                    A = out.halfface[t.uidx()] * A;
+                    cur = nxt;
+                }
+                if (!known || ring.first[cur] != c.idx()) continue;
+                // A maps chart c2 -> chart c; the loop c -> c2 -> c is trivial iff X = A^-1.
+                const int want = A.R.inverse().index();
+                if (fits[h].candidates & (1u << want)) {
+                    setTransition(h, want);
+                    progress = true;
+                }
+            }
+        }
+    }
+    for (std::size_t h = 0; h < nhf; ++h) {
+        const HalfFaceHandle hf(static_cast<int>(h));
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        if (decided[h] || opp.idx() < hf.idx()) continue;
+        ++out.n_unresolved;
+        setTransition(h, (fits[h].candidates & 1u) ? 0 : fits[h].best);
+    }
+    return out;
+}
+
+Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr) {
+    Singularities s;
+    std::vector<int> count(mesh.n_vertices(), 0);
+    s.is_singular_vertex.assign(mesh.n_vertices(), 0);
+    for (std::size_t ei = 0; ei < mesh.n_edges(); ++ei) {
+        const EdgeHandle e(static_cast<int>(ei));
+        if (mesh.is_boundary(e)) continue;
+        auto ring = mesh.edge_cells(e);
+        const int m = static_cast<int>(ring.second - ring.first);
+        GridTransform H;
+        double angle = 0;
+        const auto ev = mesh.edge_vertices(e);
+        for (int j = 0; j < m; ++j) {
+            const CellHandle c(ring.first[j]), n(ring.first[(j + 1) % m]);
+            const HalfFaceHandle hf = halffaceTowards(mesh, c, n);
+            if (hf.is_valid()) H = tr.halfface[hf.uidx()] * H;
+            // Parametric dihedral angle of c at the edge, signed by the tet's orientation.
+            const auto& cv = mesh.cell_vertices(c);
+            const auto& p = params[c.uidx()];
+            int ia = -1, ib = -1, o[2], no = 0;
+            for (int k = 0; k < 4; ++k) {
+                if (cv[k] == ev[0]) ia = k;
+                else if (cv[k] == ev[1]) ib = k;
+                else o[no++] = k;
+            }
+            if (ia < 0 || ib < 0 || no != 2) continue;
+            const Vec3d d = p[ib] - p[ia];
+            const double dl2 = d.sqrnorm();
+            if (dl2 == 0) continue;
+            Vec3d u = p[o[0]] - p[ia], v = p[o[1]] - p[ia];
+            u -= d * ((u | d) / dl2);
+            v -= d * ((v | d) / dl2);
+            const double vol = ((p[1] - p[0]) % (p[2] - p[0])) | (p[3] - p[0]);
+            const double ang = std::atan2((u % v).norm(), u | v);
+            angle += vol > 0 ? ang : vol < 0 ? -ang : 0.0;
+        }
+        if (H.R.is_identity()) continue;
+        SingularEdge se;
+        se.edge = e;
+        se.holonomy = H.R;
+        se.valence = static_cast<int>(std::lround(angle / (M_PI / 2)));
+        s.edges.push_back(se);
+        ++count[ev[0].uidx()];
+        ++count[ev[1].uidx()];
+        s.is_singular_vertex[ev[0].uidx()] = s.is_singular_vertex[ev[1].uidx()] = 1;
+    }
+    for (std::size_t v = 0; v < count.size(); ++v)
+        if (count[v] != 0 && count[v] != 2) s.vertices.push_back(VertexHandle(static_cast<int>(v)));
+    return s;
+}
+
+} // namespace HexEx
