@@ -127,22 +127,28 @@ TEST(HexExFileTest, TruncatedInVertices) {
     auto lines = validLines();
     lines.resize(4);
     lines[3] = "0 1";  // vertex 2 lacks z
-    expectError(join(lines), 5, "unexpected end of file: expected z coordinate of vertex 2 (file declares 5 vertices)");
+    expectError(join(lines), 4, "unexpected end of file: expected z coordinate of vertex 2 (file declares 5 vertices)");
+}
+
+TEST(HexExFileTest, TruncatedWithoutFinalNewline) {
+    std::string text = join(validLines());
+    text.resize(text.size() - 3);  // drop " 1\n": last parameter of tet 1
+    expectError(text, 9, "unexpected end of file: expected parameter w of corner 3 of tet 1 (file declares 2 tets)");
 }
 
 TEST(HexExFileTest, TruncatedBeforeTetCount) {
     auto lines = validLines();
     lines.resize(6);
-    expectError(join(lines), 7, "unexpected end of file: expected tet count");
+    expectError(join(lines), 6, "unexpected end of file: expected tet count");
 }
 
 TEST(HexExFileTest, TruncatedInTets) {
     auto lines = validLines();
     lines.pop_back();
-    expectError(join(lines), 9, "unexpected end of file: expected vertex index 0 of tet 1 (file declares 2 tets)");
+    expectError(join(lines), 8, "unexpected end of file: expected vertex index 0 of tet 1 (file declares 2 tets)");
     lines = validLines();
     lines[8].resize(lines[8].rfind(' '));  // last parameter missing
-    expectError(join(lines), 10, "expected parameter w of corner 3 of tet 1");
+    expectError(join(lines), 9, "unexpected end of file: expected parameter w of corner 3 of tet 1");
 }
 
 TEST(HexExFileTest, TrailingData) {
@@ -191,10 +197,10 @@ TEST(HexExFileTest, HugeCounts) {
     // Within range but far more than the file holds: must fail on truncation, not on allocation.
     lines = validLines();
     lines[0] = "2000000000";
-    expectError(join(lines), 10, "unexpected end of file");
+    expectError(join(lines), 9, "unexpected end of file");
     lines = validLines();
     lines[6] = "200000000";
-    expectError(join(lines), 10, "unexpected end of file: expected vertex index 0 of tet 2");
+    expectError(join(lines), 9, "unexpected end of file: expected vertex index 0 of tet 2 (file declares 200000000 tets)");
 }
 
 TEST(HexExFileTest, NaNAndInf) {

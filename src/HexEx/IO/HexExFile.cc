@@ -68,6 +68,9 @@ public:
         return pos_ < text_.size();
     }
 
+    /// Last line of the file (a final line break does not start a new line).
+    int eofLine() const { return !text_.empty() && text_.back() == '\n' && line_ > 1 ? line_ - 1 : line_; }
+
     /// Line of the current position (of the next token after atToken()).
     int line() const { return line_; }
 
@@ -81,7 +84,7 @@ public:
     template <class What>
     std::string_view token(const What& what) {
         if (!atToken())
-            fail(line_, "unexpected end of file: expected " + what() + (note_.empty() ? "" : " (" + note_ + ")"));
+            fail(eofLine(), "unexpected end of file: expected " + what() + (note_.empty() ? "" : " (" + note_ + ")"));
         const std::size_t start = pos_;
         while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
         return text_.substr(start, pos_ - start);
