@@ -103,18 +103,62 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
     return firstRotationalExit(T, cand, n, d0, h, d2);
 }
 
-/// Exit face of a degenerate tet: the first other face that meets the traced entity.
-int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry) {
-    const Vec3d z = toVec3d(s.z);
-    for (int j = 0; j < 4; ++j) {
-        if (j == entry) continue;
-        int o[3], m = 0;
-        for (int q = 0; q < 4; ++q)
-            if (q != j) o[m++] = q;
-        const bool hit = i == 0 ? triangleIntersectsSegment(T.p[o[0]], T.p[o[1]], T.p[o[2]], z, z + toVec3d(dirVec(s.d[0])))
-                                : triangleContainsPoint(T.p[o[0]], T.p[o[1]], T.p[o[2]], z);
-        if (hit) return j;
+/// Sign of orient2d(a, b, z + e*d1 + e^2*d2 + e^3*d3) in the projection dropping axis k.
+int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array<AxisDir, 3>& d, int k) {
+    const int o = orient2dAxis(a, b, z, k);
+    if (o != 0) return o;
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    for (AxisDir x : d) {
+        const int ax = dirAxis(x);
+        int s = 0;
+        if (ax == i) s = -signOf(b[j] - a[j]) * dirSign(x);
+        if (ax == j) s = signOf(b[i] - a[i]) * dirSign(x);
+        if (s != 0) return s;
     }
+    return 0;
+}
+
+/// Exit face of a degenerate (zero-volume) tet. Its image is flat: with outward face
+/// orientation, the faces split into two sides tiling the same region. A path entering
+/// through a face of one side leaves through the face of the other side that contains the
+/// crossing point (z, ties broken by the symbolic perturbation of the start dart).
+int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const TetMesh& mesh, int tet) {
+    const Vec3d z = toVec3d(s.z);
+    Vec3d f[4][3];
+    for (int j = 0; j < 4; ++j)
+        for (int q = 0; q < 3; ++q) f[j][q] = T.p[TetMesh::kFaceCorners[j][q]];
+    int axis = -1;
+    for (int j = 0; j < 4 && axis < 0; ++j)
+        for (int k = 0; k < 3; ++k)
+            if (orient2dAxis(f[j][0], f[j][1], f[j][2], k) != 0) { axis = k; break; }
+    auto meets = [&](int j) {
+        return i == 0 ? triangleIntersectsSegment(f[j][0], f[j][1], f[j][2], z, z + toVec3d(dirVec(s.d[0])))
+                      : triangleContainsPoint(f[j][0], f[j][1], f[j][2], z);
+    };
+    // vol == 0: all corners are coplanar; the faces are oriented within that plane.
+    if (axis >= 0 && entry >= 0) {
+        int side[4];
+        for (int j = 0; j < 4; ++j) side[j] = orient2dAxis(f[j][0], f[j][1], f[j][2], axis);
+        if (side[entry] != 0) {
+            int cand[3], n = 0;
+            for (int j = 0; j < 4; ++j)
+                if (j != entry && side[j] == -side[entry] && meets(j)) cand[n++] = j;
+            if (n == 1) return cand[0];
+            for (int k = 0; k < n; ++k) {
+                const int j = cand[k];
+                const int o = side[j];
+                if (orient2dSoS(f[j][0], f[j][1], z, s.d, axis) == o && orient2dSoS(f[j][1], f[j][2], z, s.d, axis) == o &&
+                    orient2dSoS(f[j][2], f[j][0], z, s.d, axis) == o)
+                    return j;
+            }
+            if (n > 0) return cand[0];
+        }
+    }
+    // Collapsed to a line or a point: any other interior face that meets the entity.
+    for (int j = 0; j < 4; ++j)
+        if (j != entry && meets(j) && !mesh.is_boundary(TetMesh::halfface(CellHandle(tet), j))) return j;
+    for (int j = 0; j < 4; ++j)
+        if (j != entry && meets(j)) return j;
     return -1;
 }
 
@@ -134,7 +178,7 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
             const long found = set.find(t, target.z, target.d);
             if (found >= 0) return found;
         }
-        const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry);
+        const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry, mesh, t);
         if (f < 0) return kUnconnected;
         const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);

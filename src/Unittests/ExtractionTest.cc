@@ -1,0 +1,226 @@
+// End-to-end extraction on valid integer-grid maps (issue: valid maps, singularities included).
+
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexExFile.hh>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+
+using namespace HexEx;
+
+namespace {
+
+struct Expect {
+    long hexes;
+    long vertices;  // -1: do not check
+};
+
+/// Counts quads shared by more than two hexes and boundary edges not in exactly two boundary quads.
+void checkQuadManifold(const HexMesh& hm, long& overShared, long& badBoundaryEdges, long& boundaryQuads) {
+    static const int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    std::map<std::array<int, 4>, std::pair<int, std::array<int, 4>>> quads;
+    for (const auto& h : hm.hexes)
+        for (const auto& f : kFaces) {
+            std::array<int, 4> q = {h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+            std::array<int, 4> key = q;
+            std::sort(key.begin(), key.end());
+            auto& e = quads[key];
+            ++e.first;
+            e.second = q;
+        }
+    overShared = 0;
+    boundaryQuads = 0;
+    std::map<std::pair<int, int>, int> edgeUse;
+    for (const auto& [key, e] : quads) {
+        if (e.first > 2) ++overShared;
+        if (e.first != 1) continue;
+        ++boundaryQuads;
+        for (int k = 0; k < 4; ++k) {
+            int a = e.second[k], b = e.second[(k + 1) % 4];
+            if (a > b) std::swap(a, b);
+            ++edgeUse[{a, b}];
+        }
+    }
+    badBoundaryEdges = 0;
+    for (const auto& [edge, n] : edgeUse)
+        if (n != 2) ++badBoundaryEdges;
+}
+
+ExtractionReport extractAndCheck(ParametrizedTetMesh pm, const Expect& ex, HexMesh& hm) {
+    pm.mesh.build_adjacency();
+    const double vol = totalParametricVolume(pm);
+    ExtractionOptions o;
+    o.threads = 1;
+    ExtractionReport r = extractHexMesh(pm, hm, o);
+    EXPECT_EQ(r.output.hexes, ex.hexes);
+    EXPECT_EQ(static_cast<double>(r.output.hexes), std::round(vol));
+    if (ex.vertices >= 0) {
+        EXPECT_EQ(r.output.vertices, ex.vertices);
+    }
+    EXPECT_EQ(r.output.non_hex_cells, 0);
+    EXPECT_EQ(r.output.unconnected_darts, 0);
+    EXPECT_EQ(r.darts.extracted, 48 * ex.hexes);
+    EXPECT_TRUE(r.validation.valid()) << r.validation.summary();
+    EXPECT_TRUE(r.valid_all_hex);
+    long over = 0, badEdges = 0, bq = 0;
+    checkQuadManifold(hm, over, badEdges, bq);
+    EXPECT_EQ(over, 0);
+    EXPECT_EQ(badEdges, 0);
+    EXPECT_EQ(bq, r.output.boundary_quads);
+    // Same output, bit for bit, with two threads.
+    HexMesh hm2;
+    o.threads = 2;
+    extractHexMesh(pm, hm2, o);
+    EXPECT_EQ(hm.hexes, hm2.hexes);
+    EXPECT_EQ(hm.vertices.size(), hm2.vertices.size());
+    EXPECT_TRUE(std::equal(hm.vertices.begin(), hm.vertices.end(), hm2.vertices.begin(), hm2.vertices.end()));
+    return r;
+}
+
+void expectInUnitCube(const HexMesh& hm) {
+    for (const auto& p : hm.vertices)
+        for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(p[k], -1e-12);
+            EXPECT_LE(p[k], 1 + 1e-12);
+        }
+}
+
+long cube(long s) { return s * s * s; }
+
+} // namespace
+
+TEST(ExtractCube, SameResolution) {
+    for (int s : {1, 2, 4}) {
+        HexMesh hm;
+        extractAndCheck(generateCube(s, s), {cube(s), cube(s + 1)}, hm);
+        expectInUnitCube(hm);
+    }
+}
+
+TEST(ExtractCube, TetMeshFinerThanGrid) {
+    HexMesh hm;
+    extractAndCheck(generateCube(5, 2), {8, 27}, hm);
+    expectInUnitCube(hm);
+}
+
+TEST(ExtractCube, TetMeshCoarserThanGrid) {
+    HexMesh hm;
+    const auto r = extractAndCheck(generateCube(1, 5), {125, 216}, hm);
+    EXPECT_EQ(r.output.boundary_quads, 6 * 25);
+    expectInUnitCube(hm);
+}
+
+TEST(ExtractCube, VertexPositionsOnTheGrid) {
+    HexMesh hm;
+    extractAndCheck(generateCube(3, 3), {27, 64}, hm);
+    for (const auto& p : hm.vertices)
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(p[k] * 3, std::round(p[k] * 3), 1e-12);
+}
+
+TEST(ExtractCube, RandomChartTransforms) {
+    for (unsigned seed : {1u, 2u, 3u}) {
+        auto pm = generateCube(3, 4);
+        applyRandomChartTransforms(pm, seed);
+        HexMesh hm;
+        extractAndCheck(pm, {64, 125}, hm);
+        expectInUnitCube(hm);
+    }
+}
+
+TEST(ExtractCube, FloatingPointNoise) {
+    auto pm = generateCube(3, 3);
+    applyRandomChartTransforms(pm, 5);
+    applyParameterNoise(pm, 1e-11, 9);
+    HexMesh hm;
+    const auto r = extractAndCheck(pm, {27, 64}, hm);
+    EXPECT_GT(r.input.snapped_coordinates, 0);
+}
+
+namespace {
+/// Number of hexes around each hex edge that lies on the cylinder axis (3D x = y = 0).
+std::vector<int> axisEdgeValences(const HexMesh& hm) {
+    static const int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+    auto onAxis = [&](int v) { return std::hypot(hm.vertices[v][0], hm.vertices[v][1]) < 1e-9; };
+    std::map<std::pair<int, int>, int> count;
+    for (const auto& h : hm.hexes)
+        for (const auto& e : kEdges) {
+            int a = h[e[0]], b = h[e[1]];
+            if (!onAxis(a) || !onAxis(b)) continue;
+            if (a > b) std::swap(a, b);
+            ++count[{a, b}];
+        }
+    std::vector<int> out;
+    for (const auto& [e, n] : count) out.push_back(n);
+    return out;
+}
+} // namespace
+
+TEST(ExtractCylinder, SingularValence) {
+    for (int k : {3, 4, 5, 6}) {
+        SCOPED_TRACE("valence " + std::to_string(k));
+        const int R = 2, H = 3;
+        HexMesh hm;
+        const auto r = extractAndCheck(generateCylinder(k, R, H, 1, 1), {k * R * R * H, -1}, hm);
+        EXPECT_EQ(r.input.singular_edges, k == 4 ? 0 : 1);
+        // Vertices: axis (H+1) + per wedge the R*(R+1) grid columns off the axis... count directly:
+        // each wedge owns the points with a >= 1 (its b = 0 side belongs to the previous wedge's a = 0).
+        EXPECT_EQ(r.output.vertices, (H + 1) * (1 + k * R * (R + 1)));
+        const auto val = axisEdgeValences(hm);
+        EXPECT_EQ(val.size(), static_cast<std::size_t>(H));
+        for (int v : val) EXPECT_EQ(v, k);
+        for (const auto& p : hm.vertices) {
+            EXPECT_LE(std::hypot(p[0], p[1]), 1 + 1e-12);
+            EXPECT_GE(p[2], -1e-12);
+            EXPECT_LE(p[2], static_cast<double>(H) / R + 1e-12);
+        }
+    }
+}
+
+TEST(ExtractCylinder, FineTetsAndChartNoise) {
+    for (int k : {3, 5}) {
+        SCOPED_TRACE("valence " + std::to_string(k));
+        auto pm = generateCylinder(k, 2, 2, 3, 2);
+        applyRandomChartTransforms(pm, 11);
+        applyParameterNoise(pm, 1e-11, 3);
+        HexMesh hm;
+        extractAndCheck(pm, {k * 8, -1}, hm);
+        for (int v : axisEdgeValences(hm)) EXPECT_EQ(v, k);
+    }
+}
+
+TEST(ExtractRing, TranslationSeam) {
+    HexMesh hm;
+    extractAndCheck(generateRing(6, 2, 2, 6, 2, 1), {24, 6 * 3 * 3}, hm);
+    auto pm = generateRing(5, 1, 3, 10, 1, 2);
+    applyRandomChartTransforms(pm, 4);
+    extractAndCheck(pm, {15, 5 * 2 * 4}, hm);
+}
+
+TEST(ExtractRing, TwistedSeam) {
+    HexMesh hm;
+    extractAndCheck(generateTwistedRing(4, 2, 4, 2), {16, 4 * 9}, hm);
+    auto pm = generateTwistedRing(6, 2, 6, 4);
+    applyRandomChartTransforms(pm, 8);
+    applyParameterNoise(pm, 1e-11, 8);
+    extractAndCheck(pm, {24, 6 * 9}, hm);
+}
+
+TEST(ExtractData, Sphere) {
+    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex";
+    std::ifstream probe(path);
+    if (!probe) GTEST_SKIP() << "bundled example " << path << " not found";
+    auto pm = readHexExFile(path);
+    HexMesh hm;
+    ExtractionOptions o;
+    const auto r = extractHexMesh(pm, hm, o);
+    EXPECT_EQ(r.input.degenerate_tets, 2);
+    EXPECT_EQ(r.output.hexes, 216);
+    EXPECT_EQ(r.output.vertices, 343);
+    EXPECT_TRUE(r.valid_all_hex) << r.validation.summary();
+}
