@@ -41,6 +41,7 @@ struct ExtractionReport {
         long vertices = 0, hexes = 0, non_hex_cells = 0;       ///< mesh size
         long quads = 0, boundary_quads = 0;                    ///< faces
         long unconnected_darts = 0;                            ///< darts with an alpha_0..alpha_2 link missing
+        long repaired_face_connections = 0;                    ///< partially connected quads completed
     } output;  ///< output statistics
     /// Dart statistics.
     struct Darts {

@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
+#include "../Postprocessing/FaceConnectionRepair.hh"
 #include "../Postprocessing/HexMeshAssembly.hh"
 #include "../Preprocessing/Sanitization.hh"
 #include "ConnectionTracing.hh"
@@ -122,6 +123,12 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
             if (p >= 0 && alive[static_cast<std::size_t>(p)]) g.link(h, DartHandle(newIndex[static_cast<std::size_t>(p)]), i);
             else if (i < 3) ++rep.output.unconnected_darts;
         }
+    }
+    if (opt.merge) {
+        rep.output.repaired_face_connections = completePartialFaceConnections(g);
+        if (rep.output.repaired_face_connections > 0)
+            rep.warnings.push_back(std::to_string(rep.output.repaired_face_connections) +
+                                   " partially connected quads were completed (alpha_3 links added)");
     }
     rep.timings_s.postprocess = secondsSince(t0);
 

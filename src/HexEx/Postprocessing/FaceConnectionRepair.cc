@@ -1,0 +1,61 @@
+#include "FaceConnectionRepair.hh"
+
+#include <map>
+#include <vector>
+
+namespace HexEx {
+
+long completePartialFaceConnections(GMap<3>& g) {
+    long repaired = 0;
+    const std::size_t n = g.n_darts();
+    std::vector<char> done(n, 0);
+    for (std::size_t s = 0; s < n; ++s) {
+        const DartHandle d0(static_cast<int>(s));
+        if (done[s] || !g.is_alive(d0)) continue;
+        const std::vector<DartHandle> face = g.orbit(d0, 0b0011);
+        for (auto x : face) done[x.uidx()] = 1;
+        // Partial: some darts linked by alpha_3, some free.
+        DartHandle seed;
+        bool anyFree = false;
+        for (auto x : face) {
+            if (g.is_free(x, 3)) anyFree = true;
+            else if (!seed.is_valid()) seed = x;
+        }
+        if (!anyFree || !seed.is_valid() || face.size() != 8) continue;
+        // Propagate the correspondence x -> phi(x) from the seed over alpha_0 and alpha_1.
+        std::map<int, int> phi{{seed.idx(), g.alpha(seed, 3).idx()}};
+        std::vector<DartHandle> stack{seed};
+        bool ok = true;
+        while (!stack.empty() && ok) {
+            const DartHandle x = stack.back();
+            stack.pop_back();
+            const DartHandle y(phi[x.idx()]);
+            for (int i = 0; i < 2; ++i) {
+                const DartHandle xn = g.alpha(x, i), yn = g.alpha(y, i);
+                auto it = phi.find(xn.idx());
+                if (it == phi.end()) {
+                    phi[xn.idx()] = yn.idx();
+                    stack.push_back(xn);
+                } else if (it->second != yn.idx()) {
+                    ok = false;
+                }
+            }
+        }
+        if (!ok || phi.size() != 8) continue;
+        // Every existing link must agree with phi and every missing one be free on both sides.
+        for (const auto& [x, y] : phi) {
+            const DartHandle X(x), Y(y);
+            if (X == Y || !g.is_alive(Y)) { ok = false; break; }
+            const bool xFree = g.is_free(X, 3), yFree = g.is_free(Y, 3);
+            if (!xFree && g.alpha(X, 3) != Y) ok = false;
+            if (!yFree && g.alpha(Y, 3) != X) ok = false;
+        }
+        if (!ok) continue;
+        for (const auto& [x, y] : phi)
+            if (g.is_free(DartHandle(x), 3)) g.sew(DartHandle(x), DartHandle(y), 3);
+        ++repaired;
+    }
+    return repaired;
+}
+
+} // namespace HexEx
