@@ -3,7 +3,5 @@
 #include <iostream>
 namespace HexExTool {
 int runExtract(const Args&) { std::cerr << "not implemented\n"; return 2; }
-int runGenerate(const Args&) { std::cerr << "not implemented\n"; return 2; }
-int runPerturb(const Args&) { std::cerr << "not implemented\n"; return 2; }
 int runValidate(const Args&) { std::cerr << "not implemented\n"; return 2; }
 }
