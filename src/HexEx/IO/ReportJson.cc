@@ -1,0 +1,163 @@
+/// @file ReportJson.cc
+/// JSON rendering of the extraction report.
+
+#include "ReportJson.hh"
+
+#include "../HexEx.hh"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+namespace HexEx {
+
+std::string jsonQuote(const std::string& s) {
+    std::string out = "\"";
+    for (const char ch : s) {
+        const unsigned char u = static_cast<unsigned char>(ch);
+        switch (ch) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\r': out += "\\r"; break;
+        case '\t': out += "\\t"; break;
+        case '\b': out += "\\b"; break;
+        case '\f': out += "\\f"; break;
+        default:
+            if (u < 0x20 || u == 0x7f) {
+                static const char* hex = "0123456789abcdef";
+                out += "\\u00";
+                out += hex[u >> 4];
+                out += hex[u & 15];
+            } else {
+                out += ch;
+            }
+        }
+    }
+    return out + "\"";
+}
+
+std::string jsonNumber(double x) {
+    if (!std::isfinite(x)) return "null";
+    if (x == 0) return "0";  // also for -0
+    char buf[64];
+    const auto res = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, res.ptr);
+}
+
+namespace {
+
+/// Writes `"key": value` entries of one object with commas and indentation.
+class ObjectWriter {
+public:
+    ObjectWriter(std::ostringstream& out, int indent) : out_(out), indent_(indent) { out_ << "{"; }
+    void raw(const char* key, const std::string& value) {
+        out_ << (first_ ? "\n" : ",\n") << std::string(static_cast<std::size_t>(indent_ + 2), ' ')
+             << jsonQuote(key) << ": " << value;
+        first_ = false;
+    }
+    void num(const char* key, long v) { raw(key, std::to_string(v)); }
+    void num(const char* key, double v) { raw(key, jsonNumber(v)); }
+    void boolean(const char* key, bool v) { raw(key, v ? "true" : "false"); }
+    void close() { out_ << (first_ ? "}" : "\n" + std::string(static_cast<std::size_t>(indent_), ' ') + "}"); }
+
+private:
+    std::ostringstream& out_;
+    int indent_;
+    bool first_ = true;
+};
+
+/// Renders a nested object with @p fill called on its writer.
+template <class Fill>
+std::string object(int indent, Fill&& fill) {
+    std::ostringstream s;
+    ObjectWriter w(s, indent);
+    fill(w);
+    w.close();
+    return s.str();
+}
+
+} // namespace
+
+std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
+    const auto& in = r.input;
+    const auto& out = r.output;
+    const auto& d = r.darts;
+    const auto& t = r.timings_s;
+    const auto& v = r.validation;
+    std::string doc = object(0, [&](ObjectWriter& top) {
+        top.raw("input", object(2, [&](ObjectWriter& w) {
+            w.num("vertices", in.vertices);
+            w.num("tets", in.tets);
+            w.num("boundary_faces", in.boundary_faces);
+            w.num("flipped_tets", in.flipped_tets);
+            w.num("degenerate_tets", in.degenerate_tets);
+            w.num("singular_edges", in.singular_edges);
+            w.num("parametric_volume", in.parametric_volume);
+            w.num("singular_vertices", in.singular_vertices);
+            w.num("ambiguous_transitions", in.ambiguous_transitions);
+            w.num("unresolved_transitions", in.unresolved_transitions);
+            w.num("snapped_coordinates", in.snapped_coordinates);
+        }));
+        top.raw("output", object(2, [&](ObjectWriter& w) {
+            w.num("vertices", out.vertices);
+            w.num("hexes", out.hexes);
+            w.num("non_hex_cells", out.non_hex_cells);
+            w.num("quads", out.quads);
+            w.num("boundary_quads", out.boundary_quads);
+            w.num("unconnected_darts", out.unconnected_darts);
+        }));
+        top.raw("darts", object(2, [&](ObjectWriter& w) {
+            w.num("extracted", d.extracted);
+            w.num("anti", d.anti);
+            w.num("annihilated_pairs", d.annihilated_pairs);
+            w.num("remaining_anti", d.remaining_anti);
+            w.num("asymmetric_links", d.asymmetric_links);
+        }));
+        top.boolean("valid_all_hex", r.valid_all_hex);
+        top.raw("quality", object(2, [&](ObjectWriter& w) {
+            w.num("min_scaled_jacobian", x.quality.min_scaled_jacobian);
+            w.num("mean_scaled_jacobian", x.quality.mean_scaled_jacobian);
+            w.num("inverted_hexes", x.quality.inverted_hexes);
+        }));
+        top.raw("timings_s", object(2, [&](ObjectWriter& w) {
+            w.num("read", x.read_s);
+            w.num("preprocess", t.preprocess);
+            w.num("vertices", t.vertices);
+            w.num("darts", t.darts);
+            w.num("connect", t.connect);
+            w.num("postprocess", t.postprocess);
+            w.num("assemble", t.assemble);
+            w.num("write", x.write_s);
+            w.num("total", x.total_s);
+        }));
+        top.num("threads", static_cast<long>(r.threads));
+        top.raw("version", jsonQuote(version()));
+        top.raw("validation", object(2, [&](ObjectWriter& w) {
+            w.boolean("valid", v.valid());
+            w.num("darts", v.darts);
+            w.num("not_involution", v.not_involution);
+            w.num("open_links", v.open_links);
+            w.num("eq1_edge_connection", v.eq1_edge_connection);
+            w.num("eq2_face_connection", v.eq2_face_connection);
+            w.num("eq3_quad", v.eq3_quad);
+            w.num("eq4_corner", v.eq4_corner);
+            w.num("eq5_strip", v.eq5_strip);
+            w.num("eq6_hex", v.eq6_hex);
+            w.num("boundary_darts", v.boundary_darts);
+            w.raw("summary", jsonQuote(v.summary()));
+        }));
+        std::string warnings = "[";
+        bool first = true;
+        for (const auto* list : {&r.warnings, &x.warnings})
+            for (const auto& s : *list) {
+                warnings += (first ? "\n    " : ",\n    ") + jsonQuote(s);
+                first = false;
+            }
+        warnings += first ? "]" : "\n  ]";
+        top.raw("warnings", warnings);
+    });
+    return doc + "\n";
+}
+
+} // namespace HexEx
