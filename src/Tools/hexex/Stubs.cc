@@ -2,6 +2,4 @@
 #include "Commands.hh"
 #include <iostream>
 namespace HexExTool {
-int runExtract(const Args&) { std::cerr << "not implemented\n"; return 2; }
-int runValidate(const Args&) { std::cerr << "not implemented\n"; return 2; }
 }

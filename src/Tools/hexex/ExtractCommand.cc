@@ -1,0 +1,295 @@
+/// @file ExtractCommand.cc
+/// `hexex extract IN -o OUT [options]`: extract the hex mesh of a .hexex tet mesh with its
+/// integer-grid map, write it (.vtu, .vtk, .ovm, .mesh) and optionally a JSON report,
+/// the singular edges and the tet mesh in parameter space.
+
+#include "ArgParser.hh"
+#include "Commands.hh"
+
+#include <HexEx/Core/Error.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/HexMeshWriters.hh>
+#include <HexEx/IO/ReportJson.hh>
+#include <HexEx/Mesh/HexMeshQuality.hh>
+#include <HexEx/Predicates/ExactPredicates.hh>
+#include <HexEx/Preprocessing/Transitions.hh>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <string>
+
+namespace HexExTool {
+
+namespace {
+
+const char* kExtractUsage =
+    "usage: hexex extract IN.hexex -o OUT [options]\n"
+    "  -o, --output OUT        hex mesh to write; format by extension: .vtu .vtk .ovm .mesh\n"
+    "  --report R.json         write the extraction report as JSON ('-' for stdout)\n"
+    "  --threads N             worker threads (0 = all hardware threads, default); output is identical\n"
+    "  --epsilon E             snap parameters this close to an integer (default 1e-6)\n"
+    "  --no-merge              keep regular/anti dart pairs (skip annihilation and vertex merging)\n"
+    "  --singularities S.vtk   write the singular edges of the input as legacy VTK lines\n"
+    "  --param-mesh P.vtk      write the tet mesh in parameter space (4 points per tet, each in\n"
+    "                          its own chart) as legacy VTK with cell data 'flipped', 'degenerate'\n"
+    "  --surface B.obj|.off|.ply|.stl  not yet supported\n"
+    "  -q, --quiet             print nothing but errors\n"
+    "IN may be '-' for standard input.\n"
+    "exit status: 0 all-hex mesh written, 3 written but not all-hex, 2 bad input or usage\n";
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Phase/percentage display on standard error: one line updated in place on a terminal,
+/// one line per update otherwise. The percentage is overall progress: each stage of the
+/// pipeline (kPhases) counts equally, and the extractor's fraction moves within its stage.
+class ProgressDisplay {
+public:
+    ProgressDisplay(bool enabled, bool tty) : enabled_(enabled), tty_(tty) {}
+    ~ProgressDisplay() { finish(); }
+    void update(const std::string& phase, double fraction) {
+        if (!enabled_ || phase == "done") return;
+        static const char* kPhases[] = {"preprocess", "darts", "connect", "postprocess", "vertices", "assemble", "write"};
+        constexpr int n = static_cast<int>(sizeof kPhases / sizeof kPhases[0]);
+        int k = 0;
+        while (k < n && phase != kPhases[k]) ++k;
+        if (k == n) k = last_index_;  // unknown phase name: keep the overall position
+        const double f = std::isfinite(fraction) ? std::min(1.0, std::max(0.0, fraction)) : 0.0;
+        const int pct = static_cast<int>(std::lround(100.0 * (k + f) / n));
+        if (phase == last_phase_ && pct == last_pct_) return;
+        last_phase_ = phase;
+        last_pct_ = pct;
+        last_index_ = k;
+        std::ostringstream s;
+        s << "hexex extract: [" << std::setw(3) << pct << "%] " << phase;
+        if (tty_) {
+            std::cerr << "\r" << std::left << std::setw(40) << s.str() << std::right << std::flush;
+            open_line_ = true;
+        } else {
+            std::cerr << s.str() << "\n";
+        }
+    }
+    void finish() {
+        if (open_line_) std::cerr << "\n" << std::flush;
+        open_line_ = false;
+    }
+
+private:
+    bool enabled_, tty_;
+    bool open_line_ = false;
+    std::string last_phase_;
+    int last_pct_ = -1;
+    int last_index_ = 0;
+};
+
+/// The tet mesh in parameter space as legacy VTK: every tet gets its own four points (the
+/// corner parameters in its chart), with cell data flipped/degenerate (exact orientation)
+/// and the input vertex index as point data.
+void writeParamMeshVtk(const std::string& path, const HexEx::ParametrizedTetMesh& pm) {
+    std::ofstream out(path);
+    if (!out) throw HexEx::InputError(path + ": cannot open for writing");
+    const std::size_t n = pm.params.size();
+    out << std::setprecision(17);
+    out << "# vtk DataFile Version 3.0\nhexex parameter-space tet mesh\nASCII\nDATASET UNSTRUCTURED_GRID\n";
+    out << "POINTS " << 4 * n << " double\n";
+    for (const auto& t : pm.params)
+        for (const auto& p : t) out << p[0] << " " << p[1] << " " << p[2] << "\n";
+    out << "CELLS " << n << " " << 5 * n << "\n";
+    for (std::size_t c = 0; c < n; ++c)
+        out << "4 " << 4 * c << " " << 4 * c + 1 << " " << 4 * c + 2 << " " << 4 * c + 3 << "\n";
+    out << "CELL_TYPES " << n << "\n";
+    for (std::size_t c = 0; c < n; ++c) out << "10\n";
+    out << "CELL_DATA " << n << "\nSCALARS flipped int 1\nLOOKUP_TABLE default\n";
+    std::vector<int> sign(n);
+    for (std::size_t c = 0; c < n; ++c) {
+        const auto& p = pm.params[c];
+        sign[c] = HexEx::orient3d(p[0], p[1], p[2], p[3]);
+        out << (sign[c] < 0 ? 1 : 0) << "\n";
+    }
+    out << "SCALARS degenerate int 1\nLOOKUP_TABLE default\n";
+    for (std::size_t c = 0; c < n; ++c) out << (sign[c] == 0 ? 1 : 0) << "\n";
+    out << "POINT_DATA " << 4 * n << "\nSCALARS vertex_id int 1\nLOOKUP_TABLE default\n";
+    for (std::size_t c = 0; c < n; ++c)
+        for (int i = 0; i < 4; ++i) out << pm.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), i).idx() << "\n";
+    out.flush();
+    if (!out) throw HexEx::InputError(path + ": write failed");
+}
+
+/// Singular edges of the input (transitions inferred from the parameters), in 3D.
+void writeSingularities(const std::string& path, const HexEx::ParametrizedTetMesh& pm, long* n_edges) {
+    const HexEx::Transitions tr = HexEx::computeTransitions(pm.mesh, pm.params);
+    const HexEx::Singularities s = HexEx::findSingularities(pm.mesh, pm.params, tr);
+    std::map<int, int> index;  // input vertex -> point index
+    std::vector<HexEx::Vec3d> points;
+    std::vector<std::array<int, 2>> segments;
+    std::vector<int> valences;
+    auto point = [&](HexEx::VertexHandle v) {
+        const auto it = index.find(v.idx());
+        if (it != index.end()) return it->second;
+        const int k = static_cast<int>(points.size());
+        index.emplace(v.idx(), k);
+        points.push_back(pm.mesh.position(v));
+        return k;
+    };
+    for (const auto& e : s.edges) {
+        const auto ev = pm.mesh.edge_vertices(e.edge);
+        segments.push_back({point(ev[0]), point(ev[1])});
+        valences.push_back(e.valence);
+    }
+    HexEx::writeSingularEdgesVtk(path, points, segments, valences);
+    *n_edges = static_cast<long>(segments.size());
+}
+
+} // namespace
+
+int runExtract(const Args& args) {
+    const auto t_start = std::chrono::steady_clock::now();
+    const std::vector<OptionSpec> spec = {
+        {"--output", true, "-o"},   {"--report", true, ""},        {"--threads", true, ""},
+        {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
+        {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
+    };
+    std::string input, output, report_path, sing_path, param_path;
+    HexEx::ExtractionOptions opt;
+    bool quiet = false;
+    try {
+        const ParsedArgs pa = parseArgs(args, spec);
+        if (pa.has("--help")) {
+            std::cout << kExtractUsage;
+            return 0;
+        }
+        if (pa.positional.empty()) throw UsageError("no input file given");
+        if (pa.positional.size() > 1) throw UsageError("more than one input file given ('" + pa.positional[1] + "')");
+        input = pa.positional[0];
+        if (!pa.has("--output")) throw UsageError("no output file given (-o OUT.vtu|.vtk|.ovm|.mesh)");
+        output = pa.get("--output");
+        report_path = pa.get("--report");
+        sing_path = pa.get("--singularities");
+        param_path = pa.get("--param-mesh");
+        opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
+        opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
+        opt.merge = !pa.has("--no-merge");
+        quiet = pa.has("--quiet");
+        if (pa.has("--surface"))
+            throw UsageError("--surface (boundary surface output) is not yet supported; the .vtu/.vtk output "
+                             "contains the boundary quads");
+        try {
+            HexEx::hexMeshFormatFromPath(output);
+        } catch (const HexEx::InputError& e) {
+            throw UsageError(e.what());
+        }
+    } catch (const UsageError& e) {
+        std::cerr << "hexex extract: " << e.what() << "\n" << kExtractUsage;
+        return 2;
+    }
+
+    // Read.
+    HexEx::ReadReport rr;
+    HexEx::ParametrizedTetMesh pm;
+    HexEx::ReportExtras extras;
+    auto t0 = std::chrono::steady_clock::now();
+    try {
+        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &rr) : HexEx::readHexExFile(input, &rr);
+    } catch (const HexEx::InputError& e) {
+        std::cerr << "hexex extract: error: " << e.what() << "\n";
+        return 2;
+    }
+    extras.read_s = secondsSince(t0);
+    for (const auto& w : rr.warnings) {
+        if (!quiet) std::cerr << "hexex extract: warning: " << w << "\n";
+        extras.warnings.push_back(w);
+    }
+
+    // Optional inputs views.
+    try {
+        if (!param_path.empty()) writeParamMeshVtk(param_path, pm);
+        if (!sing_path.empty()) {
+            long n = 0;
+            writeSingularities(sing_path, pm, &n);
+            if (!quiet) std::cerr << "hexex extract: wrote " << n << " singular edges to " << sing_path << "\n";
+        }
+    } catch (const std::exception& e) {
+        std::cerr << "hexex extract: error: " << e.what() << "\n";
+        return 2;
+    }
+
+    // Extract.
+    ProgressDisplay progress(!quiet && pm.mesh.n_cells() > 100000, stderrIsTerminal());
+    opt.progress = [&](const std::string& phase, double f) { progress.update(phase, f); };
+    HexEx::HexMesh hm;
+    HexEx::ExtractionReport rep;
+    try {
+        rep = HexEx::extractHexMesh(pm, hm, opt);
+    } catch (const HexEx::InputError& e) {
+        progress.finish();
+        std::cerr << "hexex extract: error: " << (input == "-" ? std::string("<stdin>") : input) << ": " << e.what()
+                  << "\n";
+        return 2;
+    }
+    extras.quality = HexEx::computeQuality(hm);
+
+    // Write.
+    progress.update("write", 0);
+    t0 = std::chrono::steady_clock::now();
+    try {
+        for (const auto& w : HexEx::writeHexMesh(output, hm)) {
+            if (!quiet) std::cerr << "hexex extract: warning: " << w << "\n";
+            extras.warnings.push_back(w);
+        }
+    } catch (const std::exception& e) {
+        progress.finish();
+        std::cerr << "hexex extract: error: " << e.what() << "\n";
+        return 2;
+    }
+    extras.write_s = secondsSince(t0);
+    progress.update("write", 1);
+    progress.finish();
+    extras.total_s = secondsSince(t_start);
+
+    if (!report_path.empty()) {
+        const std::string json = HexEx::reportToJson(rep, extras);
+        if (report_path == "-") {
+            std::cout << json << std::flush;
+        } else {
+            std::ofstream rf(report_path);
+            rf << json;
+            rf.flush();
+            if (!rf) {
+                std::cerr << "hexex extract: error: " << report_path << ": cannot write the report\n";
+                return 2;
+            }
+        }
+    }
+
+    if (!quiet) {
+        for (const auto& w : rep.warnings) std::cerr << "hexex extract: warning: " << w << "\n";
+        std::ostream& os = report_path == "-" ? std::cerr : std::cout;
+        os << "wrote " << output << ": " << rep.output.hexes << " hexes, " << rep.output.vertices << " vertices, "
+           << (rep.valid_all_hex ? "valid all-hex" : "NOT all-hex") << "\n";
+    }
+    if (rep.valid_all_hex) return 0;
+
+    // Written, but not all-hex: say why.
+    std::cerr << "hexex extract: the output is not a valid all-hex mesh:\n";
+    if (rep.output.non_hex_cells > 0)
+        std::cerr << "  " << rep.output.non_hex_cells << " non-hex cells (written as polyhedra)\n";
+    if (rep.output.unconnected_darts > 0)
+        std::cerr << "  " << rep.output.unconnected_darts << " unconnected darts (missing alpha_0..alpha_2 links)\n";
+    if (rep.darts.remaining_anti > 0)
+        std::cerr << "  " << rep.darts.remaining_anti << " anti darts remain after annihilation"
+                  << (opt.merge ? "" : " (--no-merge)") << "\n";
+    if (!rep.validation.valid()) std::cerr << "  validation: " << rep.validation.summary() << "\n";
+    if (rep.output.hexes == 0 && rep.output.non_hex_cells == 0) std::cerr << "  no cells were extracted\n";
+    return 3;
+}
+
+} // namespace HexExTool
