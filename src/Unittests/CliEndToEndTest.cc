@@ -1,0 +1,300 @@
+/// @file CliEndToEndTest.cc
+/// End-to-end tests of the `hexex` tool: runs the built binary (found next to this test
+/// binary: <build>/src/Tools/hexex/hexex for <build>/src/Unittests/unittests) on generated
+/// inputs and checks exit statuses, messages, reports and output files.
+
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Path of the hexex binary of this build tree, or empty if not found.
+std::string hexexBinary() {
+    std::error_code ec;
+    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
+    if (ec) return {};
+    const fs::path tool = self.parent_path().parent_path() / "Tools" / "hexex" / "hexex";
+    if (!fs::is_regular_file(tool, ec) || ::access(tool.c_str(), X_OK) != 0) return {};
+    return tool.string();
+}
+
+/// A shell word for @p s (single-quoted).
+std::string quote(const std::string& s) {
+    std::string out = "'";
+    for (const char c : s) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// Result of one run of the tool.
+struct RunResult {
+    int status = -1;  ///< exit status (WEXITSTATUS), -1 if it did not exit normally
+    std::string out;  ///< standard output
+    std::string err;  ///< standard error
+};
+
+class CliEndToEndTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        bin_ = hexexBinary();
+        if (bin_.empty()) GTEST_SKIP() << "hexex binary not found next to the test binary";
+        const char* base = std::getenv("TMPDIR");
+        std::string templ = std::string(base && *base ? base : "/tmp") + "/hexex-cli-XXXXXX";
+        std::vector<char> buf(templ.begin(), templ.end());
+        buf.push_back('\0');
+        ASSERT_NE(::mkdtemp(buf.data()), nullptr);
+        dir_ = buf.data();
+    }
+    void TearDown() override {
+        if (!dir_.empty()) {
+            std::error_code ec;
+            fs::remove_all(dir_, ec);
+        }
+    }
+
+    /// Path of @p name in the temp dir.
+    std::string path(const std::string& name) const { return (dir_ / name).string(); }
+
+    /// Runs `hexex ARGS` with stdout and stderr captured.
+    RunResult run(const std::vector<std::string>& args) {
+        std::string cmd = quote(bin_);
+        for (const auto& a : args) cmd += " " + quote(a);
+        const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+        cmd += " </dev/null >" + quote(out.string()) + " 2>" + quote(err.string());
+        RunResult r;
+        const int raw = std::system(cmd.c_str());
+        if (raw != -1 && WIFEXITED(raw)) r.status = WEXITSTATUS(raw);
+        r.out = slurp(out);
+        r.err = slurp(err);
+        return r;
+    }
+
+    /// Generates a cube (n boxes per side, scale s) into @p name.
+    void generateCube(const std::string& name, int n, int s) {
+        const RunResult r = run({"generate", "cube", "--n", std::to_string(n), "--scale", std::to_string(s), "-o",
+                                 path(name)});
+        ASSERT_EQ(r.status, 0) << r.err;
+    }
+
+    std::string bin_;
+    fs::path dir_;
+};
+
+/// The keys every report must have.
+void expectReportKeys(const std::string& json) {
+    for (const char* key :
+         {"\"input\"", "\"output\"", "\"darts\"", "\"valid_all_hex\"", "\"quality\"", "\"timings_s\"", "\"threads\"",
+          "\"version\"", "\"vertices\"", "\"tets\"", "\"boundary_faces\"", "\"flipped_tets\"", "\"degenerate_tets\"",
+          "\"singular_edges\"", "\"parametric_volume\"", "\"hexes\"", "\"non_hex_cells\"", "\"quads\"",
+          "\"boundary_quads\"", "\"unconnected_darts\"", "\"extracted\"", "\"anti\"", "\"annihilated_pairs\"",
+          "\"min_scaled_jacobian\"", "\"mean_scaled_jacobian\"", "\"inverted_hexes\"", "\"read\"", "\"preprocess\"",
+          "\"connect\"", "\"postprocess\"", "\"assemble\"", "\"write\"", "\"total\""})
+        EXPECT_NE(json.find(key), std::string::npos) << "report lacks " << key << "\n" << json;
+    // Numbers are numbers, not strings.
+    EXPECT_TRUE(std::regex_search(json, std::regex("\"threads\": [0-9]+")));
+    EXPECT_TRUE(std::regex_search(json, std::regex("\"version\": \"[0-9]+\\.[0-9]+\\.[0-9]+\"")));
+}
+
+} // namespace
+
+TEST_F(CliEndToEndTest, CubeGenerateExtractReport) {
+    generateCube("cube.hexex", 2, 3);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtu"), "--report", path("r.json")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("27 hexes"), std::string::npos) << r.out;
+    EXPECT_GT(fs::file_size(path("cube.vtu")), 0u);
+    const std::string json = slurp(path("r.json"));
+    expectReportKeys(json);
+    EXPECT_NE(json.find("\"hexes\": 27"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"valid_all_hex\": true"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"tets\": 48"), std::string::npos) << json;
+}
+
+TEST_F(CliEndToEndTest, QuietPrintsNothing) {
+    generateCube("cube.hexex", 2, 2);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtk"), "--quiet"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(r.err, "");
+}
+
+TEST_F(CliEndToEndTest, CylinderValence3) {
+    RunResult r = run({"generate", "cylinder", "--valence", "3", "--radius", "2", "--height", "2", "-o",
+                       path("cyl.hexex")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run({"extract", path("cyl.hexex"), "-o", path("cyl.ovm"), "--report", path("r.json"), "--singularities",
+             path("sing.vtk")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string json = slurp(path("r.json"));
+    expectReportKeys(json);
+    EXPECT_NE(json.find("\"hexes\": 24"), std::string::npos) << json;  // 3 * 2 * 2 * 2
+    EXPECT_FALSE(std::regex_search(json, std::regex("\"singular_edges\": 0[,\\n]"))) << json;
+    EXPECT_NE(slurp(path("sing.vtk")).find("valence"), std::string::npos);
+}
+
+TEST_F(CliEndToEndTest, ChartNoiseAndOutputFormats) {
+    RunResult r = run({"generate", "twisted-ring", "--chart-noise", "7", "-o", path("t.hexex")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    for (const char* ext : {".vtu", ".vtk", ".ovm", ".mesh"}) {
+        r = run({"extract", path("t.hexex"), "-o", path(std::string("t") + ext), "-q"});
+        EXPECT_EQ(r.status, 0) << ext << ": " << r.err;
+        EXPECT_GT(fs::file_size(path(std::string("t") + ext)), 0u) << ext;
+    }
+}
+
+TEST_F(CliEndToEndTest, ThreadCountDoesNotChangeOutput) {
+    RunResult r = run({"generate", "cube", "--n", "3", "--scale", "4", "--chart-noise", "3", "-o", path("c.hexex")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    ASSERT_EQ(run({"extract", path("c.hexex"), "-o", path("a.vtu"), "--threads", "1", "-q"}).status, 0);
+    ASSERT_EQ(run({"extract", path("c.hexex"), "-o", path("b.vtu"), "--threads", "4", "-q"}).status, 0);
+    EXPECT_EQ(slurp(path("a.vtu")), slurp(path("b.vtu")));
+}
+
+TEST_F(CliEndToEndTest, ParamMeshOutput) {
+    generateCube("cube.hexex", 1, 2);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("c.vtu"), "--param-mesh", path("p.vtk"), "-q"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string vtk = slurp(path("p.vtk"));
+    EXPECT_NE(vtk.find("POINTS 24 double"), std::string::npos);  // 6 tets x 4 corners
+    EXPECT_NE(vtk.find("SCALARS flipped int 1"), std::string::npos);
+    EXPECT_NE(vtk.find("SCALARS degenerate int 1"), std::string::npos);
+}
+
+TEST_F(CliEndToEndTest, MissingInputFile) {
+    const RunResult r = run({"extract", path("does-not-exist.hexex"), "-o", path("x.vtu")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("does-not-exist.hexex"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("x.vtu")));
+}
+
+TEST_F(CliEndToEndTest, TruncatedInputNamesLine) {
+    generateCube("cube.hexex", 2, 3);
+    const std::string text = slurp(path("cube.hexex"));
+    {
+        std::ofstream out(path("bad.hexex"), std::ios::binary);
+        out << text.substr(0, text.size() / 2);
+    }
+    const std::regex located("bad\\.hexex:[0-9]+: ");
+    RunResult r = run({"extract", path("bad.hexex"), "-o", path("x.vtu")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(std::regex_search(r.err, located)) << r.err;
+    r = run({"info", path("bad.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(std::regex_search(r.err, located)) << r.err;
+    r = run({"perturb", path("bad.hexex"), "-a", "0.1", "-o", path("y.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_TRUE(std::regex_search(r.err, located)) << r.err;
+}
+
+TEST_F(CliEndToEndTest, MalformedNumberNamesLine) {
+    {
+        std::ofstream out(path("bad.hexex"));
+        out << "4\n0 0 0\n1 0 0\n0 1 0\n0 0 x\n1\n0 1 2 3  0 0 0 1 0 0 0 1 0 0 0 1\n";
+    }
+    const RunResult r = run({"extract", path("bad.hexex"), "-o", path("x.vtu")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("bad.hexex:5:"), std::string::npos) << r.err;
+}
+
+TEST_F(CliEndToEndTest, UsageErrors) {
+    generateCube("cube.hexex", 1, 1);
+    RunResult r = run({"extract", path("cube.hexex"), "-o", path("x.vtu"), "--bogus"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+
+    r = run({"extract", path("cube.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no output file"), std::string::npos) << r.err;
+
+    r = run({"extract", path("cube.hexex"), "-o"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("needs a value"), std::string::npos) << r.err;
+
+    r = run({"extract", path("cube.hexex"), "-o", path("x.vtu"), "--threads", "many"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--threads"), std::string::npos) << r.err;
+
+    r = run({"extract", path("cube.hexex"), "-o", path("x.txt")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("x.txt"), std::string::npos) << r.err;
+
+    r = run({"extract", path("cube.hexex"), "-o", path("x.vtu"), "--surface", path("b.obj")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("not yet supported"), std::string::npos) << r.err;
+
+    r = run({"extract"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no input file"), std::string::npos) << r.err;
+
+    r = run({"generate", "sphere", "-o", path("s.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("sphere"), std::string::npos) << r.err;
+
+    r = run({"generate", "cylinder", "--valence", "2", "-o", path("s.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--valence"), std::string::npos) << r.err;  // the shape's usage
+
+    r = run({"generate", "cube", "--radius", "2", "-o", path("s.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--radius"), std::string::npos) << r.err;
+
+    r = run({"perturb", path("cube.hexex"), "-o", path("p.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("amplitude"), std::string::npos) << r.err;
+
+    r = run({"perturb", path("cube.hexex"), "-a", "-1", "-o", path("p.hexex")});
+    EXPECT_EQ(r.status, 2);
+
+    r = run({"frobnicate"});
+    EXPECT_EQ(r.status, 2);
+}
+
+TEST_F(CliEndToEndTest, PerturbThenExtract) {
+    generateCube("cube.hexex", 3, 3);
+    RunResult r = run({"perturb", path("cube.hexex"), "-a", "0.3", "--seed", "5", "-o", path("p.hexex")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("flipped tets"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("degenerate tets"), std::string::npos) << r.out;
+    // Same seed, same file.
+    r = run({"perturb", path("cube.hexex"), "-a", "0.3", "--seed", "5", "-o", path("q.hexex"), "-q"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(slurp(path("p.hexex")), slurp(path("q.hexex")));
+
+    r = run({"extract", path("p.hexex"), "-o", path("p.vtu"), "--report", path("r.json")});
+    EXPECT_TRUE(r.status == 0 || r.status == 3) << r.status << "\n" << r.err;
+    ASSERT_TRUE(fs::exists(path("r.json")));
+    const std::string json = slurp(path("r.json"));
+    expectReportKeys(json);
+    if (r.status == 0) {
+        EXPECT_NE(json.find("\"valid_all_hex\": true"), std::string::npos);
+    } else {
+        EXPECT_NE(json.find("\"valid_all_hex\": false"), std::string::npos);
+        EXPECT_NE(r.err.find("not a valid all-hex"), std::string::npos) << r.err;
+    }
+}
+
+TEST_F(CliEndToEndTest, ReportToStdout) {
+    generateCube("cube.hexex", 1, 2);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("c.vtu"), "--report", "-"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("{", 0), 0u) << r.out;
+    EXPECT_NE(r.out.find("\"hexes\": 8"), std::string::npos) << r.out;
+}
