@@ -1,0 +1,66 @@
+#pragma once
+/// @file HexMeshWriters.hh
+/// Writers of the output hex mesh (HexMesh) in the formats the `hexex` tool supports,
+/// chosen by file extension:
+///
+/// - `.vtu`  VTK XML UnstructuredGrid, ASCII (opens in ParaView). Hexes are VTK_HEXAHEDRON
+///           (12); polyhedra are VTK_POLYHEDRON (42) with `faces` / `faceoffsets` arrays.
+/// - `.vtk`  legacy VTK (DataFile Version 3.0), ASCII UNSTRUCTURED_GRID. Hexes are
+///           VTK_HEXAHEDRON (12). Legacy files have no portable polyhedron syntax, so every
+///           face of a polyhedron is written as its own VTK_POLYGON (7) cell; when there are
+///           polyhedra, the cell-data array `hexex_cell_id` (int) gives for every VTK cell
+///           the index of the HexMesh cell it belongs to (hexes first, then polyhedra), and
+///           readHexMesh() uses it to reassemble the polyhedra.
+/// - `.ovm`  OpenVolumeMesh ASCII. Halfedge 2e+o runs from the edge's first vertex to its
+///           second for o = 0; halfface 2f+o is the face's own vertex loop for o = 0 and the
+///           reversed loop for o = 1. Convention of this writer: every cell lists its
+///           halffaces oriented outward (counter-clockwise seen from outside the cell);
+///           hex faces are derived from the VTK order as in kHexFaces. A face shared by two
+///           cells is stored once, with the orientation of its first occurrence.
+/// - `.mesh` Medit (MeshVersionFormatted 2, Dimension 3) with `Vertices` and `Hexahedra`
+///           (1-based, VTK vertex order, reference 0). Medit has no polyhedra: non-hex
+///           cells are left out and the writer returns a warning saying how many.
+///
+/// Positions are written with 17 significant digits, so they read back bit-identically.
+
+#include "../Mesh/HexMesh.hh"
+
+#include <array>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// File formats of hex meshes.
+enum class HexMeshFormat {
+    Vtu,    ///< VTK XML UnstructuredGrid (`.vtu`)
+    Vtk,    ///< legacy VTK (`.vtk`)
+    Ovm,    ///< OpenVolumeMesh ASCII (`.ovm`)
+    Medit,  ///< Medit / GMF ASCII (`.mesh`)
+};
+
+/// The format named by the extension of @p path (case-insensitive).
+/// @throws InputError naming the path if the extension is none of .vtu, .vtk, .ovm, .mesh.
+HexMeshFormat hexMeshFormatFromPath(const std::string& path);
+
+/// Writes @p mesh in @p format to @p out.
+/// @return warnings (e.g. cells a format cannot store); empty if everything was written.
+/// @throws std::invalid_argument if the mesh references a vertex out of range or has a
+///         polyhedron face with fewer than three vertices.
+std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format);
+
+/// Writes @p mesh to @p path in the format given by its extension (see the file overview).
+/// @return warnings, each starting with "<path>: "; empty if everything was written.
+/// @throws InputError naming the path for an unknown extension or an unwritable path;
+///         std::invalid_argument as writeHexMeshStream().
+std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh);
+
+/// Writes singular edges as legacy VTK POLYDATA: @p points, line @p segments (pairs of
+/// point indices) and a cell-data scalar `valence` (one value per segment, @p valences).
+/// @throws std::invalid_argument if a segment index is out of range or the sizes of
+///         @p segments and @p valences differ; InputError naming the path if it cannot be written.
+void writeSingularEdgesVtk(const std::string& path, const std::vector<Vec3d>& points,
+                           const std::vector<std::array<int, 2>>& segments, const std::vector<int>& valences);
+
+} // namespace HexEx
