@@ -23,6 +23,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <utility>
 #include <sstream>
 #include <string>
 
@@ -149,6 +150,38 @@ void writeSingularities(const std::string& path, const HexEx::ParametrizedTetMes
     *n_edges = static_cast<long>(segments.size());
 }
 
+/// Drops what no writer can store (polyhedron faces with fewer than three vertices, cells
+/// with a vertex index out of range) and returns how many faces and cells were dropped.
+/// The extractor should never produce such cells; this keeps the tool writing its best mesh
+/// if it does.
+std::pair<long, long> dropUnwritableCells(HexEx::HexMesh& hm) {
+    const long nv = static_cast<long>(hm.vertices.size());
+    auto bad = [&](int v) { return v < 0 || v >= nv; };
+    long faces = 0, cells = 0;
+    std::vector<std::array<int, 8>> hexes;
+    for (const auto& h : hm.hexes) {
+        bool ok = true;
+        for (const int v : h) ok = ok && !bad(v);
+        if (ok) hexes.push_back(h);
+        else ++cells;
+    }
+    hm.hexes.swap(hexes);
+    std::vector<HexEx::Polyhedron> polys;
+    for (auto& p : hm.polyhedra) {
+        HexEx::Polyhedron q;
+        for (auto& f : p.faces) {
+            bool ok = f.size() >= 3;
+            for (const int v : f) ok = ok && !bad(v);
+            if (ok) q.faces.push_back(std::move(f));
+            else ++faces;
+        }
+        if (q.faces.empty()) ++cells;
+        else polys.push_back(std::move(q));
+    }
+    hm.polyhedra.swap(polys);
+    return {faces, cells};
+}
+
 } // namespace
 
 int runExtract(const Args& args) {
@@ -234,6 +267,12 @@ int runExtract(const Args& args) {
         std::cerr << "hexex extract: error: " << (input == "-" ? std::string("<stdin>") : input) << ": " << e.what()
                   << "\n";
         return 2;
+    }
+    const auto dropped = dropUnwritableCells(hm);
+    if (dropped.first > 0 || dropped.second > 0) {
+        rep.valid_all_hex = false;
+        rep.warnings.push_back("dropped " + std::to_string(dropped.first) + " polyhedron faces with fewer than 3 "
+                               "vertices and " + std::to_string(dropped.second) + " cells that could not be written");
     }
     extras.quality = HexEx::computeQuality(hm);
 
