@@ -13,6 +13,7 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
@@ -35,7 +36,7 @@ bool iequals(std::string_view a, std::string_view b) {
 }
 
 /// A token quoted for an error message: at most 40 characters, non-printable bytes as '?'.
-std::string quoted(std::string_view tok) {
+std::string quoteToken(std::string_view tok) {
     std::string s = "'";
     const std::size_t n = std::min<std::size_t>(tok.size(), 40);
     for (std::size_t i = 0; i < n; ++i) {
@@ -123,7 +124,7 @@ public:
         const char* last = first + t.text.size();
         if (first != last && *first == '+') ++first;
         const auto res = std::from_chars(first, last, v);
-        if (res.ec != std::errc() || res.ptr != last) fail(t.line, "expected " + what + ", got " + quoted(t.text));
+        if (res.ec != std::errc() || res.ptr != last) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
         if (v < lo || v > hi)
             fail(t.line, what + " " + std::to_string(v) + " out of range [" + std::to_string(lo) + ", " +
                              std::to_string(hi) + "]");
@@ -142,7 +143,7 @@ public:
         long long v = 0;
         const auto res = std::from_chars(t.text.data(), t.text.data() + t.text.size(), v);
         if (res.ec != std::errc() || res.ptr != t.text.data() + t.text.size())
-            fail(t.line, "expected " + what + ", got " + quoted(t.text));
+            fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
         if (v < 0) fail(t.line, what + " is negative (" + std::to_string(v) + ")");
         if (v > maxCount || v > INT_MAX)
             fail(t.line, what + " " + std::to_string(v) + " is larger than the file can hold");
@@ -157,7 +158,7 @@ public:
         const char* last = first + t.text.size();
         if (first != last && *first == '+') ++first;
         const auto res = std::from_chars(first, last, v, std::chars_format::general);
-        if (res.ec != std::errc() || res.ptr != last) fail(t.line, "expected " + what + ", got " + quoted(t.text));
+        if (res.ec != std::errc() || res.ptr != last) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
         if (!std::isfinite(v)) fail(t.line, what + " is not finite");
         return v;
     }
@@ -165,7 +166,7 @@ public:
     /// Reads the keyword @p kw (case-insensitive).
     void keyword(std::string_view kw) {
         const Token t = next("'" + std::string(kw) + "'");
-        if (!iequals(t.text, kw)) fail(t.line, "expected '" + std::string(kw) + "', got " + quoted(t.text));
+        if (!iequals(t.text, kw)) fail(t.line, "expected '" + std::string(kw) + "', got " + quoteToken(t.text));
     }
 
 private:
@@ -389,11 +390,11 @@ HexMesh readVtk(std::string_view text, const std::string& name) {
 
     const Token fmt = lx.next("'ASCII'");
     if (iequals(fmt.text, "BINARY")) lx.fail(fmt.line, "binary legacy VTK files are not supported");
-    if (!iequals(fmt.text, "ASCII")) lx.fail(fmt.line, "expected 'ASCII', got " + quoted(fmt.text));
+    if (!iequals(fmt.text, "ASCII")) lx.fail(fmt.line, "expected 'ASCII', got " + quoteToken(fmt.text));
     lx.keyword("DATASET");
     const Token ds = lx.next("dataset type");
     if (!iequals(ds.text, "UNSTRUCTURED_GRID"))
-        lx.fail(ds.line, "dataset type " + quoted(ds.text) + " is not supported (expected UNSTRUCTURED_GRID)");
+        lx.fail(ds.line, "dataset type " + quoteToken(ds.text) + " is not supported (expected UNSTRUCTURED_GRID)");
 
     HexMesh mesh;
     bool havePoints = false, haveCells = false, haveTypes = false;
@@ -495,7 +496,7 @@ HexMesh readVtk(std::string_view text, const std::string& name) {
                 skipValues(lx, attrCount * comps, "scalar value");
             }
         } else if (iequals(kw.text, "VECTORS") || iequals(kw.text, "NORMALS")) {
-            if (attrCount < 0) lx.fail(kw.line, quoted(kw.text) + " outside CELL_DATA / POINT_DATA");
+            if (attrCount < 0) lx.fail(kw.line, quoteToken(kw.text) + " outside CELL_DATA / POINT_DATA");
             lx.next("name");
             lx.next("data type");
             skipValues(lx, 3 * attrCount, "vector value");
@@ -533,7 +534,7 @@ HexMesh readVtk(std::string_view text, const std::string& name) {
                 lx.next("metadata");
             }
         } else {
-            lx.fail(kw.line, "unexpected keyword " + quoted(kw.text));
+            lx.fail(kw.line, "unexpected keyword " + quoteToken(kw.text));
         }
     }
     if (!havePoints) failAt(name, 0, "no POINTS section");
@@ -768,7 +769,7 @@ long long intAttr(const XmlNode& n, const std::string& key, const std::string& n
     long long v = 0;
     const auto res = std::from_chars(s->data(), s->data() + s->size(), v);
     if (res.ec != std::errc() || res.ptr != s->data() + s->size() || v < 0 || v > INT_MAX)
-        failAt(name, n.line, "attribute " + key + "=" + quoted(*s) + " is not a valid count");
+        failAt(name, n.line, "attribute " + key + "=" + quoteToken(*s) + " is not a valid count");
     return v;
 }
 
@@ -778,7 +779,7 @@ HexMesh readVtu(std::string_view text, const std::string& name) {
     if (root.name != "VTKFile") failAt(name, root.line, "root element is <" + root.name + ">, expected <VTKFile>");
     const std::string* type = root.attr("type");
     if (!type || *type != "UnstructuredGrid")
-        failAt(name, root.line, "VTKFile type is " + (type ? quoted(*type) : std::string("missing")) +
+        failAt(name, root.line, "VTKFile type is " + (type ? quoteToken(*type) : std::string("missing")) +
                                     ", expected 'UnstructuredGrid'");
     const auto grids = childrenNamed(nodes, 0, "UnstructuredGrid");
     if (grids.size() != 1) failAt(name, root.line, "expected one <UnstructuredGrid> element");
@@ -946,7 +947,7 @@ HexMesh readMedit(std::string_view text, const std::string& name) {
             int per = -1;
             for (const auto& s : kSkip)
                 if (iequals(kw.text, s.first)) per = s.second;
-            if (per < 0) lx.fail(kw.line, "unknown or unsupported keyword " + quoted(kw.text));
+            if (per < 0) lx.fail(kw.line, "unknown or unsupported keyword " + quoteToken(kw.text));
             if (per == 0) {  // Identifier "..." : skip one token
                 lx.next("identifier");
                 continue;
@@ -986,7 +987,7 @@ HexMesh readOvm(std::string_view text, const std::string& name) {
     lx.keyword("OVM");
     const Token enc = lx.next("'ASCII'");
     if (iequals(enc.text, "BINARY")) lx.fail(enc.line, "binary OVM files are not supported");
-    if (!iequals(enc.text, "ASCII")) lx.fail(enc.line, "expected 'ASCII', got " + quoted(enc.text));
+    if (!iequals(enc.text, "ASCII")) lx.fail(enc.line, "expected 'ASCII', got " + quoteToken(enc.text));
     HexMesh mesh;
     lx.keyword("Vertices");
     const long long nv = lx.count("number of vertices", 3);
@@ -1068,9 +1069,16 @@ HexMesh readHexMeshBuffer(std::string_view text, HexMeshFormat format, const std
 
 HexMesh readHexMesh(const std::string& path) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": is a directory, not a mesh file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open file for reading");
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text;
+    try {
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    } catch (const std::exception& e) {  // libstdc++ reports read errors (EISDIR, EIO) by throwing
+        throw InputError(path + ": error while reading the file (" + e.what() + ")");
+    }
     if (in.bad()) throw InputError(path + ": error while reading the file");
     return readHexMeshBuffer(text, format, path);
 }

@@ -1,0 +1,159 @@
+// Tests of HexMeshQuality (scaled Jacobians) and HexMeshCheck (the mesh validator).
+
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/Mesh/HexMeshCheck.hh>
+#include <HexEx/Mesh/HexMeshQuality.hh>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace HexEx;
+
+namespace {
+
+HexMesh extracted(ParametrizedTetMesh pm) {
+    pm.mesh.build_adjacency();
+    HexMesh hm;
+    extractHexMesh(pm, hm);
+    return hm;
+}
+
+/// An n x n x n grid of unit hexes in VTK order.
+HexMesh gridMesh(int n) {
+    HexMesh m;
+    auto id = [n](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) m.vertices.emplace_back(i, j, k);
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                m.hexes.push_back({{id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                                    id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+                                    id(i, j + 1, k + 1)}});
+    return m;
+}
+
+} // namespace
+
+TEST(HexMeshQuality, UnitCubeIsOne) {
+    const HexMesh m = gridMesh(1);
+    const auto sj = scaledJacobians(m);
+    ASSERT_EQ(sj.size(), 1u);
+    EXPECT_DOUBLE_EQ(sj[0], 1.0);
+    const QualityStats q = computeQuality(m);
+    EXPECT_DOUBLE_EQ(q.min_scaled_jacobian, 1.0);
+    EXPECT_DOUBLE_EQ(q.mean_scaled_jacobian, 1.0);
+    EXPECT_EQ(q.inverted_hexes, 0);
+}
+
+TEST(HexMeshQuality, ScaledBoxAndShearedHex) {
+    HexMesh m = gridMesh(1);
+    for (auto& p : m.vertices) p = Vec3d(3 * p[0], 0.5 * p[1], 7 * p[2]);
+    EXPECT_NEAR(computeQuality(m).min_scaled_jacobian, 1.0, 1e-15);  // scale invariant
+    // Shear the top by one unit in x: corner 0 sees edges (1,0,0), (0,1,0), (1,0,1).
+    HexMesh s = gridMesh(1);
+    for (int i = 4; i < 8; ++i) s.vertices[i][0] += 1;
+    EXPECT_NEAR(computeQuality(s).min_scaled_jacobian, 1 / std::sqrt(2.0), 1e-15);
+    EXPECT_EQ(computeQuality(s).inverted_hexes, 0);
+}
+
+TEST(HexMeshQuality, MirroredHexIsInverted) {
+    HexMesh m = gridMesh(1);
+    for (auto& p : m.vertices) p[2] = -p[2];
+    const QualityStats q = computeQuality(m);
+    EXPECT_EQ(q.inverted_hexes, 1);
+    EXPECT_DOUBLE_EQ(q.min_scaled_jacobian, -1.0);
+}
+
+TEST(HexMeshQuality, DegenerateAndOutOfRange) {
+    HexMesh m = gridMesh(1);
+    m.vertices[1] = m.vertices[0];  // zero-length edge
+    EXPECT_EQ(computeQuality(m).inverted_hexes, 1);
+    HexMesh bad = gridMesh(1);
+    bad.hexes[0][5] = 1000;
+    EXPECT_EQ(scaledJacobians(bad)[0], 0.0);
+    EXPECT_EQ(computeQuality(HexMesh{}).inverted_hexes, 0);
+}
+
+TEST(HexMeshCheck, ExtractedCubeIsValid) {
+    const HexMesh m = extracted(generateCube(2, 3));
+    const HexMeshCheckResult r = checkHexMesh(m);
+    EXPECT_TRUE(r.valid_all_hex);
+    EXPECT_EQ(r.hexes, 27);
+    EXPECT_EQ(r.cells, 27);
+    EXPECT_EQ(r.non_hex_cells, 0);
+    EXPECT_EQ(r.vertices, 64);
+    EXPECT_EQ(r.quads, 108);
+    EXPECT_EQ(r.boundary_quads, 54);
+    EXPECT_EQ(r.edges, 144);
+    EXPECT_EQ(r.quads_shared_by_more_than_two, 0);
+    EXPECT_EQ(r.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(r.euler_characteristic, 1);
+    EXPECT_EQ(r.quality.inverted_hexes, 0);
+    EXPECT_NEAR(r.quality.min_scaled_jacobian, 1.0, 1e-12);
+}
+
+TEST(HexMeshCheck, ExtractedSingularCylinderIsValid) {
+    const HexMesh m = extracted(generateCylinder(3, 2, 2, 1, 1));
+    const HexMeshCheckResult r = checkHexMesh(m);
+    EXPECT_TRUE(r.valid_all_hex);
+    EXPECT_EQ(r.hexes, 24);
+    EXPECT_EQ(r.euler_characteristic, 1);
+    EXPECT_EQ(r.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(r.quality.inverted_hexes, 0);
+    EXPECT_GT(r.quality.min_scaled_jacobian, 0.0);
+}
+
+TEST(HexMeshCheck, MissingMiddleHexKeepsClosedBoundary) {
+    HexMesh m = gridMesh(3);
+    m.hexes.erase(m.hexes.begin() + 13);  // the centre hex (1,1,1)
+    const HexMeshCheckResult r = checkHexMesh(m);
+    EXPECT_TRUE(r.valid_all_hex);
+    EXPECT_EQ(r.boundary_quads, 60);
+    EXPECT_EQ(r.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(r.euler_characteristic, 2);  // a thick spherical shell
+}
+
+TEST(HexMeshCheck, QuadSharedByThreeHexesIsFlagged) {
+    HexMesh m = gridMesh(1);
+    // Stack a second hex on top, then a third one on the same top quad of the first.
+    const int base = static_cast<int>(m.vertices.size());
+    for (int i = 0; i < 4; ++i) m.vertices.push_back(m.vertices[4 + i] + Vec3d(0, 0, 1));
+    for (int i = 0; i < 4; ++i) m.vertices.push_back(m.vertices[4 + i] + Vec3d(0.2, 0.1, 2));
+    m.hexes.push_back({{4, 5, 6, 7, base, base + 1, base + 2, base + 3}});
+    m.hexes.push_back({{4, 5, 6, 7, base + 4, base + 5, base + 6, base + 7}});
+    const HexMeshCheckResult r = checkHexMesh(m);
+    EXPECT_EQ(r.quads_shared_by_more_than_two, 1);
+    EXPECT_FALSE(r.valid_all_hex);
+    EXPECT_GT(r.nonmanifold_boundary_edges, 0);
+}
+
+TEST(HexMeshCheck, OpenBoundaryAndInvalidCells) {
+    // Two hexes sharing only an edge: the boundary is non-manifold along that edge.
+    HexMesh m = gridMesh(2);
+    m.hexes = {m.hexes[0], m.hexes[7]};  // (0,0,0) and (1,1,1) share vertex only
+    HexMeshCheckResult r = checkHexMesh(m);
+    EXPECT_EQ(r.nonmanifold_boundary_edges, 0);  // vertex-pinched: every boundary edge still in two quads
+    HexMesh e = gridMesh(2);
+    e.hexes = {e.hexes[0], e.hexes[3]};  // (0,0,0) and (1,1,0) share the vertical edge
+    r = checkHexMesh(e);
+    EXPECT_EQ(r.nonmanifold_boundary_edges, 1);
+    EXPECT_FALSE(r.valid_all_hex);
+
+    HexMesh bad = gridMesh(1);
+    bad.hexes.push_back({{0, 1, 2, 3, 4, 5, 6, 99}});
+    bad.hexes.push_back({{0, 0, 2, 3, 4, 5, 6, 7}});
+    r = checkHexMesh(bad);
+    EXPECT_EQ(r.invalid_cells, 2);
+    EXPECT_FALSE(r.valid_all_hex);
+
+    HexMesh poly = gridMesh(1);
+    poly.polyhedra.push_back(Polyhedron{{{0, 1, 2}, {0, 2, 3}}});
+    r = checkHexMesh(poly);
+    EXPECT_EQ(r.non_hex_cells, 1);
+    EXPECT_FALSE(r.valid_all_hex);
+    EXPECT_FALSE(checkHexMesh(HexMesh{}).valid_all_hex);
+}
