@@ -27,7 +27,7 @@ long DartSet::find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const
     auto first = darts.begin() + static_cast<long>(tet_begin[t]);
     auto last = darts.begin() + static_cast<long>(tet_begin[t + 1]);
     auto it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
-    if (it != last && it->z == z && it->d == d) return it - darts.begin();
+    if (it != last && it->z == z && it->d[0] == d[0] && it->d[1] == d[1] && it->d[2] == d[2]) return it - darts.begin();
     return -1;
 }
 

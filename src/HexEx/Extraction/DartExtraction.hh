@@ -26,7 +26,8 @@ inline bool dartKeyLess(const Vec3i& za, const std::array<AxisDir, 3>& da, const
                         const std::array<AxisDir, 3>& db) {
     for (int k = 0; k < 3; ++k)
         if (za[k] != zb[k]) return za[k] < zb[k];
-    return da < db;
+    // Lexicographic on the three direction codes, packed (std::array's operator< goes through memcmp).
+    return ((da[0] << 16) | (da[1] << 8) | da[2]) < ((db[0] << 16) | (db[1] << 8) | db[2]);
 }
 
 /// All darts, grouped by tet (ascending) and sorted by key within a tet.

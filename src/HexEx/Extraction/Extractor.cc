@@ -172,12 +172,19 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Validation and assembly.
     t0 = std::chrono::steady_clock::now();
     progress("assemble", 0);
-    rep.validation = validateHexGMap(g);
+    HexOrbitLabels labels;
+    rep.validation = validateHexGMap(g, &labels);
     AssemblyStats st;
-    output = assembleHexMesh(g, geo, st);
+    output = assembleHexMesh(g, geo, labels, st);
     rep.output.vertices = static_cast<long>(output.vertices.size());
     rep.output.hexes = static_cast<long>(output.hexes.size());
     rep.output.non_hex_cells = st.non_hex_cells;
+    if (st.degenerate_faces > 0)
+        rep.warnings.push_back(std::to_string(st.degenerate_faces) +
+                               " faces of non-hex cells have fewer than 3 distinct vertices and were left out of their polyhedra");
+    if (st.collapsed_cells > 0)
+        rep.warnings.push_back(std::to_string(st.collapsed_cells) +
+                               " non-hex cells collapsed completely (no face with 3 distinct vertices); they are counted but not written");
     rep.output.quads = st.quads;
     rep.output.boundary_quads = st.boundary_quads;
     rep.valid_all_hex = rep.validation.valid() && st.non_hex_cells == 0 && rep.darts.remaining_anti == 0;

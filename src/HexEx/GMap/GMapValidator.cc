@@ -49,7 +49,7 @@ std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
     return label;
 }
 
-GMapValidation validateHexGMap(const GMap<3>& g) {
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels) {
     GMapValidation v;
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
@@ -90,6 +90,23 @@ GMapValidation validateHexGMap(const GMap<3>& g) {
     v.eq5_strip = countBad(l0121, size, 8);
     auto l012 = labelBy(g, 3, [&](int d, int k) { return a(d, k); }, size);
     v.eq6_hex = countBad(l012, size, 48);
+    if (labels) {
+        labels->cell = std::move(l012);
+        labels->cell_size = std::move(size);
+        labels->face = std::move(l01);
+        labels->corner = std::move(l12);
+        auto sizes = [](const std::vector<int>& l) {
+            std::vector<int> sz;
+            for (int x : l)
+                if (x >= 0) {
+                    if (static_cast<std::size_t>(x) >= sz.size()) sz.resize(static_cast<std::size_t>(x) + 1, 0);
+                    ++sz[static_cast<std::size_t>(x)];
+                }
+            return sz;
+        };
+        labels->face_size = sizes(labels->face);
+        labels->corner_size = sizes(labels->corner);
+    }
     return v;
 }
 

@@ -31,9 +31,20 @@ struct GMapValidation {
     std::string summary() const;
 };
 
+/// Orbit labels computed by the validator and reused by the mesh assembly.
+struct HexOrbitLabels {
+    std::vector<int> face;        ///< <alpha_0, alpha_1> orbit label per dart (-1 for erased darts)
+    std::vector<int> corner;      ///< <alpha_1, alpha_2> orbit label per dart
+    std::vector<int> cell;        ///< <alpha_0, alpha_1, alpha_2> orbit label per dart
+    std::vector<int> face_size;   ///< darts per face orbit
+    std::vector<int> corner_size; ///< darts per corner orbit
+    std::vector<int> cell_size;   ///< darts per cell orbit
+};
+
 /// Checks every alive dart of @p g against equations 1-6 of the paper and the involution
-/// property. Linear time.
-GMapValidation validateHexGMap(const GMap<3>& g);
+/// property. Linear time. If @p labels is given, the face, corner and cell orbits are
+/// returned there (labels numbered in order of their smallest dart).
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr);
 
 /// Labels the orbits of @p g for the links in @p mask (bit i = alpha_i): returns a label
 /// per dart (-1 for erased darts), labels numbered 0.. in order of their smallest dart.

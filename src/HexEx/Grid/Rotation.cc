@@ -12,17 +12,8 @@ struct RotationTables {
     std::array<std::uint8_t, 24> angle{};
 
     RotationTables() {
-        static const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
-        int n = 0;
-        for (const auto& p : perms) {
-            const int parity = (&p - perms) < 3 ? 1 : -1;
-            for (int s = 0; s < 8; ++s) {
-                const int sg[3] = {(s & 1) ? -1 : 1, (s & 2) ? -1 : 1, (s & 4) ? -1 : 1};
-                if (parity * sg[0] * sg[1] * sg[2] != 1) continue;
-                for (int j = 0; j < 3; ++j) images[n][j] = makeDir(p[j], sg[j]);
-                ++n;
-            }
-        }
+        for (int n = 0; n < 24; ++n)
+            for (int j = 0; j < 3; ++j) images[n][j] = detail::kRotationImages.img[n][j];
         for (int a = 0; a < 24; ++a)
             for (int b = 0; b < 24; ++b) {
                 std::array<AxisDir, 3> c;
@@ -66,25 +57,6 @@ AxisDir dirCross(AxisDir a, AxisDir b) {
     return makeDir(ic, cyclic * dirSign(a) * dirSign(b));
 }
 
-int Rotation::perm(int j) const { return dirAxis(tables().images[idx_][j]); }
-int Rotation::sign(int j) const { return dirSign(tables().images[idx_][j]); }
-
-Vec3d Rotation::apply(const Vec3d& u) const {
-    Vec3d r;
-    for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
-    return r;
-}
-
-Vec3i Rotation::apply(const Vec3i& u) const {
-    Vec3i r;
-    for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
-    return r;
-}
-
-AxisDir Rotation::apply(AxisDir d) const {
-    const AxisDir img = tables().images[idx_][dirAxis(d)];
-    return dirSign(d) > 0 ? img : dirNeg(img);
-}
 
 Rotation Rotation::operator*(const Rotation& o) const { return Rotation(tables().mul[idx_][o.idx_]); }
 Rotation Rotation::inverse() const { return Rotation(tables().inv[idx_]); }

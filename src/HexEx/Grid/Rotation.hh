@@ -28,6 +28,29 @@ int frameHandedness(AxisDir a, AxisDir b, AxisDir c);
 /// The direction a x b (a, b on different axes).
 AxisDir dirCross(AxisDir a, AxisDir b);
 
+namespace detail {
+/// Image direction of +x, +y, +z for each of the 24 rotations (index 0 = identity),
+/// generated at compile time from the definition: signed permutations with det +1.
+struct RotationImages {
+    AxisDir img[24][3] = {};
+    constexpr RotationImages() {
+        const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+        int n = 0;
+        for (int p = 0; p < 6; ++p) {
+            const int parity = p < 3 ? 1 : -1;
+            for (int s = 0; s < 8; ++s) {
+                const int sg[3] = {(s & 1) ? -1 : 1, (s & 2) ? -1 : 1, (s & 4) ? -1 : 1};
+                if (parity * sg[0] * sg[1] * sg[2] != 1) continue;
+                for (int j = 0; j < 3; ++j) img[n][j] = static_cast<AxisDir>(2 * perms[p][j] + (sg[j] < 0 ? 1 : 0));
+                ++n;
+            }
+        }
+    }
+};
+/// The table, a compile-time constant.
+inline constexpr RotationImages kRotationImages{};
+} // namespace detail
+
 /// One of the 24 orientation-preserving signed axis permutations, stored as an index 0..23.
 /// Index 0 is the identity. R maps axis j to axis perm(j) with sign sign(j).
 class Rotation {
@@ -43,17 +66,28 @@ public:
     /// True for the identity.
     bool is_identity() const { return idx_ == 0; }
     /// Image axis of axis @p j.
-    int perm(int j) const;
+    int perm(int j) const { return detail::kRotationImages.img[idx_][j] >> 1; }
     /// Sign of the image of axis @p j.
-    int sign(int j) const;
+    int sign(int j) const { return (detail::kRotationImages.img[idx_][j] & 1) ? -1 : 1; }
     /// Entry (row r, column c) of the matrix.
     int matrix(int r, int c) const { return perm(c) == r ? sign(c) : 0; }
     /// R u for a double vector (exact: only permutes and negates).
-    Vec3d apply(const Vec3d& u) const;
+    Vec3d apply(const Vec3d& u) const {
+        Vec3d r;
+        for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
+        return r;
+    }
     /// R u for an integer vector.
-    Vec3i apply(const Vec3i& u) const;
+    Vec3i apply(const Vec3i& u) const {
+        Vec3i r;
+        for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
+        return r;
+    }
     /// Image of a direction code.
-    AxisDir apply(AxisDir d) const;
+    AxisDir apply(AxisDir d) const {
+        const AxisDir img = detail::kRotationImages.img[idx_][d >> 1];
+        return (d & 1) ? static_cast<AxisDir>(img ^ 1) : img;
+    }
     /// Composition: (*this)*(o), i.e. apply @p o first.
     Rotation operator*(const Rotation& o) const;
     /// The inverse rotation.

@@ -154,10 +154,54 @@ HexMeshCheckResult checkHexMesh(const HexMesh& mesh) {
         i = j;
     }
 
+    // Fans around boundary vertices: the boundary corners at v link its two neighbours in
+    // the face; the links form one connected graph iff the faces around v form one fan.
+    struct Corner {
+        int v, a, b;
+    };
+    std::vector<Corner> corners;
+    for (const FaceRef& f : boundary)
+        for (int i = 0; i < f.size; ++i)
+            corners.push_back({pool[f.begin + i], pool[f.begin + (i + f.size - 1) % f.size],
+                               pool[f.begin + (i + 1) % f.size]});
+    std::sort(corners.begin(), corners.end(), [](const Corner& x, const Corner& y) { return x.v < y.v; });
+    std::vector<int> ids, parent;
+    for (std::size_t i = 0; i < corners.size();) {
+        std::size_t j = i;
+        ids.clear();
+        while (j < corners.size() && corners[j].v == corners[i].v) {
+            ids.push_back(corners[j].a);
+            ids.push_back(corners[j].b);
+            ++j;
+        }
+        std::sort(ids.begin(), ids.end());
+        ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+        parent.resize(ids.size());
+        for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
+        auto find = [&](int x) {
+            while (parent[x] != x) x = parent[x] = parent[parent[x]];
+            return x;
+        };
+        auto local = [&](int v) {
+            return static_cast<int>(std::lower_bound(ids.begin(), ids.end(), v) - ids.begin());
+        };
+        long components = static_cast<long>(ids.size());
+        for (std::size_t k = i; k < j; ++k) {
+            const int x = find(local(corners[k].a)), y = find(local(corners[k].b));
+            if (x != y) {
+                parent[x] = y;
+                --components;
+            }
+        }
+        if (components > 1) ++r.nonmanifold_boundary_vertices;
+        i = j;
+    }
+
     r.euler_characteristic = r.vertices - r.edges + r.faces - (r.cells - r.invalid_cells);
     r.quality = computeQuality(mesh);
     r.valid_all_hex = r.cells > 0 && r.non_hex_cells == 0 && r.invalid_cells == 0 &&
-                      r.quads_shared_by_more_than_two == 0 && r.nonmanifold_boundary_edges == 0;
+                      r.quads_shared_by_more_than_two == 0 && r.nonmanifold_boundary_edges == 0 &&
+                      r.nonmanifold_boundary_vertices == 0;
     return r;
 }
 

@@ -27,12 +27,14 @@ struct HexMeshCheckResult {
     long boundary_faces = 0;                 ///< faces of any size incident to exactly one cell
     long quads_shared_by_more_than_two = 0;  ///< faces (of any size) incident to three or more cells
     long nonmanifold_boundary_edges = 0;     ///< boundary-face edges not in exactly two boundary faces
+    long nonmanifold_boundary_vertices = 0;  ///< boundary vertices whose boundary faces form more than one fan (pinched)
     long invalid_cells = 0;                  ///< cells with an out-of-range or repeated vertex index, or a face with < 3 vertices (skipped)
     long euler_characteristic = 0;           ///< V - E + F - C (C without the invalid cells)
     QualityStats quality;                    ///< hex quality (scaled Jacobians)
     /// True if there is at least one cell, every cell is a valid hex, no face is shared by
     /// more than two cells and the boundary is a closed 2-manifold (every boundary edge in
-    /// exactly two boundary quads). Element quality (inverted hexes) does not affect it.
+    /// exactly two boundary quads, one fan of boundary quads around every boundary vertex).
+    /// Element quality (inverted hexes) does not affect it.
     bool valid_all_hex = false;
 };
 

@@ -92,9 +92,11 @@ void TetMesh::build_adjacency() {
                 for (int k = 0; k < 3; ++k)
                     for (int j = 0; j < 4; ++j)
                         if (cv[j] == fv[k]) mask |= 1 << j;
-                if (__builtin_popcount(mask) == 3) {
+                // Three of the four corners match: the fourth (missing bit) is the opposite corner.
+                static constexpr int kMissing[16] = {-1, -1, -1, -1, -1, -1, -1, 3, -1, -1, -1, 2, -1, 1, 0, -1};
+                if (kMissing[mask] >= 0) {
                     ++n_found;
-                    found = 4 * c2 + __builtin_ctz(~mask & 0xF);
+                    found = 4 * c2 + kMissing[mask];
                 }
             }
             if (n_found > 1) {

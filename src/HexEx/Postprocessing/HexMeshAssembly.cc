@@ -20,7 +20,7 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 }
 } // namespace
 
-HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats& stats) {
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats) {
     HexMesh out;
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -47,17 +47,14 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats
         }
     }
 
-    int nf = 0, nc = 0, nq = 0, ncorner = 0;
-    const std::vector<int> flabel = labelOrbits(g, 0b0011, &nf);
-    const std::vector<int> clabel = labelOrbits(g, 0b0111, &nc);
+    int nq = 0;
+    const std::vector<int>& flabel = labels.face;
+    const std::vector<int>& clabel = labels.cell;
+    const std::vector<int>& klabel = labels.corner;
+    const std::vector<int>& fsize = labels.face_size;
+    const std::vector<int>& ksize = labels.corner_size;
+    const int nc = static_cast<int>(labels.cell_size.size());
     const std::vector<int> qlabel = labelOrbits(g, 0b1011, &nq);
-    const std::vector<int> klabel = labelOrbits(g, 0b0110, &ncorner);
-    std::vector<int> fsize(static_cast<std::size_t>(nf), 0), ksize(static_cast<std::size_t>(ncorner), 0);
-    for (std::size_t d = 0; d < flabel.size(); ++d)
-        if (flabel[d] >= 0) {
-            ++fsize[static_cast<std::size_t>(flabel[d])];
-            ++ksize[static_cast<std::size_t>(klabel[d])];
-        }
     stats.quads = nq;
     {
         std::vector<char> bq(static_cast<std::size_t>(nq), 0);
@@ -111,12 +108,22 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats
             }
             loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
             if (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+            std::vector<int> distinct = loop;
+            std::sort(distinct.begin(), distinct.end());
+            if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() < 3 || distinct.size() != loop.size()) {
+                ++stats.degenerate_faces;
+                continue;
+            }
             if (geo.handedness[static_cast<std::size_t>(f0)] < 0) std::reverse(loop.begin(), loop.end());
             poly.faces.push_back(loop);
         }
+        if (poly.faces.empty()) {
+            ++stats.collapsed_cells;
+            continue;
+        }
         out.polyhedra.push_back(std::move(poly));
     }
-    stats.non_hex_cells = static_cast<long>(out.polyhedra.size());
+    stats.non_hex_cells = static_cast<long>(out.polyhedra.size()) + stats.collapsed_cells;
     return out;
 }
 

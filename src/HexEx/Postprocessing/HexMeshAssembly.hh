@@ -5,6 +5,7 @@
 /// joined are merged), cells the <alpha_0, alpha_1, alpha_2> orbits.
 
 #include "../GMap/GMap.hh"
+#include "../GMap/GMapValidator.hh"
 #include "../Mesh/HexMesh.hh"
 
 #include <vector>
@@ -16,6 +17,8 @@ struct AssemblyStats {
     long quads = 0;           ///< <alpha_0, alpha_1, alpha_3> orbits
     long boundary_quads = 0;  ///< of those, on the boundary (alpha_3 free)
     long non_hex_cells = 0;   ///< cells written as polyhedra
+    long degenerate_faces = 0;  ///< faces of non-hex cells with fewer than 3 distinct vertices (left out)
+    long collapsed_cells = 0;   ///< non-hex cells without any proper face (reported, not written)
 };
 
 /// Per-dart input of the assembly.
@@ -27,7 +30,7 @@ struct DartGeometry {
 
 /// Assembles vertices (position: mean of the class's boundary darts if it has any, else of
 /// all its darts), hexes in VTK order (from a right-handed dart of each cell) and polyhedra
-/// for every other cell.
-HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, AssemblyStats& stats);
+/// for every other cell. @p labels are the face, corner and cell orbits from validateHexGMap().
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats);
 
 } // namespace HexEx

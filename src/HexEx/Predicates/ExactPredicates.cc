@@ -3,6 +3,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 
+#include <cmath>
+
 namespace HexEx {
 
 namespace {
@@ -39,12 +41,30 @@ PointClassification classifyTriangle(const Vec3d& a, const Vec3d& b, const Vec3d
 }
 } // namespace
 
+// Both predicates first evaluate the determinant in doubles and accept its sign when it
+// exceeds a forward error bound (Shewchuk 1997: (7+56e)e and (3+16e)e times the permanent,
+// e = 2^-53; we use slightly larger constants). Only uncertain cases, mostly exact zeros
+// of points on faces, go to CGAL's exact filtered predicate.
 int orient3d(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
+    const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
+    const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
+    const double wx = d[0] - a[0], wy = d[1] - a[1], wz = d[2] - a[2];
+    const double m1 = vy * wz, m2 = vz * wy, m3 = vz * wx, m4 = vx * wz, m5 = vx * wy, m6 = vy * wx;
+    const double det = ux * (m1 - m2) + uy * (m3 - m4) + uz * (m5 - m6);
+    const double perm = std::fabs(ux) * (std::fabs(m1) + std::fabs(m2)) + std::fabs(uy) * (std::fabs(m3) + std::fabs(m4)) +
+                        std::fabs(uz) * (std::fabs(m5) + std::fabs(m6));
+    const double bound = 1e-15 * perm;
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
     return static_cast<int>(CGAL::orientation(P3(a), P3(b), P3(c), P3(d)));
 }
 
 int orient2dAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c, int axis) {
     const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const double t1 = (b[i] - a[i]) * (c[j] - a[j]), t2 = (b[j] - a[j]) * (c[i] - a[i]);
+    const double det = t1 - t2, bound = 5e-16 * (std::fabs(t1) + std::fabs(t2));
+    if (det > bound) return 1;
+    if (-det > bound) return -1;
     return static_cast<int>(
         CGAL::orientation(K::Point_2(a[i], a[j]), K::Point_2(b[i], b[j]), K::Point_2(c[i], c[j])));
 }

@@ -32,13 +32,18 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
     FaceFit f;
     const Vec3d e1 = u[1] - u[0], e2 = u[2] - u[0];
     const Vec3d f1 = w[1] - w[0], f2 = w[2] - w[0];
-    double res[24];
-    double best = std::numeric_limits<double>::max();
+    // |R e - f|^2 = |e|^2 + |f|^2 - 2 f.(R e): minimizing the residual over the 24 rotations
+    // maximizes sum_j sign_j M[perm_j][j] with M = f1 e1^T + f2 e2^T.
+    double M[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) M[r][c] = f1[r] * e1[c] + f2[r] * e2[c];
+    double score[24];
+    double best = -std::numeric_limits<double>::max();
     for (int r = 0; r < 24; ++r) {
         const Rotation R(r);
-        res[r] = (R.apply(e1) - f1).sqrnorm() + (R.apply(e2) - f2).sqrnorm();
-        if (res[r] < best) {
-            best = res[r];
+        score[r] = R.sign(0) * M[R.perm(0)][0] + R.sign(1) * M[R.perm(1)][1] + R.sign(2) * M[R.perm(2)][2];
+        if (score[r] > best) {
+            best = score[r];
             f.best = r;
         }
     }
@@ -48,9 +53,9 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
     if (!f.ambiguous) {
         f.candidates = 1u << f.best;
     } else {
-        const double tol = 1e-6 * (l1 + l2) + 1e-12;
+        const double tol = 0.5e-6 * (l1 + l2) + 1e-12;
         for (int r = 0; r < 24; ++r)
-            if (res[r] <= best + tol) f.candidates |= 1u << r;
+            if (score[r] >= best - tol) f.candidates |= 1u << r;
     }
     return f;
 }
@@ -177,13 +182,16 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
         if (mesh.is_boundary(e)) continue;
         auto ring = mesh.edge_cells(e);
         const int m = static_cast<int>(ring.second - ring.first);
-        GridTransform H;
+        Rotation H;
+        for (int j = 0; j < m; ++j) {
+            const HalfFaceHandle hf = halffaceTowards(mesh, CellHandle(ring.first[j]), CellHandle(ring.first[(j + 1) % m]));
+            if (hf.is_valid()) H = tr.halfface[hf.uidx()].R * H;
+        }
+        if (H.is_identity()) continue;
         double angle = 0;
         const auto ev = mesh.edge_vertices(e);
         for (int j = 0; j < m; ++j) {
-            const CellHandle c(ring.first[j]), n(ring.first[(j + 1) % m]);
-            const HalfFaceHandle hf = halffaceTowards(mesh, c, n);
-            if (hf.is_valid()) H = tr.halfface[hf.uidx()] * H;
+            const CellHandle c(ring.first[j]);
             // Parametric dihedral angle of c at the edge, signed by the tet's orientation.
             const auto& cv = mesh.cell_vertices(c);
             const auto& p = params[c.uidx()];
@@ -204,10 +212,9 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
             const double ang = std::atan2((u % v).norm(), u | v);
             angle += vol > 0 ? ang : vol < 0 ? -ang : 0.0;
         }
-        if (H.R.is_identity()) continue;
         SingularEdge se;
         se.edge = e;
-        se.holonomy = H.R;
+        se.holonomy = H;
         se.valence = static_cast<int>(std::lround(angle / (M_PI / 2)));
         s.edges.push_back(se);
         ++count[ev[0].uidx()];
