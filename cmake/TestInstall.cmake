@@ -1,8 +1,8 @@
-# Installs a built HexEx into a scratch prefix, then configures, builds and runs the
-# standalone example Examples/minimal against it with find_package(HexEx).
+# Installs a built HexEx into a scratch prefix, then configures, builds and runs a
+# standalone example (Examples/minimal, Examples/traits) against it with find_package(HexEx).
 #
 #   cmake -DHEXEX_BINARY_DIR=<build> -DEXAMPLE_SOURCE_DIR=<Examples/minimal>
-#         -DWORK_DIR=<scratch dir> [-DGENERATOR=Ninja] [-DBUILD_TYPE=Release]
+#         -DWORK_DIR=<scratch dir> [-DEXAMPLE_PROGRAM=app] [-DGENERATOR=Ninja] [-DBUILD_TYPE=Release]
 #         [-DCXX_COMPILER=...] [-DEXTRA_CXX_FLAGS=...] [-DEXTRA_LINKER_FLAGS=...]
 #         -P cmake/TestInstall.cmake
 #
@@ -16,6 +16,9 @@ foreach(var HEXEX_BINARY_DIR EXAMPLE_SOURCE_DIR WORK_DIR)
 endforeach()
 if(NOT BUILD_TYPE)
   set(BUILD_TYPE Release)
+endif()
+if(NOT EXAMPLE_PROGRAM)
+  set(EXAMPLE_PROGRAM app)
 endif()
 
 set(prefix "${WORK_DIR}/prefix")
@@ -51,7 +54,7 @@ run_step(configure "${CMAKE_COMMAND}" ${configure_args})
 run_step(build "${CMAKE_COMMAND}" --build "${example_build}" --config "${BUILD_TYPE}")
 
 # Single- and multi-config generators put the program in different places.
-find_program(example_exe NAMES app PATHS "${example_build}" "${example_build}/${BUILD_TYPE}"
+find_program(example_exe NAMES ${EXAMPLE_PROGRAM} PATHS "${example_build}" "${example_build}/${BUILD_TYPE}"
   NO_DEFAULT_PATH)
 if(NOT example_exe)
   message(FATAL_ERROR "[run] the example program was not built")

@@ -1,7 +1,9 @@
 /// @file minimal.cc
 /// Smallest program against an installed HexEx: builds a unit cube out of six tets,
-/// builds the adjacency and checks the entity counts. Exits 0 only if they are right.
+/// builds the adjacency and checks the entity counts, then extracts the hex mesh of the
+/// map "parameter = 2 * position" (a 2x2x2 grid of hexes). Exits 0 only if all is right.
 
+#include <HexEx/HexEx.hh>
 #include <HexEx/Mesh/TetMesh.hh>
 
 #include <array>
@@ -54,6 +56,30 @@ int main() {
     const bool ok = mesh.n_vertices() == 8 && mesh.n_edges() == 19 && mesh.n_faces() == 18 &&
                     mesh.n_cells() == 6 && mesh.n_boundary_faces() == 12 && flipped == 0 &&
                     mesh.check_manifold().empty();
-    std::cout << (ok ? "OK" : "FAILED: unexpected counts") << "\n";
-    return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+    if (!ok) {
+        std::cout << "FAILED: unexpected tet mesh counts\n";
+        return EXIT_FAILURE;
+    }
+
+    // Extraction: every tet corner gets the parameter 2 * position (one chart for all tets).
+    HexEx::ParametrizedTetMesh input;
+    input.mesh = makeCube();
+    input.mesh.build_adjacency();
+    input.params.resize(input.mesh.n_cells());
+    for (std::size_t c = 0; c < input.mesh.n_cells(); ++c)
+        for (int i = 0; i < 4; ++i)
+            input.params[c][static_cast<std::size_t>(i)] =
+                2.0 * input.mesh.position(input.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), i));
+
+    HexEx::HexMesh hexes;
+    const HexEx::ExtractionReport report = HexEx::extractHexMesh(input, hexes);
+    std::cout << "hex vertices:   " << hexes.vertices.size() << "\n"
+              << "hexes:          " << hexes.hexes.size() << "\n"
+              << "non-hex cells:  " << hexes.polyhedra.size() << "\n"
+              << "valid all-hex:  " << (report.valid_all_hex ? "yes" : "no") << "\n";
+
+    const bool extracted = hexes.hexes.size() == 8 && hexes.vertices.size() == 27 && hexes.polyhedra.empty() &&
+                           report.output.hexes == 8 && report.output.vertices == 27 && report.valid_all_hex;
+    std::cout << (extracted ? "OK" : "FAILED: unexpected hex mesh") << "\n";
+    return extracted ? EXIT_SUCCESS : EXIT_FAILURE;
 }
