@@ -91,6 +91,7 @@ TEST(HexMeshCheck, ExtractedCubeIsValid) {
     EXPECT_EQ(r.edges, 144);
     EXPECT_EQ(r.quads_shared_by_more_than_two, 0);
     EXPECT_EQ(r.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(r.nonmanifold_boundary_vertices, 0);
     EXPECT_EQ(r.euler_characteristic, 1);
     EXPECT_EQ(r.quality.inverted_hexes, 0);
     EXPECT_NEAR(r.quality.min_scaled_jacobian, 1.0, 1e-12);
@@ -137,6 +138,8 @@ TEST(HexMeshCheck, OpenBoundaryAndInvalidCells) {
     m.hexes = {m.hexes[0], m.hexes[7]};  // (0,0,0) and (1,1,1) share vertex only
     HexMeshCheckResult r = checkHexMesh(m);
     EXPECT_EQ(r.nonmanifold_boundary_edges, 0);  // vertex-pinched: every boundary edge still in two quads
+    EXPECT_EQ(r.nonmanifold_boundary_vertices, 1);
+    EXPECT_FALSE(r.valid_all_hex);
     HexMesh e = gridMesh(2);
     e.hexes = {e.hexes[0], e.hexes[3]};  // (0,0,0) and (1,1,0) share the vertical edge
     r = checkHexMesh(e);

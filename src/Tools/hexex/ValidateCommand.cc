@@ -26,6 +26,9 @@ std::string numText(double x) {
     return std::string(buf, res.ptr);
 }
 
+/// Width of the labels of the text output.
+constexpr std::size_t label_width = 32;
+
 const char* kValidateUsage =
     "usage: hexex validate MESH [--json]\n"
     "  MESH  hex mesh file: .vtu, .vtk, .ovm or .mesh\n"
@@ -79,6 +82,7 @@ int runValidate(const Args& args) {
                   << "  \"boundary_faces\": " << r.boundary_faces << ",\n"
                   << "  \"quads_shared_by_more_than_two\": " << r.quads_shared_by_more_than_two << ",\n"
                   << "  \"nonmanifold_boundary_edges\": " << r.nonmanifold_boundary_edges << ",\n"
+                  << "  \"nonmanifold_boundary_vertices\": " << r.nonmanifold_boundary_vertices << ",\n"
                   << "  \"invalid_cells\": " << r.invalid_cells << ",\n"
                   << "  \"euler_characteristic\": " << r.euler_characteristic << ",\n"
                   << "  \"min_scaled_jacobian\": " << numText(r.quality.min_scaled_jacobian) << ",\n"
@@ -87,24 +91,28 @@ int runValidate(const Args& args) {
                   << "  \"valid_all_hex\": " << (r.valid_all_hex ? "true" : "false") << "\n"
                   << "}\n";
     } else {
-        std::cout << "file:                          " << input << "\n"
-                  << "cells:                         " << r.cells << "\n"
-                  << "hexes:                         " << r.hexes << "\n"
-                  << "non-hex cells:                 " << r.non_hex_cells << "\n"
-                  << "vertices:                      " << r.vertices << "\n"
-                  << "edges:                         " << r.edges << "\n"
-                  << "faces:                         " << r.faces << "\n"
-                  << "quads:                         " << r.quads << "\n"
-                  << "boundary quads:                " << r.boundary_quads << "\n"
-                  << "boundary faces:                " << r.boundary_faces << "\n"
-                  << "faces shared by > 2 cells:     " << r.quads_shared_by_more_than_two << "\n"
-                  << "non-manifold boundary edges:   " << r.nonmanifold_boundary_edges << "\n"
-                  << "invalid cells:                 " << r.invalid_cells << "\n"
-                  << "Euler characteristic:          " << r.euler_characteristic << "\n"
-                  << "min scaled Jacobian:           " << numText(r.quality.min_scaled_jacobian) << "\n"
-                  << "mean scaled Jacobian:          " << numText(r.quality.mean_scaled_jacobian) << "\n"
-                  << "inverted hexes:                " << r.quality.inverted_hexes << "\n"
-                  << "valid all-hex:                 " << (r.valid_all_hex ? "yes" : "no") << "\n";
+        auto row = [](const char* label, const std::string& value) {
+            std::cout << label << std::string(label_width - std::string(label).size(), ' ') << value << "\n";
+        };
+        row("file:", input);
+        row("cells:", std::to_string(r.cells));
+        row("hexes:", std::to_string(r.hexes));
+        row("non-hex cells:", std::to_string(r.non_hex_cells));
+        row("vertices:", std::to_string(r.vertices));
+        row("edges:", std::to_string(r.edges));
+        row("faces:", std::to_string(r.faces));
+        row("quads:", std::to_string(r.quads));
+        row("boundary quads:", std::to_string(r.boundary_quads));
+        row("boundary faces:", std::to_string(r.boundary_faces));
+        row("faces shared by > 2 cells:", std::to_string(r.quads_shared_by_more_than_two));
+        row("non-manifold boundary edges:", std::to_string(r.nonmanifold_boundary_edges));
+        row("non-manifold boundary vertices:", std::to_string(r.nonmanifold_boundary_vertices));
+        row("invalid cells:", std::to_string(r.invalid_cells));
+        row("Euler characteristic:", std::to_string(r.euler_characteristic));
+        row("min scaled Jacobian:", numText(r.quality.min_scaled_jacobian));
+        row("mean scaled Jacobian:", numText(r.quality.mean_scaled_jacobian));
+        row("inverted hexes:", std::to_string(r.quality.inverted_hexes));
+        row("valid all-hex:", std::string(r.valid_all_hex ? "yes" : "no"));
     }
     return r.valid_all_hex ? 0 : 3;
 }
