@@ -28,29 +28,44 @@ struct ExtractionOptions {
 struct ExtractionReport {
     /// Input statistics.
     struct Input {
-        long vertices = 0, tets = 0, boundary_faces = 0;  ///< mesh size
-        long flipped_tets = 0, degenerate_tets = 0;       ///< parameter-space defects after sanitization
-        long singular_edges = 0, singular_vertices = 0;   ///< singularities found from the transitions
-        double parametric_volume = 0;                     ///< sum of signed parametric tet volumes
-        long ambiguous_transitions = 0;                   ///< faces whose rotation was resolved from neighbours
-        long unresolved_transitions = 0;                  ///< of those, not resolvable by edge consistency
-        long snapped_coordinates = 0;                     ///< coordinates snapped to integers
+        long vertices = 0;                ///< tet mesh vertices
+        long tets = 0;                    ///< tets
+        long boundary_faces = 0;          ///< boundary triangles
+        long flipped_tets = 0;            ///< tets with negative parametric volume after sanitization
+        long degenerate_tets = 0;         ///< tets with zero parametric volume after sanitization
+        long singular_edges = 0;          ///< interior edges whose holonomy is not the identity
+        long singular_vertices = 0;       ///< vertices on a number of singular edges other than 0 or 2
+        double parametric_volume = 0;     ///< sum of signed parametric tet volumes
+        long ambiguous_transitions = 0;   ///< faces whose rotation was resolved from neighbours
+        long unresolved_transitions = 0;  ///< of those, not resolvable by edge consistency
+        long snapped_coordinates = 0;     ///< parameter coordinates snapped to integers
     } input;  ///< input statistics
     /// Output statistics.
     struct Output {
-        long vertices = 0, hexes = 0, non_hex_cells = 0;       ///< mesh size
-        long quads = 0, boundary_quads = 0;                    ///< faces
-        long unconnected_darts = 0;                            ///< darts with an alpha_0..alpha_2 link missing
-        long repaired_face_connections = 0;                    ///< partially connected quads completed
+        long vertices = 0;                   ///< hex mesh vertices
+        long hexes = 0;                      ///< hexahedra
+        long non_hex_cells = 0;              ///< cells that are not hexahedra (written as polyhedra)
+        long quads = 0;                      ///< quads (interior and boundary)
+        long boundary_quads = 0;             ///< boundary quads
+        long unconnected_darts = 0;          ///< missing alpha_0..alpha_2 links
+        long repaired_face_connections = 0;  ///< partially connected quads completed
     } output;  ///< output statistics
     /// Dart statistics.
     struct Darts {
-        long extracted = 0, anti = 0, annihilated_pairs = 0, remaining_anti = 0;  ///< counts
-        long asymmetric_links = 0;  ///< traced links whose partner traced elsewhere (dropped)
+        long extracted = 0;          ///< darts extracted (regular and anti)
+        long anti = 0;               ///< anti darts (from flipped tets)
+        long annihilated_pairs = 0;  ///< regular/anti pairs removed
+        long remaining_anti = 0;     ///< anti darts left after annihilation
+        long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
     } darts;  ///< dart statistics
-    /// Timings in seconds per stage.
+    /// Wall-clock seconds per stage.
     struct Timings {
-        double preprocess = 0, vertices = 0, darts = 0, connect = 0, postprocess = 0, assemble = 0;  ///< stages
+        double preprocess = 0;   ///< transitions, sanitization, classification
+        double vertices = 0;     ///< positions of the hex vertices
+        double darts = 0;        ///< dart extraction
+        double connect = 0;      ///< tracing of the alpha links
+        double postprocess = 0;  ///< annihilation, face repair, map construction
+        double assemble = 0;     ///< validation and hex mesh assembly
     } timings_s;  ///< timings
     GMapValidation validation;           ///< validator result on the final map
     bool valid_all_hex = false;          ///< every cell a hex and the map valid

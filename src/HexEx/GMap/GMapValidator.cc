@@ -1,5 +1,8 @@
 #include "GMapValidator.hh"
 
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
 #include <sstream>
 
 namespace HexEx {
@@ -54,26 +57,40 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels) {
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
-    for (std::size_t s = 0; s < n; ++s) {
-        const int d = static_cast<int>(s);
-        if (!g.is_alive(DartHandle(d))) continue;
-        ++v.darts;
-        bool bad = false;
-        for (int i = 0; i < 4; ++i) {
-            const int e = a(d, i);
-            if (!g.is_alive(DartHandle(e)) || a(e, i) != d) bad = true;
+    // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
+    const int chunks = static_cast<int>(std::min<std::size_t>(8, std::max<std::size_t>(1, n / 65536)));
+    std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        GMapValidation& w = part[static_cast<std::size_t>(k)];
+        for (std::size_t s = b; s < e; ++s) {
+            const int d = static_cast<int>(s);
+            if (!g.is_alive(DartHandle(d))) continue;
+            ++w.darts;
+            bool bad = false;
+            for (int i = 0; i < 4; ++i) {
+                const int x = a(d, i);
+                if (!g.is_alive(DartHandle(x)) || a(x, i) != d) bad = true;
+            }
+            if (bad) {
+                ++w.not_involution;
+                continue;
+            }
+            if (a(d, 0) == d || a(d, 1) == d || a(d, 2) == d) ++w.open_links;
+            if (a(a(a(a(d, 0), 2), 0), 2) != d) ++w.eq1_edge_connection;
+            if (a(d, 3) == d) {
+                ++w.boundary_darts;
+            } else if (a(a(a(a(d, 0), 3), 0), 3) != d || a(a(a(a(d, 1), 3), 1), 3) != d) {
+                ++w.eq2_face_connection;
+            }
         }
-        if (bad) {
-            ++v.not_involution;
-            continue;
-        }
-        if (a(d, 0) == d || a(d, 1) == d || a(d, 2) == d) ++v.open_links;
-        if (a(a(a(a(d, 0), 2), 0), 2) != d) ++v.eq1_edge_connection;
-        if (a(d, 3) == d) {
-            ++v.boundary_darts;
-        } else if (a(a(a(a(d, 0), 3), 0), 3) != d || a(a(a(a(d, 1), 3), 1), 3) != d) {
-            ++v.eq2_face_connection;
-        }
+    });
+    for (const auto& w : part) {
+        v.darts += w.darts;
+        v.not_involution += w.not_involution;
+        v.open_links += w.open_links;
+        v.eq1_edge_connection += w.eq1_edge_connection;
+        v.boundary_darts += w.boundary_darts;
+        v.eq2_face_connection += w.eq2_face_connection;
     }
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
         long bad = 0;

@@ -32,7 +32,8 @@ namespace detail {
 /// Image direction of +x, +y, +z for each of the 24 rotations (index 0 = identity),
 /// generated at compile time from the definition: signed permutations with det +1.
 struct RotationImages {
-    AxisDir img[24][3] = {};
+    AxisDir img[24][3] = {};  ///< img[r][j]: image direction of axis j under rotation r
+    /// Builds the table.
     constexpr RotationImages() {
         const int perms[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
         int n = 0;

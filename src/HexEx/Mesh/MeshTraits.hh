@@ -16,6 +16,7 @@
 #include <array>
 #include <climits>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -142,6 +143,43 @@ template <class M>
 struct HasHexMeshOutputTraits<M, std::void_t<decltype(HexMeshOutputTraits<M>::clear(std::declval<M&>()))>>
     : std::true_type {};
 
+/// True if TetMeshTraits<M> provides every function of the input concept with usable
+/// return types (detection fallback).
+template <class M, class = void>
+struct CompleteTetMeshTraits : std::false_type {};
+/// True if TetMeshTraits<M> provides every function of the input concept with usable return types.
+template <class M>
+struct CompleteTetMeshTraits<
+    M, std::void_t<decltype(std::size_t(TetMeshTraits<M>::n_vertices(std::declval<const M&>()))),
+                   decltype(Vec3d(TetMeshTraits<M>::position(std::declval<const M&>(), std::size_t()))),
+                   decltype(std::size_t(TetMeshTraits<M>::n_tets(std::declval<const M&>()))),
+                   decltype(std::array<std::size_t, 4>(
+                       TetMeshTraits<M>::tet_vertices(std::declval<const M&>(), std::size_t()))),
+                   decltype(Vec3d(TetMeshTraits<M>::corner_param(std::declval<const M&>(), std::size_t(), 0)))>>
+    : std::true_type {};
+
+/// True if HexMeshOutputTraits<M> provides every function of the output concept
+/// (detection fallback).
+template <class M, class = void>
+struct CompleteHexMeshOutputTraits : std::false_type {};
+/// True if HexMeshOutputTraits<M> provides every function of the output concept.
+template <class M>
+struct CompleteHexMeshOutputTraits<
+    M, std::void_t<decltype(HexMeshOutputTraits<M>::clear(std::declval<M&>())),
+                   decltype(std::size_t(HexMeshOutputTraits<M>::add_vertex(std::declval<M&>(), std::declval<const Vec3d&>()))),
+                   decltype(HexMeshOutputTraits<M>::add_hex(std::declval<M&>(),
+                                                            std::declval<const std::array<std::size_t, 8>&>())),
+                   decltype(HexMeshOutputTraits<M>::add_polyhedron(
+                       std::declval<M&>(), std::declval<const std::vector<std::vector<std::size_t>>&>()))>>
+    : std::true_type {};
+
+/// A vertex index as text; values that wrapped around from a negative signed index
+/// (above PTRDIFF_MAX) are printed as that negative number.
+inline std::string indexToString(std::size_t v) {
+    if (v > static_cast<std::size_t>(PTRDIFF_MAX)) return std::to_string(static_cast<long long>(v));
+    return std::to_string(v);
+}
+
 } // namespace detail
 
 /// True if @p M has input traits (a TetMeshTraits specialization).
@@ -160,6 +198,9 @@ inline constexpr bool hasHexMeshOutputTraits = detail::HasHexMeshOutputTraits<M>
 template <class M>
 ParametrizedTetMesh toParametrizedTetMesh(const M& in) {
     static_assert(hasTetMeshTraits<M>, "HexEx::TetMeshTraits<M> is not specialized for this mesh type");
+    static_assert(detail::CompleteTetMeshTraits<M>::value,
+                  "HexEx::TetMeshTraits<M> lacks a function of the concept (n_vertices, position, n_tets, "
+                  "tet_vertices, corner_param) or one has an unusable signature; see MeshTraits.hh");
     using T = TetMeshTraits<M>;
     const std::size_t nv = T::n_vertices(in);
     const std::size_t nt = T::n_tets(in);
@@ -177,11 +218,11 @@ ParametrizedTetMesh toParametrizedTetMesh(const M& in) {
         for (int i = 0; i < 4; ++i) {
             const std::size_t v = tv[static_cast<std::size_t>(i)];
             if (v >= nv)
-                throw InputError("tet " + std::to_string(t) + ": vertex index " + std::to_string(v) +
+                throw InputError("tet " + std::to_string(t) + ": vertex index " + detail::indexToString(v) +
                                  " out of range (the mesh has " + std::to_string(nv) + " vertices)");
             for (int j = 0; j < i; ++j)
                 if (tv[static_cast<std::size_t>(j)] == v)
-                    throw InputError("tet " + std::to_string(t) + ": vertex " + std::to_string(v) +
+                    throw InputError("tet " + std::to_string(t) + ": vertex " + detail::indexToString(v) +
                                      " appears twice");
             h[static_cast<std::size_t>(i)] = VertexHandle(static_cast<int>(v));
             pm.params[t][static_cast<std::size_t>(i)] = Vec3d(T::corner_param(in, t, i));
@@ -197,6 +238,9 @@ ParametrizedTetMesh toParametrizedTetMesh(const M& in) {
 template <class M>
 void fromHexMesh(const HexMesh& hm, M& out) {
     static_assert(hasHexMeshOutputTraits<M>, "HexEx::HexMeshOutputTraits<M> is not specialized for this mesh type");
+    static_assert(detail::CompleteHexMeshOutputTraits<M>::value,
+                  "HexEx::HexMeshOutputTraits<M> lacks a function of the concept (clear, add_vertex, add_hex, "
+                  "add_polyhedron) or one has an unusable signature; see MeshTraits.hh");
     using T = HexMeshOutputTraits<M>;
     T::clear(out);
     std::vector<std::size_t> id(hm.vertices.size());

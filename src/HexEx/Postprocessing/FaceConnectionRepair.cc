@@ -12,6 +12,9 @@ long completePartialFaceConnections(GMap<3>& g) {
     for (std::size_t s = 0; s < n; ++s) {
         const DartHandle d0(static_cast<int>(s));
         if (done[s] || !g.is_alive(d0)) continue;
+        // Quick skip: a consistent face has the same alpha_3 freedom along alpha_0 and alpha_1.
+        const bool f = g.is_free(d0, 3);
+        if (f == g.is_free(g.alpha(d0, 0), 3) && f == g.is_free(g.alpha(d0, 1), 3)) continue;
         const std::vector<DartHandle> face = g.orbit(d0, 0b0011);
         for (auto x : face) done[x.uidx()] = 1;
         // Partial: some darts linked by alpha_3, some free.
