@@ -112,8 +112,9 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     GMap<3> g;
     g.add_darts(static_cast<std::size_t>(n_alive));
     DartGeometry geo;
-    geo.position.resize(static_cast<std::size_t>(n_alive));
-    geo.on_boundary.assign(static_cast<std::size_t>(n_alive), 0);
+    geo.mesh = &mesh;
+    geo.placement.position.resize(static_cast<std::size_t>(n_alive));
+    geo.placement.boundary_hf.assign(static_cast<std::size_t>(n_alive), {-1, -1, -1});
     geo.handedness.resize(static_cast<std::size_t>(n_alive));
     for (std::size_t d = 0; d < nd; ++d) {
         if (!alive[d]) continue;
@@ -156,14 +157,14 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                 sum += lam[j];
             }
             Vec3d pos(0, 0, 0);
-            bool boundary = false;
+            const auto k = static_cast<std::size_t>(newIndex[d]);
+            int nb = 0;
             for (int j = 0; j < 4; ++j) {
                 pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
-                if (oz[j] == 0 && mesh.is_boundary(TetMesh::halfface(CellHandle(D.tet), j))) boundary = true;
+                const HalfFaceHandle hf = TetMesh::halfface(CellHandle(D.tet), j);
+                if (oz[j] == 0 && mesh.is_boundary(hf) && nb < 3) geo.placement.boundary_hf[k][nb++] = hf.idx();
             }
-            const auto k = static_cast<std::size_t>(newIndex[d]);
-            geo.position[k] = pos;
-            geo.on_boundary[k] = boundary;
+            geo.placement.position[k] = pos;
             geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
         }
     });

@@ -27,25 +27,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
 
     int nv = 0;
     const std::vector<int> vlabel = labelOrbits(g, 0b1110, &nv);
-    {
-        std::vector<Vec3d> sumAll(static_cast<std::size_t>(nv), Vec3d(0, 0, 0)), sumB(static_cast<std::size_t>(nv), Vec3d(0, 0, 0));
-        std::vector<int> nAll(static_cast<std::size_t>(nv), 0), nB(static_cast<std::size_t>(nv), 0);
-        for (std::size_t d = 0; d < vlabel.size(); ++d) {
-            const int l = vlabel[d];
-            if (l < 0) continue;
-            sumAll[static_cast<std::size_t>(l)] += geo.position[d];
-            ++nAll[static_cast<std::size_t>(l)];
-            if (geo.on_boundary[d]) {
-                sumB[static_cast<std::size_t>(l)] += geo.position[d];
-                ++nB[static_cast<std::size_t>(l)];
-            }
-        }
-        out.vertices.resize(static_cast<std::size_t>(nv));
-        for (int l = 0; l < nv; ++l) {
-            const auto k = static_cast<std::size_t>(l);
-            out.vertices[k] = nB[k] > 0 ? sumB[k] / nB[k] : sumAll[k] / nAll[k];
-        }
-    }
+    out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement);
 
     int nq = 0;
     const std::vector<int>& flabel = labels.face;

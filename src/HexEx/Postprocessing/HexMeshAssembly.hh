@@ -7,6 +7,7 @@
 #include "../GMap/GMap.hh"
 #include "../GMap/GMapValidator.hh"
 #include "../Mesh/HexMesh.hh"
+#include "VertexMerging.hh"
 
 #include <vector>
 
@@ -23,13 +24,13 @@ struct AssemblyStats {
 
 /// Per-dart input of the assembly.
 struct DartGeometry {
-    std::vector<Vec3d> position;       ///< 3D position of the dart's grid point in its tet
-    std::vector<char> on_boundary;     ///< the grid point lies on a boundary face of its tet
-    std::vector<signed char> handedness; ///< +1 if the dart's frame (d1, d2, d3) is right-handed
+    const TetMesh* mesh = nullptr;         ///< the input tet mesh (for boundary planes)
+    DartPlacement placement;               ///< positions and boundary faces per dart
+    std::vector<signed char> handedness;   ///< +1 if the dart's frame (d1, d2, d3) is right-handed
 };
 
-/// Assembles vertices (position: mean of the class's boundary darts if it has any, else of
-/// all its darts), hexes in VTK order (from a right-handed dart of each cell) and polyhedra
+/// Assembles vertices (one per <alpha_1, alpha_2, alpha_3> orbit, placed by
+/// mergedVertexPositions()), hexes in VTK order (from a right-handed dart of each cell) and polyhedra
 /// for every other cell. @p labels are the face, corner and cell orbits from validateHexGMap().
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats);
 

@@ -1,0 +1,112 @@
+#include "VertexMerging.hh"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+
+namespace HexEx {
+
+namespace {
+
+/// Distinct positions (the darts of one h-vertex agree up to rounding in their tets).
+std::vector<Vec3d> distinctPositions(std::vector<Vec3d> p, double tol) {
+    std::sort(p.begin(), p.end(), [](const Vec3d& a, const Vec3d& b) {
+        return a[0] != b[0] ? a[0] < b[0] : a[1] != b[1] ? a[1] < b[1] : a[2] < b[2];
+    });
+    std::vector<Vec3d> out;
+    for (const auto& x : p) {
+        bool dup = false;
+        for (auto it = out.rbegin(); it != out.rend() && x[0] - (*it)[0] <= tol; ++it)
+            if ((x - *it).norm() <= tol) { dup = true; break; }
+        if (!dup) out.push_back(x);
+    }
+    return out;
+}
+
+Vec3d centroid(const std::vector<Vec3d>& p) {
+    Vec3d c(0, 0, 0);
+    for (const auto& x : p) c += x;
+    return c / static_cast<double>(p.size());
+}
+
+} // namespace
+
+std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
+                                         const DartPlacement& darts) {
+    // Group darts by class (counting sort keeps darts ascending within a class).
+    const auto nc = static_cast<std::size_t>(n_classes);
+    std::vector<int> off(nc + 1, 0);
+    for (int l : label)
+        if (l >= 0) ++off[static_cast<std::size_t>(l) + 1];
+    for (std::size_t l = 0; l < nc; ++l) off[l + 1] += off[l];
+    std::vector<int> idx(static_cast<std::size_t>(off.back()));
+    {
+        std::vector<int> fill(off.begin(), off.end() - 1);
+        for (std::size_t d = 0; d < label.size(); ++d)
+            if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
+    }
+    // Tolerance for "same h-vertex": relative to the mesh size.
+    Vec3d lo = mesh.n_vertices() ? mesh.position(VertexHandle(0)) : Vec3d(0, 0, 0), hi = lo;
+    for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+        lo.minimize(mesh.position(VertexHandle(static_cast<int>(v))));
+        hi.maximize(mesh.position(VertexHandle(static_cast<int>(v))));
+    }
+    const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
+
+    std::vector<Vec3d> out(nc);
+    std::vector<Vec3d> all, bnd;
+    std::vector<int> planes;
+    for (std::size_t l = 0; l < nc; ++l) {
+        all.clear();
+        bnd.clear();
+        planes.clear();
+        for (int k = off[l]; k < off[l + 1]; ++k) {
+            const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
+            all.push_back(darts.position[d]);
+            if (darts.boundary_hf[d][0] >= 0) {
+                bnd.push_back(darts.position[d]);
+                for (int hf : darts.boundary_hf[d])
+                    if (hf >= 0) planes.push_back(hf);
+            }
+        }
+        if (all.empty()) continue;
+        if (bnd.empty()) {
+            const auto dist = distinctPositions(all, tol);
+            out[l] = dist.size() == 1 ? dist[0] : centroid(dist);
+            continue;
+        }
+        const auto dist = distinctPositions(bnd, tol);
+        if (dist.size() == 1) {
+            out[l] = dist[0];
+            continue;
+        }
+        std::sort(planes.begin(), planes.end());
+        planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
+        // Least squares: sum_i (n_i . x - n_i . a_i)^2, regularized towards the centroid so
+        // that directions no plane constrains stay put.
+        const Vec3d c = centroid(dist);
+        Eigen::Matrix3d M = Eigen::Matrix3d::Identity() * 1e-8;
+        Eigen::Vector3d rhs(c[0] * 1e-8, c[1] * 1e-8, c[2] * 1e-8);
+        for (int hf : planes) {
+            const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
+            const Vec3d a = mesh.position(v[0]);
+            Vec3d n = (mesh.position(v[1]) - a) % (mesh.position(v[2]) - a);
+            const double len = n.norm();
+            if (!(len > 0)) continue;
+            n /= len;
+            const Eigen::Vector3d ne(n[0], n[1], n[2]);
+            M += ne * ne.transpose();
+            rhs += ne * (n | a);
+        }
+        const Eigen::Vector3d x = M.ldlt().solve(rhs);
+        const Vec3d target(x[0], x[1], x[2]);
+        std::size_t best = 0;
+        for (std::size_t k = 1; k < dist.size(); ++k)
+            if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
+        out[l] = dist[best];
+    }
+    return out;
+}
+
+} // namespace HexEx
