@@ -1,0 +1,130 @@
+// Generalized map kernel (2D and 3D), the validator, and dart annihilation step by step.
+
+#include <HexEx/GMap/GMap.hh>
+#include <HexEx/GMap/GMapValidator.hh>
+#include <HexEx/Postprocessing/DartAnnihilation.hh>
+
+#include <gtest/gtest.h>
+
+using namespace HexEx;
+
+namespace {
+/// A quad as a 2D generalized map: 8 darts, alpha_0 pairs along edges, alpha_1 at corners.
+GMap<2> makeQuad() {
+    GMap<2> g;
+    g.add_darts(8);
+    for (int k = 0; k < 4; ++k) {
+        g.sew(DartHandle(2 * k), DartHandle(2 * k + 1), 0);            // edge k
+        g.sew(DartHandle(2 * k + 1), DartHandle((2 * k + 2) % 8), 1);  // corner after edge k
+    }
+    return g;
+}
+
+/// A single hexahedron as a 3D generalized map (48 darts), built from its 6 quads.
+GMap<3> makeHex() {
+    // Faces of a cube by corner ids, each a loop; darts: 8 per face (2 per edge).
+    static const int F[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    GMap<3> g;
+    g.add_darts(48);
+    // Dart (f, k, s): face f, edge k of the loop, s = 0 at the edge's first corner, 1 at its second.
+    auto id = [](int f, int k, int s) { return DartHandle(8 * f + 2 * k + s); };
+    for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 4; ++k) {
+            g.sew(id(f, k, 0), id(f, k, 1), 0);
+            g.sew(id(f, k, 1), id(f, (k + 1) % 4, 0), 1);
+        }
+    // alpha_2: the two darts of neighbouring faces at the same corner of the same edge.
+    for (int f = 0; f < 6; ++f)
+        for (int k = 0; k < 4; ++k)
+            for (int s = 0; s < 2; ++s) {
+                const int v = F[f][(k + s) % 4], w = F[f][(k + 1 - s) % 4];
+                for (int f2 = 0; f2 < 6; ++f2) {
+                    if (f2 == f) continue;
+                    for (int k2 = 0; k2 < 4; ++k2)
+                        for (int s2 = 0; s2 < 2; ++s2)
+                            if (F[f2][(k2 + s2) % 4] == v && F[f2][(k2 + 1 - s2) % 4] == w)
+                                g.link(id(f, k, s), id(f2, k2, s2), 2);
+                }
+            }
+    return g;
+}
+} // namespace
+
+TEST(GMap, QuadOrbits2D) {
+    GMap<2> g = makeQuad();
+    EXPECT_EQ(g.orbit(DartHandle(0), 0b011).size(), 8u);  // the face
+    EXPECT_EQ(g.orbit(DartHandle(0), 0b001).size(), 2u);  // an edge
+    EXPECT_EQ(g.orbit(DartHandle(1), 0b010).size(), 2u);  // a corner
+    EXPECT_TRUE(g.is_free(DartHandle(0), 2));               // boundary edge of a lone quad
+    g.unsew(DartHandle(0), 0);
+    EXPECT_TRUE(g.is_free(DartHandle(1), 0));
+    EXPECT_EQ(g.orbit(DartHandle(0), 0b011).size(), 8u);  // still connected through alpha_1
+    g.erase(DartHandle(3));
+    EXPECT_FALSE(g.is_alive(DartHandle(3)));
+    EXPECT_TRUE(g.is_free(DartHandle(2), 0));  // 3 was 2's alpha_0 partner ...
+    EXPECT_TRUE(g.is_free(DartHandle(4), 1));  // ... and 4's alpha_1 partner
+}
+
+TEST(GMap, ValidatorAcceptsAHexAndCatchesBrokenLinks) {
+    GMap<3> g = makeHex();
+    auto v = validateHexGMap(g);
+    EXPECT_TRUE(v.valid()) << v.summary();
+    EXPECT_EQ(v.darts, 48);
+    EXPECT_EQ(v.boundary_darts, 48);
+    // Break one alpha_2 link in one direction only: not an involution any more.
+    GMap<3> h = g;
+    h.link(DartHandle(0), DartHandle(0), 2);
+    v = validateHexGMap(h);
+    EXPECT_FALSE(v.valid());
+    EXPECT_GT(v.not_involution, 0);
+    // Unsew a whole alpha_2 pair: the cell opens.
+    h = g;
+    h.unsew(DartHandle(0), 2);
+    v = validateHexGMap(h);
+    EXPECT_FALSE(v.valid());
+    EXPECT_EQ(v.open_links, 2);  // dart 0 and its former partner
+}
+
+TEST(GMap, LabelOrbitsCountsCells) {
+    GMap<3> g = makeHex();
+    int n = 0;
+    labelOrbits(g, 0b0111, &n);
+    EXPECT_EQ(n, 1);
+    labelOrbits(g, 0b0011, &n);
+    EXPECT_EQ(n, 6);
+    labelOrbits(g, 0b1110, &n);
+    EXPECT_EQ(n, 8);
+}
+
+// Paper 4.4.1, step by step on a hand-built configuration (in the spirit of figures 5 and 6):
+// regular darts 0, 2, 3, 5 and anti darts 1, 4.
+TEST(DartAnnihilation, ReconnectionRuleStepByStep) {
+    std::vector<std::array<long, 4>> a(6);
+    for (long d = 0; d < 6; ++d) a[d] = {d, d, d, d};
+    auto sew = [&](long x, long y, int i) { a[x][i] = y; a[y][i] = x; };
+    sew(0, 1, 0);  // regular 0 and anti 1 share an edge
+    sew(0, 2, 1);  // 0's other edge goes to 2
+    sew(1, 3, 1);  // 1's other edge goes to 3
+    sew(3, 4, 0);  // 3 meets anti dart 4 along alpha_0
+    sew(4, 5, 1);  // and 4 continues to 5
+    const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
+    std::vector<char> alive(6, 1);
+    const auto st = annihilateDarts(a, sign, alive);
+    // First pair (0, 1): alpha_1(2) = alpha_1(1) = 3 and back. Then 3 (regular) and 4 (anti)
+    // are linked by alpha_0: they cancel and 2 is reconnected to alpha_1(4) = 5.
+    EXPECT_EQ(st.pairs, 2);
+    EXPECT_EQ(st.remaining_anti, 0);
+    EXPECT_EQ(alive, (std::vector<char>{0, 0, 1, 0, 0, 1}));
+    EXPECT_EQ(a[2][1], 5);
+    EXPECT_EQ(a[5][1], 2);
+    EXPECT_EQ(a[2][0], 2);  // free links stay free
+}
+
+TEST(DartAnnihilation, AntiDartWithoutRegularNeighbourRemains) {
+    std::vector<std::array<long, 4>> a = {{1, 0, 0, 0}, {0, 1, 1, 1}};
+    const std::vector<signed char> sign = {-1, -1};
+    std::vector<char> alive(2, 1);
+    const auto st = annihilateDarts(a, sign, alive);
+    EXPECT_EQ(st.pairs, 0);
+    EXPECT_EQ(st.remaining_anti, 2);
+}

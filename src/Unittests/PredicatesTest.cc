@@ -1,0 +1,130 @@
+// Exact predicates, point classification (including flat tets) and the symbolic perturbation.
+
+#include <HexEx/Extraction/TetSoS.hh>
+#include <HexEx/Predicates/ExactPredicates.hh>
+
+#include <gtest/gtest.h>
+
+#include <array>
+
+using namespace HexEx;
+
+TEST(Predicates, Orient3dSignsAndExactZero) {
+    const Vec3d a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
+    EXPECT_EQ(orient3d(a, b, c, Vec3d(0, 0, 1)), 1);
+    EXPECT_EQ(orient3d(a, b, c, Vec3d(0, 0, -1)), -1);
+    EXPECT_EQ(orient3d(a, b, c, Vec3d(0.3, 0.7, 0)), 0);
+    // Nearly coplanar: a double evaluation of the determinant would round to the wrong sign or zero.
+    const Vec3d p(0.1, 0.1, 0.1), q(0.2, 0.2, 0.2), r(0.3, 0.3, 0.3 + 1e-17 * 0 + 5.551115123125783e-17);
+    EXPECT_EQ(orient3d(a, p, q, r), 0);  // p, q, a collinear: any r gives zero
+    const Vec3d s(1e-30, 1, 1), t(1, 1e-30, 1), u(1, 1, 1e-30);
+    EXPECT_EQ(orient3d(a, s, t, u), -orient3d(a, t, s, u));
+}
+
+TEST(Predicates, Orient2dAxisProjections) {
+    const Vec3d a(0, 0, 0), b(0, 1, 0), c(0, 0, 1);
+    EXPECT_EQ(orient2dAxis(a, b, c, 0), 1);   // (y, z) plane: counter-clockwise
+    EXPECT_EQ(orient2dAxis(a, c, b, 0), -1);
+    EXPECT_EQ(orient2dAxis(a, b, c, 1), 0);   // projected onto (z, x): collinear
+    // Values whose products cancel catastrophically in doubles.
+    const double e = 1.0 / (1 << 30);
+    const Vec3d p(0, 1 + e, 1 + 2 * e), q(0, 1 + 2 * e, 1 + 4 * e), r(0, 1 + 3 * e, 1 + 6 * e);
+    EXPECT_EQ(orient2dAxis(p, q, r, 0), 0);
+}
+
+namespace {
+const std::array<Vec3d, 4> kUnit = {Vec3d(0, 0, 0), Vec3d(2, 0, 0), Vec3d(0, 2, 0), Vec3d(0, 0, 2)};
+}
+
+TEST(Predicates, ClassifyPointInProperTet) {
+    const Vec3d* p = kUnit.data();
+    EXPECT_EQ(classifyPoint(p, Vec3d(0, 0, 0)).location, PointLocation::AtVertex);
+    EXPECT_EQ(classifyPoint(p, Vec3d(0, 0, 0)).corners, 1u);
+    EXPECT_EQ(classifyPoint(p, Vec3d(1, 0, 0)).location, PointLocation::OnEdge);
+    EXPECT_EQ(classifyPoint(p, Vec3d(1, 0, 0)).corners, 0b0011u);
+    EXPECT_EQ(classifyPoint(p, Vec3d(1, 1, 0)).location, PointLocation::OnEdge);  // edge 1-2
+    EXPECT_EQ(classifyPoint(p, Vec3d(1, 1, 0)).corners, 0b0110u);
+    const auto f = classifyPoint(p, Vec3d(0.5, 0.5, 0));
+    EXPECT_EQ(f.location, PointLocation::OnFace);
+    EXPECT_EQ(f.corners, 0b0111u);
+    EXPECT_EQ(classifyPoint(p, Vec3d(0.5, 0.5, 0.5)).location, PointLocation::Inside);
+    EXPECT_EQ(classifyPoint(p, Vec3d(1, 1, 1)).location, PointLocation::Outside);
+    EXPECT_EQ(classifyPoint(p, Vec3d(-1, 0, 0)).location, PointLocation::Outside);
+    // Flipped tet: same classification.
+    const Vec3d flipped[4] = {kUnit[0], kUnit[2], kUnit[1], kUnit[3]};
+    EXPECT_EQ(classifyPoint(flipped, Vec3d(0.5, 0.5, 0.5)).location, PointLocation::Inside);
+    EXPECT_EQ(classifyPoint(flipped, Vec3d(1, 0, 0)).location, PointLocation::OnEdge);
+}
+
+TEST(Predicates, ClassifyPointInFlatTets) {
+    // Four coplanar corners (z = 0): a flat quad region.
+    const Vec3d flat[4] = {Vec3d(0, 0, 0), Vec3d(2, 0, 0), Vec3d(2, 2, 0), Vec3d(0, 2, 0)};
+    EXPECT_EQ(classifyPoint(flat, Vec3d(1, 0.5, 0)).location, PointLocation::OnFace);
+    EXPECT_EQ(classifyPoint(flat, Vec3d(1, 1, 0)).location, PointLocation::OnEdge);  // on the diagonal 0-2
+    EXPECT_EQ(classifyPoint(flat, Vec3d(1, 0, 0)).location, PointLocation::OnEdge);
+    EXPECT_EQ(classifyPoint(flat, Vec3d(2, 2, 0)).location, PointLocation::AtVertex);
+    EXPECT_EQ(classifyPoint(flat, Vec3d(1, 1, 1)).location, PointLocation::Outside);
+    EXPECT_EQ(classifyPoint(flat, Vec3d(3, 1, 0)).location, PointLocation::Outside);
+    // Three collinear corners plus one off the line (the sphere data has such tets).
+    const Vec3d sliver[4] = {Vec3d(6, 2.5, 0), Vec3d(3, 3, -3), Vec3d(6, 3.5, 0), Vec3d(6, 6, 0)};
+    EXPECT_EQ(classifyPoint(sliver, Vec3d(6, 3, 0)).location, PointLocation::OnEdge);
+    EXPECT_EQ(classifyPoint(sliver, Vec3d(6, 5, 0)).location, PointLocation::OnEdge);
+    EXPECT_EQ(classifyPoint(sliver, Vec3d(6, 7, 0)).location, PointLocation::Outside);
+    // Collapsed to a segment and to a point.
+    const Vec3d seg[4] = {Vec3d(0, 0, 0), Vec3d(1, 1, 1), Vec3d(2, 2, 2), Vec3d(3, 3, 3)};
+    EXPECT_EQ(classifyPoint(seg, Vec3d(1, 1, 1)).location, PointLocation::AtVertex);
+    EXPECT_EQ(classifyPoint(seg, Vec3d(2, 2, 2)).location, PointLocation::AtVertex);
+    EXPECT_EQ(classifyPoint(seg, Vec3d(1, 1, 0)).location, PointLocation::Outside);
+    const Vec3d pt[4] = {Vec3d(1, 1, 1), Vec3d(1, 1, 1), Vec3d(1, 1, 1), Vec3d(1, 1, 1)};
+    EXPECT_EQ(classifyPoint(pt, Vec3d(1, 1, 1)).location, PointLocation::AtVertex);
+    EXPECT_EQ(classifyPoint(pt, Vec3d(0, 1, 1)).location, PointLocation::Outside);
+}
+
+TEST(SymbolicPerturbation, DartsOfATetCornerFollowItsCone) {
+    // At the corner (0,0,0) of the axis-aligned unit tet, exactly the 6 frames whose three
+    // directions are all positive lie inside: z + e d1 + e^2 d2 + e^3 d3 with d_k >= 0.
+    const TetSoS T(kUnit);
+    ASSERT_EQ(T.vol, 1);
+    const auto oz = T.sides(Vec3d(0, 0, 0));
+    int inside = 0;
+    for (int a = 0; a < 6; ++a)
+        for (int b = 0; b < 6; ++b)
+            for (int c = 0; c < 6; ++c) {
+                if (a / 2 == b / 2 || b / 2 == c / 2 || a / 2 == c / 2) continue;
+                const bool in = T.contains(oz, AxisDir(a), AxisDir(b), AxisDir(c));
+                const bool allPositive = !(a & 1) && !(b & 1) && !(c & 1);
+                EXPECT_EQ(in, allPositive) << a << " " << b << " " << c;
+                inside += in;
+            }
+    EXPECT_EQ(inside, 6);
+}
+
+TEST(SymbolicPerturbation, EveryFrameHasExactlyOneOwnerAroundAnEdge) {
+    // The cube [0,2]^3 split into 6 Kuhn tets around its diagonal: at the grid point (1,1,1)
+    // on that diagonal every one of the 48 frames is owned by exactly one tet.
+    const Vec3d c[8] = {Vec3d(0, 0, 0), Vec3d(2, 0, 0), Vec3d(0, 2, 0), Vec3d(2, 2, 0),
+                        Vec3d(0, 0, 2), Vec3d(2, 0, 2), Vec3d(0, 2, 2), Vec3d(2, 2, 2)};
+    const int paths[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
+    std::vector<TetSoS> tets;
+    for (const auto& p : paths) {
+        std::array<Vec3d, 4> q = {c[p[0]], c[p[1]], c[p[2]], c[p[3]]};
+        if (orient3d(q[0], q[1], q[2], q[3]) < 0) std::swap(q[2], q[3]);
+        tets.emplace_back(q);
+    }
+    const Vec3d z(1, 1, 1);
+    for (int a = 0; a < 6; ++a)
+        for (int b = 0; b < 6; ++b)
+            for (int cc = 0; cc < 6; ++cc) {
+                if (a / 2 == b / 2 || b / 2 == cc / 2 || a / 2 == cc / 2) continue;
+                int owners = 0;
+                for (const auto& T : tets) owners += T.contains(T.sides(z), AxisDir(a), AxisDir(b), AxisDir(cc));
+                EXPECT_EQ(owners, 1) << a << " " << b << " " << cc;
+            }
+}
+
+TEST(SymbolicPerturbation, DegenerateTetOwnsNothing) {
+    const std::array<Vec3d, 4> flat = {Vec3d(0, 0, 0), Vec3d(2, 0, 0), Vec3d(2, 2, 0), Vec3d(0, 2, 0)};
+    const TetSoS T(flat);
+    EXPECT_EQ(T.vol, 0);
+    EXPECT_FALSE(T.contains(T.sides(Vec3d(1, 1, 0)), 0, 2, 4));
+}
