@@ -43,11 +43,12 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         for (const auto& p : params[c])
             for (int k = 0; k < 3; ++k)
                 if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
-    const Transitions tr = computeTransitions(mesh, params, opt.given_rotations);
+    const Transitions tr = computeTransitions(mesh, params, opt.given_rotations, threads);
     rep.input.ambiguous_transitions = tr.n_ambiguous;
     rep.input.unresolved_transitions = tr.n_unresolved;
     SanitizeOptions so;
     so.epsilon = opt.epsilon;
+    so.threads = threads;
     rep.input.snapped_coordinates = sanitizeParameters(mesh, params, tr, so).snapped_coordinates;
     const Singularities sing = findSingularities(mesh, params, tr);
     rep.input.singular_edges = static_cast<long>(sing.edges.size());

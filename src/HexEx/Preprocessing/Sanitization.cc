@@ -1,5 +1,6 @@
 #include "Sanitization.hh"
 
+#include "../Core/Parallel.hh"
 #include "../Predicates/ExactPredicates.hh"
 
 #include <algorithm>
@@ -10,16 +11,19 @@ namespace HexEx {
 SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, const Transitions& tr,
                                  const SanitizeOptions& opt) {
     SanitizeStats stats;
+    // Every vertex writes only its own corners, so vertices are processed in parallel chunks.
+    const int chunks = std::max(1, opt.threads);
+    std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(mesh.n_vertices(), chunks, [&](int chunk, std::size_t vbegin, std::size_t vend) {
     std::vector<int> star;                 // cells around the vertex, BFS order
     std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
-    std::vector<int> slot(mesh.n_cells(), -1);
-    for (std::size_t vi = 0; vi < mesh.n_vertices(); ++vi) {
+    auto visited = [&](int c) { return std::find(star.begin(), star.end(), c) != star.end(); };
+    for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
         star.assign(1, *cells.first);
         toChart.assign(1, GridTransform());
-        slot[star[0]] = 0;
         for (std::size_t q = 0; q < star.size(); ++q) {
             const CellHandle c(star[q]);
             for (int j = 0; j < 4; ++j) {
@@ -28,8 +32,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                 const HalfFaceHandle o = mesh.opposite_halfface(hf);
                 if (!o.is_valid()) continue;
                 const int n = TetMesh::cell(o).idx();
-                if (slot[n] >= 0) continue;
-                slot[n] = static_cast<int>(star.size());
+                if (visited(n)) continue;
                 star.push_back(n);
                 toChart.push_back(tr.halfface[hf.uidx()] * toChart[q]);
             }
@@ -60,12 +63,13 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
             const double r = std::nearbyint(u[k]);
             if (u[k] != r && std::fabs(u[k] - r) <= opt.epsilon) {
                 u[k] = r;
-                ++stats.snapped_coordinates;
+                ++snapped[static_cast<std::size_t>(chunk)];
             }
         }
         for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
-        for (int c : star) slot[c] = -1;
     }
+    });
+    for (int n : snapped) stats.snapped_coordinates += n;
     return stats;
 }
 

@@ -13,6 +13,8 @@ struct SanitizeOptions {
     /// Parameter coordinates within this distance of an integer are snapped to it
     /// (default 1e-6: well above double rounding noise, well below any real feature).
     double epsilon = 1e-6;
+    /// Worker threads (vertices are independent; the result does not depend on this).
+    int threads = 1;
 };
 
 /// What the sanitization changed.

@@ -1,5 +1,7 @@
 #include "Transitions.hh"
 
+#include "../Core/Parallel.hh"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -71,7 +73,8 @@ HalfFaceHandle halffaceTowards(const TetMesh& mesh, CellHandle c, CellHandle nex
     return HalfFaceHandle();
 }
 
-Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, const std::vector<int>* given) {
+Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, const std::vector<int>* given,
+                               int threads) {
     Transitions out;
     const std::size_t nhf = mesh.n_halffaces();
     out.halfface.assign(nhf, GridTransform());
@@ -95,29 +98,36 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
         decided[h] = decided[opp.uidx()] = 1;
     };
 
-    for (std::size_t h = 0; h < nhf; ++h) {
-        const HalfFaceHandle hf(static_cast<int>(h));
-        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
-        if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
-        if (given) {
-            setTransition(h, (*given)[h]);
-            continue;
+    // Each interior face is fitted by the chunk owning its smaller halfface; the writes go to
+    // that halfface and its opposite only, so chunks never touch the same entries.
+    const int chunks = std::max(1, threads);
+    std::vector<int> ambiguous(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(nhf, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
+        for (std::size_t h = hb; h < he; ++h) {
+            const HalfFaceHandle hf(static_cast<int>(h));
+            const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+            if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
+            if (given) {
+                setTransition(h, (*given)[h]);
+                continue;
+            }
+            const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
+            Vec3d u[3], w[3];
+            for (int k = 0; k < 3; ++k) {
+                const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
+                u[k] = params[c.uidx()][lc];
+                w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
+            }
+            fits[h] = fitFace(u, w);
+            if (fits[h].ambiguous) {
+                ++ambiguous[static_cast<std::size_t>(chunk)];
+                decided[h] = decided[opp.uidx()] = 0;
+            } else {
+                setTransition(h, fits[h].best);
+            }
         }
-        const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
-        Vec3d u[3], w[3];
-        for (int k = 0; k < 3; ++k) {
-            const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
-            u[k] = params[c.uidx()][lc];
-            w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
-        }
-        fits[h] = fitFace(u, w);
-        if (fits[h].ambiguous) {
-            ++out.n_ambiguous;
-            decided[h] = decided[opp.uidx()] = 0;
-        } else {
-            setTransition(h, fits[h].best);
-        }
-    }
+    });
+    for (int a : ambiguous) out.n_ambiguous += a;
     if (out.n_ambiguous == 0) return out;
 
     // Resolve ambiguous faces from edge consistency: the rotation that makes the holonomy

@@ -24,9 +24,10 @@ struct Transitions {
 /// Infers every interior halfface's transition from the corner parameters of the two
 /// cells: the rotation that best maps the shared face's edge vectors, then the rounded
 /// translation. If @p given_rotations is non-null it holds a rotation index (0..23) per
-/// halfface that is used instead of inferring one (the paper's assumption).
+/// halfface that is used instead of inferring one (the paper's assumption). @p threads
+/// parallelizes the per-face fits; the result does not depend on it.
 Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params,
-                               const std::vector<int>* given_rotations = nullptr);
+                               const std::vector<int>* given_rotations = nullptr, int threads = 1);
 
 /// A singular edge: the accumulated transition around it is not the identity.
 struct SingularEdge {
