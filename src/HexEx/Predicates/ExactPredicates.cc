@@ -45,6 +45,18 @@ PointClassification classifyTriangle(const Vec3d& a, const Vec3d& b, const Vec3d
 // exceeds a forward error bound (Shewchuk 1997: (7+56e)e and (3+16e)e times the permanent,
 // e = 2^-53; we use slightly larger constants). Only uncertain cases, mostly exact zeros
 // of points on faces, go to CGAL's exact filtered predicate.
+namespace {
+/// True if every coordinate, scaled by 64, is an integer of magnitude at most 2^15: then the
+/// determinants below are computed without any rounding (products stay below 2^53).
+inline bool smallDyadic(const Vec3d& p) {
+    for (int k = 0; k < 3; ++k) {
+        const double x = p[k] * 64.0;
+        if (!(std::fabs(x) <= 32768.0) || x != std::floor(x)) return false;
+    }
+    return true;
+}
+} // namespace
+
 int orient3d(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
     const double ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
     const double vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
@@ -56,6 +68,7 @@ int orient3d(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
     const double bound = 1e-15 * perm;
     if (det > bound) return 1;
     if (-det > bound) return -1;
+    if (smallDyadic(a) && smallDyadic(b) && smallDyadic(c) && smallDyadic(d)) return (det > 0) - (det < 0);
     return static_cast<int>(CGAL::orientation(P3(a), P3(b), P3(c), P3(d)));
 }
 
@@ -65,6 +78,7 @@ int orient2dAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c, int axis) {
     const double det = t1 - t2, bound = 5e-16 * (std::fabs(t1) + std::fabs(t2));
     if (det > bound) return 1;
     if (-det > bound) return -1;
+    if (smallDyadic(a) && smallDyadic(b) && smallDyadic(c)) return (det > 0) - (det < 0);
     return static_cast<int>(
         CGAL::orientation(K::Point_2(a[i], a[j]), K::Point_2(b[i], b[j]), K::Point_2(c[i], c[j])));
 }

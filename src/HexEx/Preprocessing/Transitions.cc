@@ -34,6 +34,11 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
     FaceFit f;
     const Vec3d e1 = u[1] - u[0], e2 = u[2] - u[0];
     const Vec3d f1 = w[1] - w[0], f2 = w[2] - w[0];
+    if (e1 == f1 && e2 == f2 && (e1 % e2).sqrnorm() > 0) {  // identical charts: the common case
+        f.best = 0;
+        f.candidates = 1u;
+        return f;
+    }
     // |R e - f|^2 = |e|^2 + |f|^2 - 2 f.(R e): minimizing the residual over the 24 rotations
     // maximizes sum_j sign_j M[perm_j][j] with M = f1 e1^T + f2 e2^T.
     double M[3][3];
