@@ -1,10 +1,18 @@
 /// @file BoundarySurface.cc
 /// Boundary faces of a HexMesh as an OpenMesh surface, written through OpenMesh's IO.
 
+// OpenMesh's PropertyT<VectorT>::push_back() default-constructs an uninitialized vector,
+// which GCC reports as -Wmaybe-uninitialized inside the standard library once inlined.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
+
 #include "BoundarySurface.hh"
 
 #include "../Core/Error.hh"
 #include "HexMeshCheck.hh"
+
+#include <OpenMesh/Core/System/omstream.hh>
 
 #include <algorithm>
 #include <cctype>
@@ -51,6 +59,20 @@ bool canAttach(const SurfaceMesh& surface, const std::vector<SurfaceMesh::Vertex
     }
     return true;
 }
+
+/// Mutes OpenMesh's informational log (the writers announce every file on it) while alive.
+class QuietOmLog {
+public:
+    QuietOmLog() : was_(::omlog().is_enabled()) { ::omlog().disable(); }
+    ~QuietOmLog() {
+        if (was_) ::omlog().enable();
+    }
+    QuietOmLog(const QuietOmLog&) = delete;
+    QuietOmLog& operator=(const QuietOmLog&) = delete;
+
+private:
+    bool was_;
+};
 
 } // namespace
 
@@ -142,13 +164,17 @@ void writeSurfaceMesh(const std::string& path, const SurfaceMesh& surface) {
         std::ofstream probe(path, std::ios::binary);
         if (!probe) throw InputError(path + ": cannot open for writing: " + std::strerror(errno));
     }
+    // OpenMesh's exporters hand points to the writers in single precision: 9 significant
+    // digits reproduce every float exactly.
+    const std::streamsize precision = 9;
+    QuietOmLog quiet;
     bool ok = false;
     if (extensionOf(path) == "stl") {
         SurfaceMesh tri = surface;
         tri.triangulate();
-        ok = OpenMesh::IO::write_mesh(tri, path, OpenMesh::IO::Options::Default, 17);
+        ok = OpenMesh::IO::write_mesh(tri, path, OpenMesh::IO::Options::Default, precision);
     } else {
-        ok = OpenMesh::IO::write_mesh(surface, path, OpenMesh::IO::Options::Default, 17);
+        ok = OpenMesh::IO::write_mesh(surface, path, OpenMesh::IO::Options::Default, precision);
     }
     if (!ok) throw InputError(path + ": writing the surface mesh failed");
 }

@@ -63,9 +63,10 @@ SurfaceMesh boundarySurface(const HexMesh& mesh, BoundarySurfaceReport* report =
 bool isSurfaceMeshPath(const std::string& path);
 
 /// Writes @p surface to @p path through `OpenMesh::IO::write_mesh`, format by extension:
-/// `.obj`, `.off`, `.ply` (ASCII, positions with 17 significant digits, so they read back
-/// bit-identically) or `.stl` (ASCII, single precision by the STL format; faces are
-/// triangulated first since STL stores triangles only).
+/// `.obj`, `.off`, `.ply` or `.stl`, all ASCII. OpenMesh's writers store positions in
+/// single precision (written with 9 significant digits, enough to identify each float). For `.stl` the faces of a copy are triangulated first, since STL stores
+/// triangles only. OpenMesh's informational log (`omlog`) is muted during the write, so
+/// nothing is printed on success.
 /// @throws InputError "<path>: <reason>" for an unknown extension or if the file cannot be
 ///         written.
 void writeSurfaceMesh(const std::string& path, const SurfaceMesh& surface);
