@@ -3,6 +3,8 @@
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/Core/Error.hh>
+#include <HexEx/Preprocessing/Transitions.hh>
 
 #include <gtest/gtest.h>
 
@@ -223,4 +225,29 @@ TEST(ExtractData, Sphere) {
     EXPECT_EQ(r.output.hexes, 216);
     EXPECT_EQ(r.output.vertices, 343);
     EXPECT_TRUE(r.valid_all_hex) << r.validation.summary();
+}
+
+TEST(ExtractGivenRotations, HalffacePropertyIsUsedAndChecked) {
+    auto pm = generateCylinder(3, 2, 2, 1, 1);
+    applyRandomChartTransforms(pm, 21);
+    pm.mesh.build_adjacency();
+    const Transitions tr = computeTransitions(pm.mesh, pm.params);
+    auto prop = pm.mesh.halfface_props().request<int>(kGivenRotationProperty, 0);
+    for (std::size_t h = 0; h < pm.mesh.n_halffaces(); ++h) prop[HalfFaceHandle(static_cast<int>(h))] = tr.halfface[h].R.index();
+    HexMesh hm;
+    auto r = extractHexMesh(pm, hm);
+    EXPECT_EQ(r.output.hexes, 24);
+    EXPECT_TRUE(r.valid_all_hex);
+    // An inconsistent pair of rotations is rejected with the halfface named.
+    for (std::size_t h = 0; h < pm.mesh.n_halffaces(); ++h) {
+        if (pm.mesh.is_boundary(HalfFaceHandle(static_cast<int>(h)))) continue;
+        prop[HalfFaceHandle(static_cast<int>(h))] = (prop[HalfFaceHandle(static_cast<int>(h))] + 1) % 24;
+        break;
+    }
+    try {
+        extractHexMesh(pm, hm);
+        FAIL() << "expected InputError";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("are not inverse to each other"), std::string::npos) << e.what();
+    }
 }

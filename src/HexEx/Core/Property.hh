@@ -92,6 +92,14 @@ public:
     }
     /// True if a property named @p name exists.
     bool exists(const std::string& name) const { return props_.count(name) > 0; }
+    /// The values of the property named @p name if it exists with type T, else nullptr.
+    template <class T>
+    const std::vector<T>* find(const std::string& name) const {
+        auto it = props_.find(name);
+        if (it == props_.end()) return nullptr;
+        auto typed = std::dynamic_pointer_cast<PropertyStorage<T, Tag>>(it->second);
+        return typed ? &typed->data() : nullptr;
+    }
     /// Removes the property named @p name (handles already taken keep their storage alive).
     void remove(const std::string& name) { props_.erase(name); }
     /// Resizes every property to @p n entities.

@@ -10,6 +10,10 @@
 
 namespace HexEx {
 
+/// Name of the optional `int` halfface property holding the given rotation (0..23) of
+/// each halfface's transition into its neighbour.
+inline constexpr const char* kGivenRotationProperty = "hexex:rotation";
+
 /// Options of extractHexMesh().
 struct ExtractionOptions {
     /// Worker threads (0 = all hardware threads). The output is identical for any value.
@@ -18,7 +22,9 @@ struct ExtractionOptions {
     double epsilon = 1e-6;
     /// Annihilate regular/anti dart pairs and so merge the vertices they duplicate (4.4).
     bool merge = true;
-    /// Optional rotation index (0..23) per halfface instead of inferring transitions.
+    /// Optional rotation index (0..23) per halfface instead of inferring transitions (the
+    /// paper's assumption that matchings are known). If null, an `int` halfface property
+    /// named kGivenRotationProperty on the tet mesh is used when present.
     const std::vector<int>* given_rotations = nullptr;
     /// Optional progress callback: (phase name, fraction done in [0, 1]).
     std::function<void(const std::string&, double)> progress;

@@ -43,7 +43,22 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         for (const auto& p : params[c])
             for (int k = 0; k < 3; ++k)
                 if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
-    const Transitions tr = computeTransitions(mesh, params, opt.given_rotations, threads);
+    const std::vector<int>* given = opt.given_rotations;
+    if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
+    if (given) {
+        if (given->size() != mesh.n_halffaces()) throw InputError("given rotations: one per halfface required");
+        for (std::size_t h = 0; h < given->size(); ++h) {
+            const int r = (*given)[h];
+            const HalfFaceHandle o = mesh.opposite_halfface(HalfFaceHandle(static_cast<int>(h)));
+            if (!o.is_valid()) continue;
+            if (r < 0 || r >= Rotation::kCount)
+                throw InputError("given rotations: halfface " + std::to_string(h) + " has rotation index " + std::to_string(r) + " (must be 0..23)");
+            if (Rotation((*given)[o.uidx()]) != Rotation(r).inverse())
+                throw InputError("given rotations: halfface " + std::to_string(h) + " and its opposite " + std::to_string(o.idx()) +
+                                 " are not inverse to each other");
+        }
+    }
+    const Transitions tr = computeTransitions(mesh, params, given, threads);
     rep.input.ambiguous_transitions = tr.n_ambiguous;
     rep.input.unresolved_transitions = tr.n_unresolved;
     SanitizeOptions so;

@@ -114,6 +114,8 @@ public:
     PropertyManager<CellTag>& cell_props() { return cprops_; }
     /// Halfface properties.
     PropertyManager<HalfFaceTag>& halfface_props() { return hfprops_; }
+    /// Halfface properties (read-only).
+    const PropertyManager<HalfFaceTag>& halfface_props() const { return hfprops_; }
     /// Per-cell-corner properties.
     PropertyManager<CellCornerTag>& corner_props() { return ccprops_; }
 
