@@ -330,6 +330,8 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& n
                 return "halfface " + std::to_string(k) + " of " + cdesc();
             });
             int& owner = halffaceCell[static_cast<std::size_t>(hf[k])];
+            if (owner == static_cast<int>(c))
+                in.fail(in.line(), cdesc() + " lists halfface " + std::to_string(hf[k]) + " twice");
             if (owner >= 0)
                 in.fail(in.line(), "halfface " + std::to_string(hf[k]) + " is used by polyhedron " +
                                        std::to_string(owner) + " and " + cdesc());

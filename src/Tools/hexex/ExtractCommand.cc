@@ -1,7 +1,7 @@
 /// @file ExtractCommand.cc
-/// `hexex extract IN -o OUT [options]`: extract the hex mesh of a .hexex tet mesh with its
-/// integer-grid map, write it (.vtu, .vtk, .ovm, .mesh) and optionally a JSON report,
-/// the singular edges and the tet mesh in parameter space.
+/// `hexex extract IN -o OUT [options]`: extract the hex mesh of a .hexex or .ovm tet mesh with
+/// its integer-grid map, write it (.vtu, .vtk, .ovm, .mesh) and optionally a JSON report,
+/// the singular edges, the tet mesh in parameter space and the boundary surface.
 
 #include "ArgParser.hh"
 #include "Commands.hh"
@@ -10,11 +10,14 @@
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
+#include <HexEx/IO/OvmTetReader.hh>
 #include <HexEx/IO/ReportJson.hh>
+#include <HexEx/Mesh/BoundarySurface.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Predicates/ExactPredicates.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
 
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -32,7 +35,7 @@ namespace HexExTool {
 namespace {
 
 const char* kExtractUsage =
-    "usage: hexex extract IN.hexex -o OUT [options]\n"
+    "usage: hexex extract IN.hexex|IN.ovm -o OUT [options]\n"
     "  -o, --output OUT        hex mesh to write; format by extension: .vtu .vtk .ovm .mesh\n"
     "  --report R.json         write the extraction report as JSON ('-' for stdout)\n"
     "  --threads N             worker threads (0 = all hardware threads, default); output is identical\n"
@@ -41,9 +44,10 @@ const char* kExtractUsage =
     "  --singularities S.vtk   write the singular edges of the input as legacy VTK lines\n"
     "  --param-mesh P.vtk      write the tet mesh in parameter space (4 points per tet, each in\n"
     "                          its own chart) as legacy VTK with cell data 'flipped', 'degenerate'\n"
-    "  --surface B.obj|.off|.ply|.stl  not yet supported\n"
+    "  --surface B.obj|.off|.ply|.stl  write the boundary surface of the hex mesh (OpenMesh IO)\n"
     "  -q, --quiet             print nothing but errors\n"
-    "IN may be '-' for standard input.\n"
+    "IN is read as OpenVolumeMesh ASCII if it ends in .ovm, as .hexex otherwise;\n"
+    "it may be '-' for standard input (.hexex).\n"
     "exit status: 0 all-hex mesh written, 3 written but not all-hex, 2 bad input or usage\n";
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
@@ -191,7 +195,7 @@ int runExtract(const Args& args) {
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
     };
-    std::string input, output, report_path, sing_path, param_path;
+    std::string input, output, report_path, sing_path, param_path, surface_path;
     HexEx::ExtractionOptions opt;
     bool quiet = false;
     try {
@@ -212,9 +216,9 @@ int runExtract(const Args& args) {
         opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
         opt.merge = !pa.has("--no-merge");
         quiet = pa.has("--quiet");
-        if (pa.has("--surface"))
-            throw UsageError("--surface (boundary surface output) is not yet supported; the .vtu/.vtk output "
-                             "contains the boundary quads");
+        surface_path = pa.get("--surface");
+        if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))
+            throw UsageError("--surface: unknown surface format '" + surface_path + "' (expected .obj, .off, .ply or .stl)");
         try {
             HexEx::hexMeshFormatFromPath(output);
         } catch (const HexEx::InputError& e) {
@@ -231,7 +235,12 @@ int runExtract(const Args& args) {
     HexEx::ReportExtras extras;
     auto t0 = std::chrono::steady_clock::now();
     try {
-        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &rr) : HexEx::readHexExFile(input, &rr);
+        std::string ext = input.size() >= 4 ? input.substr(input.size() - 4) : std::string();
+        for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+        const bool ovm = ext == ".ovm";
+        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &rr)
+             : ovm        ? HexEx::readOvmTetMesh(input, &rr)
+                          : HexEx::readHexExFile(input, &rr);
     } catch (const HexEx::InputError& e) {
         std::cerr << "hexex extract: error: " << e.what() << "\n";
         return 2;
@@ -288,6 +297,19 @@ int runExtract(const Args& args) {
         progress.finish();
         std::cerr << "hexex extract: error: " << e.what() << "\n";
         return 2;
+    }
+    if (!surface_path.empty()) {
+        try {
+            for (const auto& w : HexEx::writeBoundarySurface(surface_path, hm)) {
+                if (!quiet) std::cerr << "hexex extract: warning: " << w << "\n";
+                extras.warnings.push_back(w);
+            }
+        } catch (const std::exception& e) {
+            progress.finish();
+            std::cerr << "hexex extract: error: " << e.what() << "\n";
+            return 2;
+        }
+        if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";
     }
     extras.write_s = secondsSince(t0);
     progress.update("write", 1);
