@@ -236,9 +236,9 @@ TEST_F(CliEndToEndTest, UsageErrors) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("x.txt"), std::string::npos) << r.err;
 
-    r = run({"extract", path("cube.hexex"), "-o", path("x.vtu"), "--surface", path("b.obj")});
+    r = run({"extract", path("cube.hexex"), "-o", path("x.vtu"), "--surface", path("b.xyz")});
     EXPECT_EQ(r.status, 2);
-    EXPECT_NE(r.err.find("not yet supported"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("unknown surface format"), std::string::npos) << r.err;
 
     r = run({"extract"});
     EXPECT_EQ(r.status, 2);

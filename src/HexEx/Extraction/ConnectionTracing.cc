@@ -219,7 +219,7 @@ std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Tra
     const int chunks = std::max(1, threads);
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        TraceStats& st = part[static_cast<std::size_t>(k)];
+        TraceStats st;  // local: per-chunk counters next to each other would share cache lines
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 4; ++i) {
                 const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
@@ -227,6 +227,7 @@ std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Tra
                 if (p == kUnconnected) ++st.unconnected[i];
                 else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
             }
+        part[static_cast<std::size_t>(k)] = st;
     });
     for (const auto& p : part) {
         for (int i = 0; i < 4; ++i) stats.unconnected[i] += p.unconnected[i];
