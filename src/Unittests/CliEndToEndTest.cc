@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "ToolPath.hh"
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -20,15 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Path of the hexex binary of this build tree, or empty if not found.
-std::string hexexBinary() {
-    std::error_code ec;
-    const fs::path self = fs::read_symlink("/proc/self/exe", ec);
-    if (ec) return {};
-    const fs::path tool = self.parent_path().parent_path() / "Tools" / "hexex" / "hexex";
-    if (!fs::is_regular_file(tool, ec) || ::access(tool.c_str(), X_OK) != 0) return {};
-    return tool.string();
-}
+using HexExTest::hexexBinary;
 
 /// A shell word for @p s (single-quoted).
 std::string quote(const std::string& s) {

@@ -1,5 +1,5 @@
 // End-to-end tests of `hexex validate` through the built tool. The tool's path comes from
-// the environment variable HEXEX_TOOL (the tests are skipped without it); the validation
+// ToolPath.hh (next to the test binary, or $HEXEX_TOOL); the validation
 // logic itself is tested through checkHexMesh() in HexMeshQualityTest.cc.
 
 #include <HexEx/Generators/Generators.hh>
@@ -7,6 +7,8 @@
 #include <HexEx/IO/HexMeshWriters.hh>
 
 #include <gtest/gtest.h>
+
+#include "ToolPath.hh"
 
 #include <cstdio>
 #include <cstdlib>
@@ -26,8 +28,7 @@ struct RunResult {
 
 RunResult runTool(const std::string& args) {
     RunResult r;
-    const char* tool = std::getenv("HEXEX_TOOL");
-    const std::string cmd = std::string("'") + tool + "' " + args + " 2>&1";
+    const std::string cmd = "'" + HexExTest::hexexBinary() + "' " + args + " 2>&1";
     FILE* p = popen(cmd.c_str(), "r");
     if (!p) return r;
     char buf[512];
@@ -52,8 +53,8 @@ HexMesh cubeMesh() {
 }
 
 #define REQUIRE_TOOL()                                                                  \
-    if (!std::getenv("HEXEX_TOOL") || !std::filesystem::exists(std::getenv("HEXEX_TOOL"))) \
-    GTEST_SKIP() << "set HEXEX_TOOL to the hexex binary to run the CLI tests"
+    if (HexExTest::hexexBinary().empty()) \
+    GTEST_SKIP() << "hexex binary not found next to the test binary (set HEXEX_TOOL)"
 
 } // namespace
 
