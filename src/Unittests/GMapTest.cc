@@ -99,9 +99,9 @@ TEST(GMap, LabelOrbitsCountsCells) {
 // Paper 4.4.1, step by step on a hand-built configuration (in the spirit of figures 5 and 6):
 // regular darts 0, 2, 3, 5 and anti darts 1, 4.
 TEST(DartAnnihilation, ReconnectionRuleStepByStep) {
-    std::vector<std::array<long, 4>> a(6);
-    for (long d = 0; d < 6; ++d) a[d] = {d, d, d, d};
-    auto sew = [&](long x, long y, int i) { a[x][i] = y; a[y][i] = x; };
+    std::vector<std::array<int, 4>> a(6);
+    for (int d = 0; d < 6; ++d) a[d] = {d, d, d, d};
+    auto sew = [&](int x, int y, int i) { a[x][i] = y; a[y][i] = x; };
     sew(0, 1, 0);  // regular 0 and anti 1 share an edge
     sew(0, 2, 1);  // 0's other edge goes to 2
     sew(1, 3, 1);  // 1's other edge goes to 3
@@ -121,7 +121,7 @@ TEST(DartAnnihilation, ReconnectionRuleStepByStep) {
 }
 
 TEST(DartAnnihilation, AntiDartWithoutRegularNeighbourRemains) {
-    std::vector<std::array<long, 4>> a = {{1, 0, 0, 0}, {0, 1, 1, 1}};
+    std::vector<std::array<int, 4>> a = {{1, 0, 0, 0}, {0, 1, 1, 1}};
     const std::vector<signed char> sign = {-1, -1};
     std::vector<char> alive(2, 1);
     const auto st = annihilateDarts(a, sign, alive);

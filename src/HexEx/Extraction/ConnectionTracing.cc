@@ -1,6 +1,10 @@
 #include "ConnectionTracing.hh"
 
+#include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
+
+#include <limits>
+#include <string>
 #include "../Predicates/ExactPredicates.hh"
 
 #include <utility>
@@ -211,11 +215,13 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
 
 } // namespace
 
-std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Transitions& tr,
+std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats) {
     const std::size_t n = darts.darts.size();
-    std::vector<std::array<long, 4>> alpha(n);
+    if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
+        throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
+    std::vector<DartLinks> alpha(n);
     const int chunks = std::max(1, threads);
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
@@ -223,7 +229,7 @@ std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Tra
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 4; ++i) {
                 const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
-                alpha[d][i] = p;
+                alpha[d][i] = static_cast<int>(p);
                 if (p == kUnconnected) ++st.unconnected[i];
                 else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
             }

@@ -14,7 +14,10 @@
 namespace HexEx {
 
 /// Partner value meaning "not connected" (trace failed or ran into the boundary for i < 3).
-constexpr long kUnconnected = -1;
+constexpr int kUnconnected = -1;
+
+/// The four alpha links of a dart (dart indices; see traceConnections()).
+using DartLinks = std::array<int, 4>;
 
 /// Counters of the tracing.
 struct TraceStats {
@@ -24,8 +27,9 @@ struct TraceStats {
 };
 
 /// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
-/// kUnconnected marks a failure. Deterministic for any thread count.
-std::vector<std::array<long, 4>> traceConnections(const TetMesh& mesh, const Transitions& tr,
+/// kUnconnected marks a failure. Deterministic for any thread count. Throws InputError if
+/// there are more darts than an int can index.
+std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats);
 

@@ -82,7 +82,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Darts (the h-vertices are the grid points the darts sit on).
     t0 = std::chrono::steady_clock::now();
     progress("darts", 0);
-    const DartSet ds = extractDarts(tets, threads);
+    DartSet ds = extractDarts(tets, threads);
     const std::size_t nd = ds.darts.size();
     rep.darts.extracted = static_cast<long>(nd);
     std::vector<signed char> sign(nd);
@@ -96,13 +96,13 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     t0 = std::chrono::steady_clock::now();
     progress("connect", 0);
     TraceStats ts;
-    std::vector<std::array<long, 4>> alpha = traceConnections(mesh, tr, tets, ds, threads, ts);
+    std::vector<DartLinks> alpha = traceConnections(mesh, tr, tets, ds, threads, ts);
     // Keep only mutual links.
     for (std::size_t d = 0; d < nd; ++d)
         for (int i = 0; i < 4; ++i) {
-            const long p = alpha[d][i];
-            if (p < 0 || p == static_cast<long>(d)) continue;
-            if (alpha[static_cast<std::size_t>(p)][i] != static_cast<long>(d)) {
+            const int p = alpha[d][i];
+            if (p < 0 || p == static_cast<int>(d)) continue;
+            if (alpha[static_cast<std::size_t>(p)][i] != static_cast<int>(d)) {
                 ++rep.darts.asymmetric_links;
                 alpha[d][i] = kUnconnected;
             }
@@ -125,22 +125,33 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     int n_alive = 0;
     for (std::size_t d = 0; d < nd; ++d)
         if (alive[d]) newIndex[d] = n_alive++;
+    // Compact in place (newIndex[d] <= d, so entries not yet read are never overwritten);
+    // missing or removed partners become free links.
+    std::vector<DartLinks> links;
+    links.swap(alpha);
+    for (std::size_t d = 0; d < nd; ++d) {
+        if (!alive[d]) continue;
+        DartLinks l;
+        for (int i = 0; i < 4; ++i) {
+            const int p = links[d][i];
+            if (p >= 0 && alive[static_cast<std::size_t>(p)]) {
+                l[i] = newIndex[static_cast<std::size_t>(p)];
+            } else {
+                l[i] = newIndex[d];
+                if (i < 3) ++rep.output.unconnected_darts;
+            }
+        }
+        links[static_cast<std::size_t>(newIndex[d])] = l;
+    }
+    links.resize(static_cast<std::size_t>(n_alive));
+    links.shrink_to_fit();
     GMap<3> g;
-    g.add_darts(static_cast<std::size_t>(n_alive));
+    g.assign_links(std::move(links));
     DartGeometry geo;
     geo.mesh = &mesh;
     geo.placement.position.resize(static_cast<std::size_t>(n_alive));
     geo.placement.boundary_hf.assign(static_cast<std::size_t>(n_alive), {-1, -1, -1});
     geo.handedness.resize(static_cast<std::size_t>(n_alive));
-    for (std::size_t d = 0; d < nd; ++d) {
-        if (!alive[d]) continue;
-        const DartHandle h(newIndex[d]);
-        for (int i = 0; i < 4; ++i) {
-            const long p = alpha[d][i];
-            if (p >= 0 && alive[static_cast<std::size_t>(p)]) g.link(h, DartHandle(newIndex[static_cast<std::size_t>(p)]), i);
-            else if (i < 3) ++rep.output.unconnected_darts;
-        }
-    }
     if (opt.merge) {
         rep.output.repaired_face_connections = completePartialFaceConnections(g);
         if (rep.output.repaired_face_connections > 0)
@@ -185,6 +196,12 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         }
     });
     rep.timings_s.vertices = secondsSince(t0);
+    // The extracted darts and per-tet data are not needed any more: free them before the
+    // assembly allocates its labels (peak memory).
+    std::vector<Dart>().swap(ds.darts);
+    std::vector<char>().swap(alive);
+    std::vector<int>().swap(newIndex);
+    std::vector<signed char>().swap(sign);
 
     // Validation and assembly.
     t0 = std::chrono::steady_clock::now();

@@ -42,6 +42,14 @@ public:
         for (std::size_t k = 0; k < n; ++k) add_dart();
         return first;
     }
+    /// Replaces the map by @p links (one entry per dart, all darts alive); entries must be
+    /// valid dart indices (use the dart itself for a free link). Takes the vector over
+    /// without copying.
+    void assign_links(std::vector<std::array<int, kLinks>>&& links) {
+        alpha_ = std::move(links);
+        alive_.assign(alpha_.size(), 1);
+        props_.resize(alpha_.size());
+    }
     /// Number of dart slots (including erased ones).
     std::size_t n_darts() const { return alpha_.size(); }
     /// True if dart @p d was not erased.

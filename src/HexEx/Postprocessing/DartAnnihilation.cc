@@ -4,7 +4,7 @@
 
 namespace HexEx {
 
-AnnihilationStats annihilateDarts(std::vector<std::array<long, 4>>& alpha, const std::vector<signed char>& sign,
+AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive) {
     AnnihilationStats st;
     const long n = static_cast<long>(alpha.size());
@@ -15,7 +15,7 @@ AnnihilationStats annihilateDarts(std::vector<std::array<long, 4>>& alpha, const
             work.push_back(d);
             queued[static_cast<std::size_t>(d)] = 1;
         }
-    auto A = [&](long d) -> std::array<long, 4>& { return alpha[static_cast<std::size_t>(d)]; };
+    auto A = [&](long d) -> std::array<int, 4>& { return alpha[static_cast<std::size_t>(d)]; };
     while (!work.empty()) {
         const long anti = work.front();
         work.pop_front();
@@ -33,8 +33,8 @@ AnnihilationStats annihilateDarts(std::vector<std::array<long, 4>>& alpha, const
             // x takes y as partner and vice versa; a partner that is one of the removed pair
             // (a free link) turns into a free link of the survivor.
             const bool xs = x >= 0 && x != reg, ys = y >= 0 && y != anti;
-            if (xs) A(x)[j] = ys ? y : (y < 0 ? -1 : x);
-            if (ys) A(y)[j] = xs ? x : (x < 0 ? -1 : y);
+            if (xs) A(x)[j] = static_cast<int>(ys ? y : (y < 0 ? -1 : x));
+            if (ys) A(y)[j] = static_cast<int>(xs ? x : (x < 0 ? -1 : y));
         }
         alive[static_cast<std::size_t>(reg)] = alive[static_cast<std::size_t>(anti)] = 0;
         ++st.pairs;

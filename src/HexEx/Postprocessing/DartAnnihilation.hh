@@ -19,7 +19,7 @@ struct AnnihilationStats {
 /// links (a free link is the dart itself, -1 means unconnected and is left alone);
 /// @p sign is +1/-1 per dart; @p alive is cleared for removed darts. Processing order is
 /// by ascending dart index with a work list, so the result is deterministic.
-AnnihilationStats annihilateDarts(std::vector<std::array<long, 4>>& alpha, const std::vector<signed char>& sign,
+AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive);
 
 } // namespace HexEx
