@@ -24,6 +24,20 @@ const std::array<std::array<AxisDir, 3>, 48>& allFrames() {
 }
 
 long DartSet::find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
+    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
+    if (slot >= 0) {
+        const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+        long local = 0;
+        for (int k = 0; k < 3; ++k) {
+            const int c = z[k] - di.lo[k];
+            if (c < 0 || c >= di.dims[k]) return -1;
+            local = local * di.dims[k] + c;
+        }
+        const std::size_t base = tet_begin[static_cast<std::size_t>(t)];
+        for (std::size_t k = base + di.offset[static_cast<std::size_t>(local)]; k < base + di.offset[static_cast<std::size_t>(local) + 1]; ++k)
+            if (darts[k].d == d) return static_cast<long>(k);
+        return -1;
+    }
     auto first = darts.begin() + static_cast<long>(tet_begin[t]);
     auto last = darts.begin() + static_cast<long>(tet_begin[t + 1]);
     auto it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
@@ -43,6 +57,8 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
+    std::vector<std::vector<DartSet::DenseIndex>> denseParts(static_cast<std::size_t>(chunks));
+    constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
     std::vector<std::size_t> count(n, 0);
     const auto& frames = allFrames();
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
@@ -68,9 +84,21 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                 throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(points) +
                                  " grid points (limit " + std::to_string(max_points) + ")");
             const std::size_t before = out.size();
+            DartSet::DenseIndex* di = nullptr;
+            if (points >= kDenseMinPoints) {
+                denseParts[static_cast<std::size_t>(k)].emplace_back();
+                di = &denseParts[static_cast<std::size_t>(k)].back();
+                di->tet = static_cast<int>(c);
+                for (int a = 0; a < 3; ++a) {
+                    di->lo[a] = ilo[a];
+                    di->dims[a] = ihi[a] - ilo[a] + 1;
+                }
+                di->offset.reserve(static_cast<std::size_t>(points) + 1);
+            }
             for (int x = ilo[0]; x <= ihi[0]; ++x)
                 for (int y = ilo[1]; y <= ihi[1]; ++y)
                     for (int zc = ilo[2]; zc <= ihi[2]; ++zc) {
+                        if (di) di->offset.push_back(static_cast<std::uint32_t>(out.size() - before));
                         const Vec3d zp(x, y, zc);
                         std::array<int, 4> oz;
                         bool outside = false, interior = true;
@@ -91,6 +119,7 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                         }
                     }
             count[c] = out.size() - before;
+            if (di) di->offset.push_back(static_cast<std::uint32_t>(count[c]));
         }
     });
     DartSet s;
@@ -103,6 +132,12 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     }
     s.tet_begin.assign(n + 1, 0);
     for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+    s.dense_slot.assign(n, -1);
+    for (auto& part : denseParts)
+        for (auto& di : part) {
+            s.dense_slot[static_cast<std::size_t>(di.tet)] = static_cast<int>(s.dense.size());
+            s.dense.push_back(std::move(di));
+        }
     return s;
 }
 

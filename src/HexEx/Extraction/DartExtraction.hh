@@ -8,6 +8,7 @@
 #include "TetSoS.hh"
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 namespace HexEx {
@@ -34,6 +35,16 @@ inline bool dartKeyLess(const Vec3i& za, const std::array<AxisDir, 3>& da, const
 struct DartSet {
     std::vector<Dart> darts;            ///< the darts
     std::vector<std::size_t> tet_begin; ///< darts of tet t are [tet_begin[t], tet_begin[t+1])
+    /// Tets with large parameter images get a dense index over their integer bounding box
+    /// so that find() is O(1): box (lo, dims) and, per box point, the first dart there.
+    struct DenseIndex {
+        int tet = -1;                       ///< the tet
+        int lo[3] = {0, 0, 0};              ///< smallest grid point of the box
+        int dims[3] = {0, 0, 0};            ///< box size per axis
+        std::vector<std::uint32_t> offset;  ///< per box point (x-major), first dart relative to tet_begin; one extra at the end
+    };
+    std::vector<DenseIndex> dense;      ///< dense indices of the large tets
+    std::vector<int> dense_slot;        ///< per tet: index into dense, or -1
 
     /// Index of the dart of tet @p t with key (z, d), or -1.
     long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;

@@ -22,6 +22,9 @@ struct ExtractionOptions {
     double epsilon = 1e-6;
     /// Annihilate regular/anti dart pairs and so merge the vertices they duplicate (4.4).
     bool merge = true;
+    /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
+    /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
+    double max_hexes = 4e7;
     /// Optional rotation index (0..23) per halfface instead of inferring transitions (the
     /// paper's assumption that matchings are known). If null, an `int` halfface property
     /// named kGivenRotationProperty on the tet mesh is used when present.

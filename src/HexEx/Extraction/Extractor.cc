@@ -10,6 +10,7 @@
 #include "DartExtraction.hh"
 
 #include <chrono>
+#include <cmath>
 
 namespace HexEx {
 
@@ -39,10 +40,23 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     auto t0 = std::chrono::steady_clock::now();
     progress("preprocess", 0);
     CornerParams params = input.params;
-    for (std::size_t c = 0; c < params.size(); ++c)
-        for (const auto& p : params[c])
-            for (int k = 0; k < 3; ++k)
+    // Unusable maps are refused up front with a clear message rather than exhausting memory.
+    double absVolume = 0;
+    for (std::size_t c = 0; c < params.size(); ++c) {
+        const auto& q = params[c];
+        for (const auto& p : q)
+            for (int k = 0; k < 3; ++k) {
                 if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
+                if (std::fabs(p[k]) > 1e9)
+                    throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
+                                     " is out of range (|u| <= 1e9)");
+            }
+        absVolume += std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
+    }
+    if (absVolume > opt.max_hexes)
+        throw InputError("the map covers a parametric volume of " + std::to_string(absVolume) +
+                         " grid cells, more than the limit of " + std::to_string(opt.max_hexes) +
+                         " hexes (ExtractionOptions::max_hexes); is the parameter scale right?");
     const std::vector<int>* given = opt.given_rotations;
     if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
     if (given) {
@@ -164,9 +178,24 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     t0 = std::chrono::steady_clock::now();
     progress("vertices", 0);
     parallelChunks(nd, threads, [&](int, std::size_t b, std::size_t e) {
+        // Darts are sorted by (tet, grid point): a run of darts at the same point shares
+        // its position and boundary faces, computed once for the run.
+        long prev = -1;
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
             const Dart& D = ds.darts[d];
+            const auto k = static_cast<std::size_t>(newIndex[d]);
+            geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
+            if (prev >= 0) {
+                const Dart& P = ds.darts[static_cast<std::size_t>(prev)];
+                if (P.tet == D.tet && P.z == D.z) {
+                    const auto pk = static_cast<std::size_t>(newIndex[static_cast<std::size_t>(prev)]);
+                    geo.placement.position[k] = geo.placement.position[pk];
+                    geo.placement.boundary_hf[k] = geo.placement.boundary_hf[pk];
+                    continue;
+                }
+            }
+            prev = static_cast<long>(d);
             const TetSoS& T = tets[static_cast<std::size_t>(D.tet)];
             const auto& cv = mesh.cell_vertices(CellHandle(D.tet));
             const Vec3d z = toVec3d(D.z);
@@ -184,7 +213,6 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                 sum += lam[j];
             }
             Vec3d pos(0, 0, 0);
-            const auto k = static_cast<std::size_t>(newIndex[d]);
             int nb = 0;
             for (int j = 0; j < 4; ++j) {
                 pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
@@ -192,7 +220,6 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                 if (oz[j] == 0 && mesh.is_boundary(hf) && nb < 3) geo.placement.boundary_hf[k][nb++] = hf.idx();
             }
             geo.placement.position[k] = pos;
-            geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
         }
     });
     rep.timings_s.vertices = secondsSince(t0);
