@@ -178,16 +178,16 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     int entry = -1;
     // First look among the darts of the same tet at the same grid point: they are stored
     // contiguously around this dart (alpha_1..alpha_3 partners usually are there).
-    if (target.z == D.z) {
+    if (samePoint(target.z, D.z)) {
         const std::size_t lo = set.tet_begin[static_cast<std::size_t>(t)], hi = set.tet_begin[static_cast<std::size_t>(t) + 1];
-        for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && set.darts[k].z == D.z;)
-            if (set.darts[k].d == target.d) return static_cast<long>(k);
-        for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && set.darts[k].z == D.z; ++k)
-            if (set.darts[k].d == target.d) return static_cast<long>(k);
+        for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
+            if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
+        for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && samePoint(set.darts[k].z, D.z); ++k)
+            if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
     }
     for (int step = 0; step < kMaxSteps; ++step) {
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
-        if (T.vol != 0 && (step > 0 || target.z != D.z)) {
+        if (T.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
             const long found = set.find(t, target.z, target.d);
             if (found >= 0) return found;
         }

@@ -35,13 +35,13 @@ long DartSet::find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const
         }
         const std::size_t base = tet_begin[static_cast<std::size_t>(t)];
         for (std::size_t k = base + di.offset[static_cast<std::size_t>(local)]; k < base + di.offset[static_cast<std::size_t>(local) + 1]; ++k)
-            if (darts[k].d == d) return static_cast<long>(k);
+            if (sameFrame(darts[k].d, d)) return static_cast<long>(k);
         return -1;
     }
     auto first = darts.begin() + static_cast<long>(tet_begin[t]);
     auto last = darts.begin() + static_cast<long>(tet_begin[t + 1]);
     auto it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
-    if (it != last && it->z == z && it->d[0] == d[0] && it->d[1] == d[1] && it->d[2] == d[2]) return it - darts.begin();
+    if (it != last && samePoint(it->z, z) && sameFrame(it->d, d)) return it - darts.begin();
     return -1;
 }
 

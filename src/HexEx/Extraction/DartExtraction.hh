@@ -22,6 +22,13 @@ struct Dart {
     signed char sign = 1;          ///< +1 regular dart, -1 anti dart
 };
 
+/// Equality of frames without std::array's memcmp (hot in lookups).
+inline bool sameFrame(const std::array<AxisDir, 3>& a, const std::array<AxisDir, 3>& b) {
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+}
+/// Equality of grid points, component-wise.
+inline bool samePoint(const Vec3i& a, const Vec3i& b) { return a[0] == b[0] && a[1] == b[1] && a[2] == b[2]; }
+
 /// Orders darts by (z, d1, d2, d3) within a tet.
 inline bool dartKeyLess(const Vec3i& za, const std::array<AxisDir, 3>& da, const Vec3i& zb,
                         const std::array<AxisDir, 3>& db) {

@@ -188,7 +188,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
             geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
             if (prev >= 0) {
                 const Dart& P = ds.darts[static_cast<std::size_t>(prev)];
-                if (P.tet == D.tet && P.z == D.z) {
+                if (P.tet == D.tet && samePoint(P.z, D.z)) {
                     const auto pk = static_cast<std::size_t>(newIndex[static_cast<std::size_t>(prev)]);
                     geo.placement.position[k] = geo.placement.position[pk];
                     geo.placement.boundary_hf[k] = geo.placement.boundary_hf[pk];
@@ -234,7 +234,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     t0 = std::chrono::steady_clock::now();
     progress("assemble", 0);
     HexOrbitLabels labels;
-    rep.validation = validateHexGMap(g, &labels);
+    rep.validation = validateHexGMap(g, &labels, threads);
     AssemblyStats st;
     output = assembleHexMesh(g, geo, labels, st);
     rep.output.vertices = static_cast<long>(output.vertices.size());

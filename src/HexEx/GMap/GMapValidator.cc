@@ -52,13 +52,13 @@ std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
     return label;
 }
 
-GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels) {
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int threads) {
     GMapValidation v;
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
-    const int chunks = static_cast<int>(std::min<std::size_t>(8, std::max<std::size_t>(1, n / 65536)));
+    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         GMapValidation& w = part[static_cast<std::size_t>(k)];
@@ -98,31 +98,27 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels) {
             if (label[s] >= 0 && size[static_cast<std::size_t>(label[s])] != want) ++bad;
         return bad;
     };
-    std::vector<int> size;
-    auto l01 = labelBy(g, 2, [&](int d, int k) { return a(d, k); }, size);
-    v.eq3_quad = countBad(l01, size, 8);
-    auto l12 = labelBy(g, 2, [&](int d, int k) { return a(d, k + 1); }, size);
-    v.eq4_corner = countBad(l12, size, 6);
-    auto l0121 = labelBy(g, 2, [&](int d, int k) { return k == 0 ? a(d, 0) : a(a(a(d, 1), 2), 1); }, size);
-    v.eq5_strip = countBad(l0121, size, 8);
-    auto l012 = labelBy(g, 3, [&](int d, int k) { return a(d, k); }, size);
+    // The four orbit labelings are independent: run them side by side.
+    std::vector<int> l01, l12, l0121, l012, s01, s12, s0121, size;
+    parallelChunks(4, std::min(4, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t job = b; job < e; ++job) {
+            if (job == 0) l01 = labelBy(g, 2, [&](int d, int k) { return a(d, k); }, s01);
+            if (job == 1) l12 = labelBy(g, 2, [&](int d, int k) { return a(d, k + 1); }, s12);
+            if (job == 2) l0121 = labelBy(g, 2, [&](int d, int k) { return k == 0 ? a(d, 0) : a(a(a(d, 1), 2), 1); }, s0121);
+            if (job == 3) l012 = labelBy(g, 3, [&](int d, int k) { return a(d, k); }, size);
+        }
+    });
+    v.eq3_quad = countBad(l01, s01, 8);
+    v.eq4_corner = countBad(l12, s12, 6);
+    v.eq5_strip = countBad(l0121, s0121, 8);
     v.eq6_hex = countBad(l012, size, 48);
     if (labels) {
         labels->cell = std::move(l012);
         labels->cell_size = std::move(size);
         labels->face = std::move(l01);
         labels->corner = std::move(l12);
-        auto sizes = [](const std::vector<int>& l) {
-            std::vector<int> sz;
-            for (int x : l)
-                if (x >= 0) {
-                    if (static_cast<std::size_t>(x) >= sz.size()) sz.resize(static_cast<std::size_t>(x) + 1, 0);
-                    ++sz[static_cast<std::size_t>(x)];
-                }
-            return sz;
-        };
-        labels->face_size = sizes(labels->face);
-        labels->corner_size = sizes(labels->corner);
+        labels->face_size = std::move(s01);
+        labels->corner_size = std::move(s12);
     }
     return v;
 }

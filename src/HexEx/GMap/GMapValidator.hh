@@ -43,8 +43,9 @@ struct HexOrbitLabels {
 
 /// Checks every alive dart of @p g against equations 1-6 of the paper and the involution
 /// property. Linear time. If @p labels is given, the face, corner and cell orbits are
-/// returned there (labels numbered in order of their smallest dart).
-GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr);
+/// returned there (labels numbered in order of their smallest dart). @p threads runs the
+/// checks and the independent orbit labelings in parallel; the result does not depend on it.
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1);
 
 /// Labels the orbits of @p g for the links in @p mask (bit i = alpha_i): returns a label
 /// per dart (-1 for erased darts), labels numbered 0.. in order of their smallest dart.
