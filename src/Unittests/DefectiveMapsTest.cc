@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
+
 #include <cstdio>
 #include <memory>
 
@@ -62,6 +64,11 @@ TEST(DefectiveMaps, PerturbedCylinderKeepsValence) {
             const auto r = run(pm, hm);
             EXPECT_EQ(r.output.hexes, k * 9 * 2);
             EXPECT_EQ(r.input.singular_edges, k == 4 ? 0 : 2);
+            // The singular axis keeps its valence in the output: k hexes around each of its
+            // H = 2 hex edges (its vertices stay on the axis line under the perturbation).
+            const auto val = HexExTest::axisEdgeValences(hm);
+            EXPECT_EQ(val.size(), 2u);
+            for (int v : val) EXPECT_EQ(v, k);
             EXPECT_TRUE(r.valid_all_hex) << r.validation.summary();
         }
 }

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -144,24 +146,6 @@ TEST(ExtractCube, FloatingPointNoise) {
     EXPECT_GT(r.input.snapped_coordinates, 0);
 }
 
-namespace {
-/// Number of hexes around each hex edge that lies on the cylinder axis (3D x = y = 0).
-std::vector<int> axisEdgeValences(const HexMesh& hm) {
-    static const int kEdges[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6}, {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
-    auto onAxis = [&](int v) { return std::hypot(hm.vertices[v][0], hm.vertices[v][1]) < 1e-9; };
-    std::map<std::pair<int, int>, int> count;
-    for (const auto& h : hm.hexes)
-        for (const auto& e : kEdges) {
-            int a = h[e[0]], b = h[e[1]];
-            if (!onAxis(a) || !onAxis(b)) continue;
-            if (a > b) std::swap(a, b);
-            ++count[{a, b}];
-        }
-    std::vector<int> out;
-    for (const auto& [e, n] : count) out.push_back(n);
-    return out;
-}
-} // namespace
 
 TEST(ExtractCylinder, SingularValence) {
     for (int k : {3, 4, 5, 6}) {
@@ -173,7 +157,7 @@ TEST(ExtractCylinder, SingularValence) {
         // Vertices: axis (H+1) + per wedge the R*(R+1) grid columns off the axis... count directly:
         // each wedge owns the points with a >= 1 (its b = 0 side belongs to the previous wedge's a = 0).
         EXPECT_EQ(r.output.vertices, (H + 1) * (1 + k * R * (R + 1)));
-        const auto val = axisEdgeValences(hm);
+        const auto val = HexExTest::axisEdgeValences(hm);
         EXPECT_EQ(val.size(), static_cast<std::size_t>(H));
         for (int v : val) EXPECT_EQ(v, k);
         for (const auto& p : hm.vertices) {
@@ -192,7 +176,7 @@ TEST(ExtractCylinder, FineTetsAndChartNoise) {
         applyParameterNoise(pm, 1e-11, 3);
         HexMesh hm;
         extractAndCheck(pm, {k * 8, -1}, hm);
-        for (int v : axisEdgeValences(hm)) EXPECT_EQ(v, k);
+        for (int v : HexExTest::axisEdgeValences(hm)) EXPECT_EQ(v, k);
     }
 }
 
