@@ -137,7 +137,10 @@ SurfaceMesh boundarySurface(const HexMesh& mesh, BoundarySurfaceReport* report) 
         if (canAttach(surface, vs)) fh = surface.add_face(vs);
         if (!fh.is_valid()) {
             // Non-manifold configuration: keep the face on its own copies of the vertices.
-            for (auto& vh : vs) vh = surface.add_vertex(surface.point(vh));
+            for (auto& vh : vs) {
+                const SurfaceMesh::Point p = surface.point(vh);  // copy: add_vertex may reallocate the points
+                vh = surface.add_vertex(p);
+            }
             surface.add_face(vs);
             ++rep.split_faces;
         }
