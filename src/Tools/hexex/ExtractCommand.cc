@@ -9,8 +9,8 @@
 #include <HexEx/Core/Error.hh>
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/TetMeshInput.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
-#include <HexEx/IO/OvmTetReader.hh>
 #include <HexEx/IO/ReportJson.hh>
 #include <HexEx/Mesh/BoundarySurface.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
@@ -235,12 +235,7 @@ int runExtract(const Args& args) {
     HexEx::ReportExtras extras;
     auto t0 = std::chrono::steady_clock::now();
     try {
-        std::string ext = input.size() >= 4 ? input.substr(input.size() - 4) : std::string();
-        for (auto& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-        const bool ovm = ext == ".ovm";
-        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &rr)
-             : ovm        ? HexEx::readOvmTetMesh(input, &rr)
-                          : HexEx::readHexExFile(input, &rr);
+        pm = HexEx::readParametrizedTetMesh(input, &rr);
     } catch (const HexEx::InputError& e) {
         std::cerr << "hexex extract: error: " << e.what() << "\n";
         return 2;

@@ -5,6 +5,7 @@
 
 #include <HexEx/Core/Error.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/TetMeshInput.hh>
 #include <HexEx/IO/MapStatistics.hh>
 
 #include <charconv>
@@ -84,8 +85,7 @@ int runInfo(const Args& args) {
     HexEx::ReadReport report;
     HexEx::ParametrizedTetMesh pm;
     try {
-        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &report)
-                          : HexEx::readHexExFile(input, &report);
+        pm = HexEx::readParametrizedTetMesh(input, &report);
     } catch (const HexEx::InputError& e) {
         std::cerr << "hexex info: error: " << e.what() << "\n";
         return 2;

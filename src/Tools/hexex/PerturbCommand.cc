@@ -8,6 +8,7 @@
 #include <HexEx/Core/Error.hh>
 #include <HexEx/Generators/Perturbation.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/TetMeshInput.hh>
 #include <HexEx/IO/MapStatistics.hh>
 
 #include <iostream>
@@ -55,7 +56,7 @@ int runPerturb(const Args& args) {
     HexEx::ReadReport rr;
     HexEx::ParametrizedTetMesh pm;
     try {
-        pm = input == "-" ? HexEx::readHexExStream(std::cin, "<stdin>", &rr) : HexEx::readHexExFile(input, &rr);
+        pm = HexEx::readParametrizedTetMesh(input, &rr);
     } catch (const HexEx::InputError& e) {
         std::cerr << "hexex perturb: error: " << e.what() << "\n";
         return 2;
