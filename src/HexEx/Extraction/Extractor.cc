@@ -79,7 +79,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     so.epsilon = opt.epsilon;
     so.threads = threads;
     rep.input.snapped_coordinates = sanitizeParameters(mesh, params, tr, so).snapped_coordinates;
-    const Singularities sing = findSingularities(mesh, params, tr);
+    const Singularities sing = findSingularities(mesh, params, tr, threads);
     rep.input.singular_edges = static_cast<long>(sing.edges.size());
     rep.input.singular_vertices = static_cast<long>(sing.vertices.size());
     const std::vector<TetSoS> tets = buildTetSoS(params, threads);

@@ -188,11 +188,15 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     return out;
 }
 
-Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr) {
+Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr, int threads) {
     Singularities s;
     std::vector<int> count(mesh.n_vertices(), 0);
     s.is_singular_vertex.assign(mesh.n_vertices(), 0);
-    for (std::size_t ei = 0; ei < mesh.n_edges(); ++ei) {
+    // Edges are independent: chunks collect their singular edges, concatenated in order.
+    const int chunks = std::max(1, threads);
+    std::vector<std::vector<SingularEdge>> found(static_cast<std::size_t>(chunks));
+    parallelChunks(mesh.n_edges(), chunks, [&](int chunk, std::size_t eb, std::size_t ee) {
+    for (std::size_t ei = eb; ei < ee; ++ei) {
         const EdgeHandle e(static_cast<int>(ei));
         if (mesh.is_boundary(e)) continue;
         auto ring = mesh.edge_cells(e);
@@ -231,11 +235,17 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
         se.edge = e;
         se.holonomy = H;
         se.valence = static_cast<int>(std::lround(angle / (M_PI / 2)));
-        s.edges.push_back(se);
-        ++count[ev[0].uidx()];
-        ++count[ev[1].uidx()];
-        s.is_singular_vertex[ev[0].uidx()] = s.is_singular_vertex[ev[1].uidx()] = 1;
+        found[static_cast<std::size_t>(chunk)].push_back(se);
     }
+    });
+    for (const auto& part : found)
+        for (const SingularEdge& se : part) {
+            s.edges.push_back(se);
+            const auto ev = mesh.edge_vertices(se.edge);
+            ++count[ev[0].uidx()];
+            ++count[ev[1].uidx()];
+            s.is_singular_vertex[ev[0].uidx()] = s.is_singular_vertex[ev[1].uidx()] = 1;
+        }
     for (std::size_t v = 0; v < count.size(); ++v)
         if (count[v] != 0 && count[v] != 2) s.vertices.push_back(VertexHandle(static_cast<int>(v)));
     return s;

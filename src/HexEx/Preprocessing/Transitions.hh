@@ -45,7 +45,9 @@ struct Singularities {
 
 /// Finds the interior edges whose holonomy (composition of transitions around the edge) is
 /// not the identity, with their valence computed from the parametric dihedral angles.
-Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr);
+/// @p threads parallelizes over edges; the result does not depend on it.
+Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr,
+                                int threads = 1);
 
 /// The halfface of cell @p c that contains edge (@p a, @p b) and leads to cell @p next, or invalid.
 HalfFaceHandle halffaceTowards(const TetMesh& mesh, CellHandle c, CellHandle next);
