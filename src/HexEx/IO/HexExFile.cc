@@ -2,6 +2,7 @@
 /// Implementation of the `.hexex` reader (in-memory tokenizer with std::from_chars) and writer.
 
 #include "HexExFile.hh"
+#include "TextParsing.hh"
 
 #include "../Core/Error.hh"
 #include "../Predicates/ExactPredicates.hh"
@@ -31,22 +32,10 @@ constexpr long long kMaxVertices = INT_MAX;
 /// Largest tet count accepted (halffaces 4*c and cell edges 6*c must fit an int).
 constexpr long long kMaxTets = INT_MAX / 8;
 
+using detail::quoteToken;
 /// Whitespace as understood by the format.
-inline bool isSpace(char ch) {
-    return ch == ' ' || ch == '\n' || ch == '\t' || ch == '\r' || ch == '\v' || ch == '\f';
-}
+inline bool isSpace(char ch) { return detail::isFormatSpace(ch); }
 
-/// A token quoted for an error message: at most 40 characters, non-printable bytes as '?'.
-std::string quoted(std::string_view tok) {
-    std::string s = "'";
-    const std::size_t n = std::min<std::size_t>(tok.size(), 40);
-    for (std::size_t i = 0; i < n; ++i) {
-        const unsigned char ch = static_cast<unsigned char>(tok[i]);
-        s += (ch >= 0x20 && ch < 0x7f) ? static_cast<char>(ch) : '?';
-    }
-    if (tok.size() > n) s += "...";
-    return s + "'";
-}
 
 /// Splits the text into whitespace-separated tokens, tracking line numbers, and parses
 /// them; every failure becomes an InputError "<name>:<line>: <reason>".
@@ -100,9 +89,9 @@ public:
         long long value = 0;
         const auto res = std::from_chars(first, last, value);
         if (res.ec == std::errc::result_out_of_range && res.ptr == last)
-            fail(line_, "integer " + quoted(tok) + " out of range for " + what());
+            fail(line_, "integer " + quoteToken(tok) + " out of range for " + what());
         if (res.ec != std::errc() || res.ptr != last)
-            fail(line_, "expected an integer for " + what() + ", got " + quoted(tok));
+            fail(line_, "expected an integer for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -118,12 +107,12 @@ public:
         if (res.ec == std::errc::result_out_of_range && res.ptr == last) {
             // Underflow (e.g. 1e-400) rounds to zero as strtod does; overflow is an error.
             value = std::strtod(std::string(first, last).c_str(), nullptr);
-            if (std::isinf(value)) fail(line_, "number " + quoted(tok) + " out of double range for " + what());
+            if (std::isinf(value)) fail(line_, "number " + quoteToken(tok) + " out of double range for " + what());
             return value;
         }
         if (res.ec != std::errc() || res.ptr != last)
-            fail(line_, "expected a number for " + what() + ", got " + quoted(tok));
-        if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoted(tok) + " for " + what());
+            fail(line_, "expected a number for " + what() + ", got " + quoteToken(tok));
+        if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoteToken(tok) + " for " + what());
         return value;
     }
 

@@ -3,6 +3,7 @@
 /// formats, a minimal XML parser for `.vtu`, and cell reconstruction helpers.
 
 #include "HexMeshReaders.hh"
+#include "TextParsing.hh"
 
 #include "../Core/Error.hh"
 #include "../Mesh/HexMeshCheck.hh"
@@ -25,6 +26,7 @@
 namespace HexEx {
 
 namespace {
+using detail::quoteToken;
 
 /// Case-insensitive comparison of a token with a keyword.
 bool iequals(std::string_view a, std::string_view b) {
@@ -35,17 +37,6 @@ bool iequals(std::string_view a, std::string_view b) {
     return true;
 }
 
-/// A token quoted for an error message: at most 40 characters, non-printable bytes as '?'.
-std::string quoteToken(std::string_view tok) {
-    std::string s = "'";
-    const std::size_t n = std::min<std::size_t>(tok.size(), 40);
-    for (std::size_t i = 0; i < n; ++i) {
-        const unsigned char ch = static_cast<unsigned char>(tok[i]);
-        s += (ch >= 0x20 && ch < 0x7f) ? static_cast<char>(ch) : '?';
-    }
-    if (tok.size() > n) s += "...";
-    return s + "'";
-}
 
 /// Throws InputError "<name>:<line>: <reason>" (or without line if line <= 0).
 [[noreturn]] void failAt(const std::string& name, int line, const std::string& reason) {

@@ -4,6 +4,7 @@
 /// from their halffaces.
 
 #include "OvmTetReader.hh"
+#include "TextParsing.hh"
 
 #include "../Core/Error.hh"
 #include "../Predicates/ExactPredicates.hh"
@@ -37,9 +38,8 @@ constexpr long long kMaxCells = INT_MAX / 8;  // as the .hexex reader
 const char* const kParamNames[] = {"parametrization", "parameterization", "param", "params",
                                    "parameter",       "parameters",       "uvw",   "igm"};
 
-inline bool isSpace(char ch) {
-    return ch == ' ' || ch == '\t' || ch == '\r' || ch == '\v' || ch == '\f' || ch == '\n';
-}
+inline bool isSpace(char ch) { return detail::isFormatSpace(ch); }
+using detail::quoteToken;
 
 std::string lower(std::string_view s) {
     std::string r(s);
@@ -47,17 +47,6 @@ std::string lower(std::string_view s) {
     return r;
 }
 
-/// A token quoted for an error message: at most 40 characters, non-printable bytes as '?'.
-std::string showToken(std::string_view tok) {
-    std::string s = "'";
-    const std::size_t n = std::min<std::size_t>(tok.size(), 40);
-    for (std::size_t i = 0; i < n; ++i) {
-        const unsigned char ch = static_cast<unsigned char>(tok[i]);
-        s += (ch >= 0x20 && ch < 0x7f) ? static_cast<char>(ch) : '?';
-    }
-    if (tok.size() > n) s += "...";
-    return s + "'";
-}
 
 /// Reads "clean" lines (comments stripped, trimmed, blank lines skipped) and parses their
 /// tokens; every failure becomes an InputError "<name>:<line>: <reason>".
@@ -120,7 +109,7 @@ public:
     void expectTokens(std::size_t n, const What& what) const {
         if (tokens_.size() != n)
             fail(lineNo_, "expected " + std::to_string(n) + (n == 1 ? " value" : " values") + " for " + what() +
-                              ", got " + std::to_string(tokens_.size()) + " in " + showToken(line_));
+                              ", got " + std::to_string(tokens_.size()) + " in " + quoteToken(line_));
     }
 
     /// Token @p i as an integer.
@@ -133,9 +122,9 @@ public:
         long long value = 0;
         const auto res = std::from_chars(first, last, value);
         if (res.ec == std::errc::result_out_of_range && res.ptr == last)
-            fail(lineNo_, "integer " + showToken(tok) + " out of range for " + what());
+            fail(lineNo_, "integer " + quoteToken(tok) + " out of range for " + what());
         if (res.ec != std::errc() || res.ptr != last)
-            fail(lineNo_, "expected an integer for " + what() + ", got " + showToken(tok));
+            fail(lineNo_, "expected an integer for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -162,7 +151,7 @@ public:
             return value;
         }
         if (res.ec != std::errc() || res.ptr != last)
-            fail(lineNo_, "expected a number for " + what() + ", got " + showToken(tok));
+            fail(lineNo_, "expected a number for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -170,7 +159,7 @@ public:
     template <class What>
     double finite(std::size_t i, const What& what) const {
         const double v = real(i, what);
-        if (!std::isfinite(v)) fail(lineNo_, "NaN or infinite value " + showToken(tokens_[i]) + " for " + what());
+        if (!std::isfinite(v)) fail(lineNo_, "NaN or infinite value " + quoteToken(tokens_[i]) + " for " + what());
         return v;
     }
 
@@ -178,7 +167,7 @@ public:
     long long section(const char* keyword, long long maxCount) {
         require([&] { return std::string("section '") + keyword + "'"; });
         if (tokens_.size() != 1 || lower(tokens_[0]) != lower(keyword))
-            fail(lineNo_, std::string("expected section '") + keyword + "', got " + showToken(line_));
+            fail(lineNo_, std::string("expected section '") + keyword + "', got " + quoteToken(line_));
         const std::string what = std::string(keyword) + " count";
         const auto desc = [&] { return lower(what); };
         require(desc);
@@ -233,7 +222,7 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& n
     if (in.size() == 2 && lower(in.token(0)) == "ovm" && lower(in.token(1)) == "binary")
         in.fail(in.line(), "binary OpenVolumeMesh files are not supported (expected 'OVM ASCII')");
     if (in.size() != 2 || lower(in.token(0)) != "ovm" || lower(in.token(1)) != "ascii")
-        in.fail(in.line(), "not an OpenVolumeMesh ASCII file: expected header 'OVM ASCII', got " + showToken(in.text()));
+        in.fail(in.line(), "not an OpenVolumeMesh ASCII file: expected header 'OVM ASCII', got " + quoteToken(in.text()));
 
     // Vertices.
     const long long nv = in.section("Vertices", kMaxVertices);
@@ -390,12 +379,12 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& n
         const std::size_t q2 = q1 == std::string_view::npos ? q1 : t.find('"', q1 + 1);
         if (in.size() < 3 || q1 == std::string_view::npos || q2 == std::string_view::npos ||
             t.find_first_not_of(" \t\r\v\f", q2 + 1) != std::string_view::npos)
-            in.fail(in.line(), "expected a property block header 'ENTITY TYPE \"name\"', got " + showToken(t));
+            in.fail(in.line(), "expected a property block header 'ENTITY TYPE \"name\"', got " + quoteToken(t));
         ph.entity = std::string(in.token(0));
         std::string_view type = t.substr(ph.entity.size(), q1 - ph.entity.size());
         while (!type.empty() && isSpace(type.front())) type.remove_prefix(1);
         while (!type.empty() && isSpace(type.back())) type.remove_suffix(1);
-        if (type.empty()) in.fail(in.line(), "property block header " + showToken(t) + " has no type");
+        if (type.empty()) in.fail(in.line(), "property block header " + quoteToken(t) + " has no type");
         ph.type = std::string(type);
         ph.name = std::string(t.substr(q1 + 1, q2 - q1 - 1));
         const std::string ent = lower(ph.entity);
@@ -408,7 +397,7 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& n
         else if (ent == "cprop") n = nc;
         else if (ent == "mprop") n = 1;
         else
-            in.fail(in.line(), "unknown property entity " + showToken(ph.entity) +
+            in.fail(in.line(), "unknown property entity " + quoteToken(ph.entity) +
                                    " (expected VProp, EProp, HEProp, FProp, HFProp, CProp or MProp)");
         const std::string ltype = lower(ph.type);
         const bool hfParam = ent == "hfprop" && (ltype == "vec3d" || ltype == "vec3f") && isParamName(ph.name);
