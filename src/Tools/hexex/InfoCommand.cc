@@ -1,5 +1,5 @@
 /// @file InfoCommand.cc
-/// `hexex info IN [--json]`: statistics of a .hexex tet mesh with its map.
+/// `hexex info IN [--json]`: statistics of a tet mesh (.hexex or .ovm) with its map.
 
 #include "Commands.hh"
 
@@ -7,8 +7,8 @@
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/TetMeshInput.hh>
 #include <HexEx/IO/MapStatistics.hh>
+#include <HexEx/IO/ReportJson.hh>
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <string>
@@ -17,44 +17,15 @@ namespace HexExTool {
 
 namespace {
 
-/// Shortest round-trip text of a double; "null" for non-finite values (JSON has none).
-std::string num(double x) {
-    if (!std::isfinite(x)) return "null";
-    char buf[64];
-    const auto res = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, res.ptr);
-}
-
-/// A JSON string literal.
-std::string jsonString(const std::string& s) {
-    std::string out = "\"";
-    for (const char ch : s) {
-        const unsigned char u = static_cast<unsigned char>(ch);
-        if (ch == '"' || ch == '\\') {
-            out += '\\';
-            out += ch;
-        } else if (ch == '\n') {
-            out += "\\n";
-        } else if (ch == '\t') {
-            out += "\\t";
-        } else if (u < 0x20) {
-            static const char* hex = "0123456789abcdef";
-            out += "\\u00";
-            out += hex[u >> 4];
-            out += hex[u & 15];
-        } else {
-            out += ch;
-        }
-    }
-    return out + "\"";
-}
+using HexEx::jsonNumber;
+using HexEx::jsonQuote;
 
 /// "[x, y, z]".
 std::string jsonVec(const HexEx::Vec3d& v) {
-    return "[" + num(v[0]) + ", " + num(v[1]) + ", " + num(v[2]) + "]";
+    return "[" + jsonNumber(v[0]) + ", " + jsonNumber(v[1]) + ", " + jsonNumber(v[2]) + "]";
 }
 
-const char* kInfoUsage = "usage: hexex info IN.hexex [--json]\n";
+const char* kInfoUsage = "usage: hexex info IN.hexex|IN.ovm [--json]\n";
 
 } // namespace
 
@@ -99,12 +70,12 @@ int runInfo(const Args& args) {
                   << "  \"boundary_faces\": " << s.boundary_faces << ",\n"
                   << "  \"flipped_tets\": " << s.flipped_tets << ",\n"
                   << "  \"degenerate_tets\": " << s.degenerate_tets << ",\n"
-                  << "  \"parametric_volume\": " << num(s.parametric_volume) << ",\n"
+                  << "  \"parametric_volume\": " << jsonNumber(s.parametric_volume) << ",\n"
                   << "  \"param_bbox_min\": " << jsonVec(s.param_bbox_min) << ",\n"
                   << "  \"param_bbox_max\": " << jsonVec(s.param_bbox_max) << ",\n"
                   << "  \"warnings\": [";
         for (std::size_t i = 0; i < report.warnings.size(); ++i)
-            std::cout << (i ? ", " : "") << jsonString(report.warnings[i]);
+            std::cout << (i ? ", " : "") << jsonQuote(report.warnings[i]);
         std::cout << "]\n}\n";
     } else {
         std::cout << "file:              " << input << "\n"
@@ -113,11 +84,11 @@ int runInfo(const Args& args) {
                   << "boundary faces:    " << s.boundary_faces << "\n"
                   << "flipped tets:      " << s.flipped_tets << "\n"
                   << "degenerate tets:   " << s.degenerate_tets << "\n"
-                  << "parametric volume: " << num(s.parametric_volume) << "\n"
-                  << "param bbox min:    " << num(s.param_bbox_min[0]) << " " << num(s.param_bbox_min[1]) << " "
-                  << num(s.param_bbox_min[2]) << "\n"
-                  << "param bbox max:    " << num(s.param_bbox_max[0]) << " " << num(s.param_bbox_max[1]) << " "
-                  << num(s.param_bbox_max[2]) << "\n";
+                  << "parametric volume: " << jsonNumber(s.parametric_volume) << "\n"
+                  << "param bbox min:    " << jsonNumber(s.param_bbox_min[0]) << " " << jsonNumber(s.param_bbox_min[1]) << " "
+                  << jsonNumber(s.param_bbox_min[2]) << "\n"
+                  << "param bbox max:    " << jsonNumber(s.param_bbox_max[0]) << " " << jsonNumber(s.param_bbox_max[1]) << " "
+                  << jsonNumber(s.param_bbox_max[2]) << "\n";
         for (const auto& w : report.warnings) std::cout << "warning: " << w << "\n";
     }
     return 0;
