@@ -1,6 +1,7 @@
 /// @file InfoCommand.cc
 /// `hexex info IN [--json]`: statistics of a tet mesh (.hexex or .ovm) with its map.
 
+#include "ArgParser.hh"
 #include "Commands.hh"
 
 #include <HexEx/Core/Error.hh>
@@ -32,24 +33,18 @@ const char* kInfoUsage = "usage: hexex info IN.hexex|IN.ovm [--json]\n";
 int runInfo(const Args& args) {
     std::string input;
     bool json = false;
-    for (const auto& a : args) {
-        if (a == "--json") {
-            json = true;
-        } else if (a == "-h" || a == "--help") {
+    try {
+        const ParsedArgs pa = parseArgs(args, {{"--json", false, ""}});
+        if (pa.has("--help")) {
             std::cout << kInfoUsage;
             return 0;
-        } else if (!a.empty() && a[0] == '-' && a != "-") {
-            std::cerr << "hexex info: unknown option '" << a << "'\n" << kInfoUsage;
-            return 2;
-        } else if (input.empty()) {
-            input = a;
-        } else {
-            std::cerr << "hexex info: more than one input file given\n" << kInfoUsage;
-            return 2;
         }
-    }
-    if (input.empty()) {
-        std::cerr << "hexex info: no input file given\n" << kInfoUsage;
+        if (pa.positional.size() > 1) throw UsageError("more than one input file given");
+        if (pa.positional.empty()) throw UsageError("no input file given");
+        input = pa.positional[0];
+        json = pa.has("--json");
+    } catch (const UsageError& e) {
+        std::cerr << "hexex info: " << e.what() << "\n" << kInfoUsage;
         return 2;
     }
 

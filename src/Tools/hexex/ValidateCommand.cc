@@ -3,6 +3,7 @@
 /// result of HexEx::checkHexMesh(). Exit status 0 if the mesh is a valid all-hex mesh, 3 if
 /// it was read but is not, 2 on bad input or usage.
 
+#include "ArgParser.hh"
 #include "Commands.hh"
 
 #include <HexEx/Core/Error.hh>
@@ -39,24 +40,18 @@ const char* kValidateUsage =
 int runValidate(const Args& args) {
     std::string input;
     bool json = false;
-    for (const auto& a : args) {
-        if (a == "--json") {
-            json = true;
-        } else if (a == "-h" || a == "--help") {
+    try {
+        const ParsedArgs pa = parseArgs(args, {{"--json", false, ""}});
+        if (pa.has("--help")) {
             std::cout << kValidateUsage;
             return 0;
-        } else if (!a.empty() && a[0] == '-') {
-            std::cerr << "hexex validate: unknown option '" << a << "'\n" << kValidateUsage;
-            return 2;
-        } else if (input.empty()) {
-            input = a;
-        } else {
-            std::cerr << "hexex validate: more than one input file given\n" << kValidateUsage;
-            return 2;
         }
-    }
-    if (input.empty()) {
-        std::cerr << "hexex validate: no input file given\n" << kValidateUsage;
+        if (pa.positional.size() > 1) throw UsageError("more than one input file given");
+        if (pa.positional.empty()) throw UsageError("no input file given");
+        input = pa.positional[0];
+        json = pa.has("--json");
+    } catch (const UsageError& e) {
+        std::cerr << "hexex validate: " << e.what() << "\n" << kValidateUsage;
         return 2;
     }
 
