@@ -235,3 +235,47 @@ TEST(ExtractGivenRotations, HalffacePropertyIsUsedAndChecked) {
         EXPECT_NE(std::string(e.what()).find("are not inverse to each other"), std::string::npos) << e.what();
     }
 }
+
+TEST(ExtractImplicitCells, SameMeshWithAndWithoutDarts) {
+    for (int k : {3, 4, 5, 6}) {
+        SCOPED_TRACE("valence " + std::to_string(k));
+        auto pm = generateCylinder(k, 8, 8, 1, 1);
+        pm.mesh.build_adjacency();
+        HexMesh on, off;
+        ExtractionOptions o;
+        const auto r1 = extractHexMesh(pm, on, o);
+        o.implicit_cells = false;
+        const auto r0 = extractHexMesh(pm, off, o);
+        EXPECT_GT(r1.darts.implicit_cells, 0);
+        EXPECT_EQ(r0.darts.implicit_cells, 0);
+        EXPECT_LT(r1.darts.extracted, r0.darts.extracted);
+        EXPECT_EQ(r1.output.hexes, k * 64 * 8);
+        EXPECT_EQ(r1.output.hexes, r0.output.hexes);
+        EXPECT_EQ(r1.output.vertices, r0.output.vertices);
+        EXPECT_EQ(r1.output.quads, r0.output.quads);
+        EXPECT_EQ(r1.output.boundary_quads, r0.output.boundary_quads);
+        EXPECT_TRUE(r1.valid_all_hex) << r1.validation.summary();
+        long over = 0, badEdges = 0, bq = 0;
+        checkQuadManifold(on, over, badEdges, bq);
+        EXPECT_EQ(over, 0);
+        EXPECT_EQ(badEdges, 0);
+        EXPECT_EQ(bq, r1.output.boundary_quads);
+        // Same vertex positions (as sets) and the singular valence around the axis.
+        auto sorted = [](std::vector<Vec3d> v) {
+            std::sort(v.begin(), v.end(), [](const Vec3d& a, const Vec3d& b) {
+                return a[0] != b[0] ? a[0] < b[0] : a[1] != b[1] ? a[1] < b[1] : a[2] < b[2];
+            });
+            return v;
+        };
+        const auto p1 = sorted(on.vertices), p0 = sorted(off.vertices);
+        ASSERT_EQ(p1.size(), p0.size());
+        for (std::size_t i = 0; i < p1.size(); ++i) EXPECT_LT((p1[i] - p0[i]).norm(), 1e-12);
+        for (int v : HexExTest::axisEdgeValences(on)) EXPECT_EQ(v, k);
+        // Deterministic across thread counts.
+        HexMesh two;
+        o.implicit_cells = true;
+        o.threads = 2;
+        extractHexMesh(pm, two, o);
+        EXPECT_EQ(two.hexes, on.hexes);
+    }
+}

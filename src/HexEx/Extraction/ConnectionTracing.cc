@@ -168,6 +168,8 @@ int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const T
 
 constexpr int kMaxSteps = 4096;
 
+long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
+
 long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
               long dart, int i, long& steps) {
     const Dart& D = set.darts[static_cast<std::size_t>(dart)];
@@ -184,12 +186,14 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
             if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
         for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && samePoint(set.darts[k].z, D.z); ++k)
             if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
+        if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
     }
     for (int step = 0; step < kMaxSteps; ++step) {
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
         if (T.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
             const long found = set.find(t, target.z, target.d);
             if (found >= 0) return found;
+            if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
         }
         const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry, mesh, t);
         if (f < 0) return kUnconnected;

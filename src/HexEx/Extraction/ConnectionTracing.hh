@@ -16,6 +16,10 @@ namespace HexEx {
 /// Partner value meaning "not connected" (trace failed or ran into the boundary for i < 3).
 constexpr int kUnconnected = -1;
 
+/// A partner in an implicit cell (DartSet::implicitCell()) is stored as -2 - occurrence id
+/// of its grid point; this decodes it (-1 if @p link is not such a value).
+inline long implicitPartnerOccurrence(long link) { return link <= -2 ? -2 - link : -1; }
+
 /// The four alpha links of a dart (dart indices; see traceConnections()).
 using DartLinks = std::array<int, 4>;
 
@@ -27,7 +31,8 @@ struct TraceStats {
 };
 
 /// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
-/// kUnconnected marks a failure. Deterministic for any thread count. Throws InputError if
+/// kUnconnected marks a failure; values <= -2 are partners in implicit cells
+/// (implicitPartnerOccurrence()). Deterministic for any thread count. Throws InputError if
 /// there are more darts than an int can index.
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,

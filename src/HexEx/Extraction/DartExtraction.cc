@@ -53,7 +53,26 @@ std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads) {
     return out;
 }
 
-DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points) {
+long DartSet::occurrence(int t, const Vec3i& z) const {
+    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
+    if (slot < 0) return -1;
+    const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+    if (di.flags.empty()) return -1;
+    const long l = di.local(z);
+    if (l < 0 || !(di.flags[static_cast<std::size_t>(l)] & 1)) return -1;
+    return di.occ_base + l;
+}
+
+bool DartSet::implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
+    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
+    if (slot < 0) return false;
+    const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+    if (di.flags.empty()) return false;
+    const long l = di.local(cellLowerCorner(z, d));
+    return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
+}
+
+DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells) {
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
@@ -94,6 +113,28 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                     di->dims[a] = ihi[a] - ilo[a] + 1;
                 }
                 di->offset.reserve(static_cast<std::size_t>(points) + 1);
+                if (implicit_cells && T.vol > 0) {
+                    // Interior points, then cells whose 8 corners are all interior.
+                    const int dx = di->dims[0], dy = di->dims[1], dz = di->dims[2];
+                    di->flags.assign(static_cast<std::size_t>(points), 0);
+                    std::size_t l = 0;
+                    for (int x = ilo[0]; x <= ihi[0]; ++x)
+                        for (int y = ilo[1]; y <= ihi[1]; ++y)
+                            for (int zc = ilo[2]; zc <= ihi[2]; ++zc, ++l) {
+                                const Vec3d zp(x, y, zc);
+                                bool inside = true;
+                                for (int j = 0; j < 4 && inside; ++j) inside = T.side(j, zp) == T.vol;
+                                if (inside) di->flags[l] = 1;
+                            }
+                    auto at = [&](int x, int y, int zc) { return di->flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
+                    for (int x = 0; x + 1 < dx; ++x)
+                        for (int y = 0; y + 1 < dy; ++y)
+                            for (int zc = 0; zc + 1 < dz; ++zc) {
+                                bool all = true;
+                                for (int q = 0; q < 8 && all; ++q) all = (at(x + (q & 1), y + ((q >> 1) & 1), zc + (q >> 2)) & 1) != 0;
+                                if (all) di->flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc] |= 2;
+                            }
+                }
             }
             for (int x = ilo[0]; x <= ihi[0]; ++x)
                 for (int y = ilo[1]; y <= ihi[1]; ++y)
@@ -110,6 +151,10 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                         if (outside) continue;
                         for (const auto& f : frames) {
                             if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
+                            if (di && !di->flags.empty()) {
+                                const long lc = di->local(cellLowerCorner(Vec3i(x, y, zc), f));
+                                if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) continue;
+                            }
                             Dart d;
                             d.tet = static_cast<int>(c);
                             d.z = Vec3i(x, y, zc);
@@ -136,6 +181,9 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     for (auto& part : denseParts)
         for (auto& di : part) {
             s.dense_slot[static_cast<std::size_t>(di.tet)] = static_cast<int>(s.dense.size());
+            di.occ_base = s.n_occurrences;
+            s.n_occurrences += static_cast<long>(di.offset.size()) - 1;
+            for (std::uint8_t f : di.flags) s.n_implicit_cells += (f & 2) ? 1 : 0;
             s.dense.push_back(std::move(di));
         }
     return s;

@@ -49,12 +49,34 @@ struct DartSet {
         int lo[3] = {0, 0, 0};              ///< smallest grid point of the box
         int dims[3] = {0, 0, 0};            ///< box size per axis
         std::vector<std::uint32_t> offset;  ///< per box point (x-major), first dart relative to tet_begin; one extra at the end
+        /// Per box point: bit 0 = strictly inside the tet, bit 1 = the unit cell with this
+        /// lower corner is implicit (all 8 corners strictly inside; no darts stored).
+        std::vector<std::uint8_t> flags;
+        long occ_base = 0;                  ///< first occurrence id of this box (see occurrence())
+        /// Local index of @p z in the box, or -1 outside.
+        long local(const Vec3i& z) const {
+            long l = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int c = z[k] - lo[k];
+                if (c < 0 || c >= dims[k]) return -1;
+                l = l * dims[k] + c;
+            }
+            return l;
+        }
     };
     std::vector<DenseIndex> dense;      ///< dense indices of the large tets
     std::vector<int> dense_slot;        ///< per tet: index into dense, or -1
 
+    long n_occurrences = 0;             ///< total box points of the dense indices
+    long n_implicit_cells = 0;          ///< unit cells produced without darts
+
     /// Index of the dart of tet @p t with key (z, d), or -1.
     long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
+    /// Occurrence id of grid point @p z strictly inside tet @p t (a vertex known without
+    /// darts), or -1 if @p t has no dense index or @p z is not strictly inside.
+    long occurrence(int t, const Vec3i& z) const;
+    /// True if the unit cell of the dart (z, d) in tet @p t is implicit (no darts stored).
+    bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
 };
 
 /// The 48 axis frames (d1, d2, d3) in lexicographic order.
@@ -63,9 +85,20 @@ const std::array<std::array<AxisDir, 3>, 48>& allFrames();
 /// Per-tet symbolic-perturbation data for every tet (computed in parallel).
 std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads);
 
+/// Lower corner of the unit grid cell that the dart (z, d) spans.
+inline Vec3i cellLowerCorner(const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    Vec3i c = z;
+    for (AxisDir x : d)
+        if (dirSign(x) < 0) --c[dirAxis(x)];
+    return c;
+}
+
 /// Extracts every dart of every non-degenerate tet. Deterministic for any thread count.
 /// Throws InputError if a tet's parameter image is absurdly large (more than
-/// @p max_points_per_tet grid points in its bounding box).
-DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9);
+/// @p max_points_per_tet grid points in its bounding box). With @p implicit_cells, unit
+/// cells whose 8 corners lie strictly inside one large proper tet get no darts: they are
+/// hexes by construction (only valid when no tet is flipped, so nothing can annihilate them).
+DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
+                     bool implicit_cells = false);
 
 } // namespace HexEx

@@ -22,6 +22,10 @@ struct ExtractionOptions {
     double epsilon = 1e-6;
     /// Annihilate regular/anti dart pairs and so merge the vertices they duplicate (4.4).
     bool merge = true;
+    /// Build unit cells that lie strictly inside one large proper tet directly from the grid,
+    /// without darts (much less memory for coarse tet meshes). Used only when no tet is
+    /// flipped; the output is the same as without it.
+    bool implicit_cells = true;
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
     double max_hexes = 4e7;
@@ -66,6 +70,7 @@ struct ExtractionReport {
         long annihilated_pairs = 0;  ///< regular/anti pairs removed
         long remaining_anti = 0;     ///< anti darts left after annihilation
         long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
+        long implicit_cells = 0;     ///< hexes built from the grid inside one tet, without darts
     } darts;  ///< dart statistics
     /// Wall-clock seconds per stage.
     struct Timings {

@@ -9,7 +9,9 @@
 #include "ConnectionTracing.hh"
 #include "DartExtraction.hh"
 
+#include <algorithm>
 #include <chrono>
+#include <limits>
 #include <cmath>
 
 namespace HexEx {
@@ -96,7 +98,13 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Darts (the h-vertices are the grid points the darts sit on).
     t0 = std::chrono::steady_clock::now();
     progress("darts", 0);
-    DartSet ds = extractDarts(tets, threads);
+    // Cells inside one large proper tet need no darts, unless a fold could annihilate them.
+    const bool useImplicit = opt.implicit_cells && rep.input.flipped_tets == 0;
+    DartSet ds = extractDarts(tets, threads, 1e9, useImplicit);
+    if (ds.n_occurrences >= std::numeric_limits<int>::max() / 2)
+        throw InputError("too many grid points in large tets for 32-bit indices");
+    ImplicitCells implicit;
+    implicit.n_occurrences = ds.n_occurrences;
     const std::size_t nd = ds.darts.size();
     rep.darts.extracted = static_cast<long>(nd);
     std::vector<signed char> sign(nd);
@@ -141,6 +149,10 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         if (alive[d]) newIndex[d] = n_alive++;
     // Compact in place (newIndex[d] <= d, so entries not yet read are never overwritten);
     // missing or removed partners become free links.
+    if (useImplicit) {
+        implicit.alpha3_occurrence.assign(static_cast<std::size_t>(n_alive), -1);
+        implicit.dart_occurrence.assign(static_cast<std::size_t>(n_alive), -1);
+    }
     std::vector<DartLinks> links;
     links.swap(alpha);
     for (std::size_t d = 0; d < nd; ++d) {
@@ -150,6 +162,9 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
             const int p = links[d][i];
             if (p >= 0 && alive[static_cast<std::size_t>(p)]) {
                 l[i] = newIndex[static_cast<std::size_t>(p)];
+            } else if (i == 3 && implicitPartnerOccurrence(p) >= 0) {
+                l[i] = newIndex[d];  // free in the map; the partner is an implicit cell
+                implicit.alpha3_occurrence[static_cast<std::size_t>(newIndex[d])] = static_cast<int>(implicitPartnerOccurrence(p));
             } else {
                 l[i] = newIndex[d];
                 if (i < 3) ++rep.output.unconnected_darts;
@@ -174,6 +189,37 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     }
     rep.timings_s.postprocess = secondsSince(t0);
 
+    // 3D position of grid point z in tet t by barycentric coordinates (exact zeros where a
+    // predicate puts z on a face); optionally the boundary halffaces through z.
+    auto gridPointPosition = [&](int t, const Vec3i& zi, std::array<int, 3>* boundaryHf) {
+        const TetSoS& T = tets[static_cast<std::size_t>(t)];
+        const auto& cv = mesh.cell_vertices(CellHandle(t));
+        const Vec3d z = toVec3d(zi);
+        const auto oz = T.sides(z);
+        const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
+        const double V = (e1 % e2) | e3;
+        double lam[4];
+        double sum = 0;
+        for (int j = 0; j < 4; ++j) {
+            if (oz[j] == 0) {
+                lam[j] = 0;
+                continue;
+            }
+            Vec3d q[4] = {T.p[0], T.p[1], T.p[2], T.p[3]};
+            q[j] = z;
+            lam[j] = std::max(0.0, (((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / V);
+            sum += lam[j];
+        }
+        Vec3d pos(0, 0, 0);
+        int nb = 0;
+        for (int j = 0; j < 4; ++j) {
+            pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
+            const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), j);
+            if (boundaryHf && oz[j] == 0 && mesh.is_boundary(hf) && nb < 3) (*boundaryHf)[nb++] = hf.idx();
+        }
+        return pos;
+    };
+
     // Geometry of the surviving darts.
     t0 = std::chrono::steady_clock::now();
     progress("vertices", 0);
@@ -196,32 +242,43 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                 }
             }
             prev = static_cast<long>(d);
-            const TetSoS& T = tets[static_cast<std::size_t>(D.tet)];
-            const auto& cv = mesh.cell_vertices(CellHandle(D.tet));
-            const Vec3d z = toVec3d(D.z);
-            const auto oz = T.sides(z);
-            // Barycentric coordinates: lambda_j = o_j(z) / V, exact zeros where o_j(z) = 0.
-            const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
-            const double V = (e1 % e2) | e3;
-            double lam[4];
-            double sum = 0;
-            for (int j = 0; j < 4; ++j) {
-                if (oz[j] == 0) { lam[j] = 0; continue; }
-                Vec3d q[4] = {T.p[0], T.p[1], T.p[2], T.p[3]};
-                q[j] = z;
-                lam[j] = std::max(0.0, (((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / V);
-                sum += lam[j];
-            }
-            Vec3d pos(0, 0, 0);
-            int nb = 0;
-            for (int j = 0; j < 4; ++j) {
-                pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
-                const HalfFaceHandle hf = TetMesh::halfface(CellHandle(D.tet), j);
-                if (oz[j] == 0 && mesh.is_boundary(hf) && nb < 3) geo.placement.boundary_hf[k][nb++] = hf.idx();
-            }
-            geo.placement.position[k] = pos;
+            geo.placement.position[k] = gridPointPosition(D.tet, D.z, &geo.placement.boundary_hf[k]);
+            if (useImplicit) implicit.dart_occurrence[k] = static_cast<int>(ds.occurrence(D.tet, D.z));
         }
+        if (useImplicit)  // darts of a run after the first: same occurrence
+            for (std::size_t d = b; d < e; ++d)
+                if (alive[d])
+                    implicit.dart_occurrence[static_cast<std::size_t>(newIndex[d])] =
+                        static_cast<int>(ds.occurrence(ds.darts[d].tet, ds.darts[d].z));
     });
+    if (useImplicit) {
+        // The implicit cells, as 8 corner occurrences in VTK order (the tet's chart is
+        // right-handed: proper tets only).
+        for (const auto& di : ds.dense) {
+            if (di.flags.empty()) continue;
+            const long dy = di.dims[1], dz = di.dims[2];
+            for (std::size_t l = 0; l < di.flags.size(); ++l) {
+                if (!(di.flags[l] & 2)) continue;
+                const long b = di.occ_base + static_cast<long>(l);
+                const long X = dy * dz, Y = dz, Z = 1;
+                implicit.cells.push_back({b, b + X, b + X + Y, b + Y, b + Z, b + X + Z, b + X + Y + Z, b + Y + Z});
+            }
+        }
+        implicit.position = [&](long occ) {
+            // The dense index holding this occurrence: the last with occ_base <= occ.
+            auto it = std::upper_bound(ds.dense.begin(), ds.dense.end(), occ,
+                                       [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; });
+            const DartSet::DenseIndex& di = *(it - 1);
+            long l = occ - di.occ_base;
+            Vec3i z;
+            z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
+            l /= di.dims[2];
+            z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
+            z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
+            return gridPointPosition(di.tet, z, nullptr);
+        };
+        rep.darts.implicit_cells = static_cast<long>(implicit.cells.size());
+    }
     rep.timings_s.vertices = secondsSince(t0);
     // The extracted darts and per-tet data are not needed any more: free them before the
     // assembly allocates its labels (peak memory).
@@ -236,7 +293,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     HexOrbitLabels labels;
     rep.validation = validateHexGMap(g, &labels, threads);
     AssemblyStats st;
-    output = assembleHexMesh(g, geo, labels, st);
+    output = assembleHexMesh(g, geo, labels, st, useImplicit ? &implicit : nullptr);
     rep.output.vertices = static_cast<long>(output.vertices.size());
     rep.output.hexes = static_cast<long>(output.hexes.size());
     rep.output.non_hex_cells = st.non_hex_cells;

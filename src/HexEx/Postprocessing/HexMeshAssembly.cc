@@ -20,14 +20,85 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 }
 } // namespace
 
-HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats) {
+/// Union-find with path halving.
+struct UnionFind {
+    std::vector<long> parent;
+    explicit UnionFind(std::size_t n) : parent(n) {
+        for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<long>(i);
+    }
+    long find(long x) {
+        while (parent[static_cast<std::size_t>(x)] != x) {
+            parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+            x = parent[static_cast<std::size_t>(x)];
+        }
+        return x;
+    }
+    void unite(long x, long y) {
+        x = find(x);
+        y = find(y);
+        if (x == y) return;
+        if (x < y) std::swap(x, y);
+        parent[static_cast<std::size_t>(x)] = y;  // the smaller index becomes the root
+    }
+};
+
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
+                        const ImplicitCells* implicit) {
     HexMesh out;
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
 
+    // Vertex classes: <alpha_1, alpha_2, alpha_3> orbits, joined with the occurrences the
+    // darts sit on or link to when cells are implicit. Numbered by first appearance (darts
+    // in order, then occurrences in order): the same as labelling orbits by smallest dart.
+    const std::size_t nd = g.n_darts();
+    const long nocc = implicit ? implicit->n_occurrences : 0;
     int nv = 0;
-    const std::vector<int> vlabel = labelOrbits(g, 0b1110, &nv);
+    std::vector<int> vlabel;
+    std::vector<int> occLabel;
+    if (!implicit) {
+        vlabel = labelOrbits(g, 0b1110, &nv);
+    } else {
+        UnionFind uf(nd + static_cast<std::size_t>(nocc));
+        std::vector<char> used(static_cast<std::size_t>(nocc), 0);
+        for (std::size_t d = 0; d < nd; ++d) {
+            if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
+            for (int i = 1; i < 4; ++i) uf.unite(static_cast<long>(d), a(static_cast<int>(d), i));
+            for (int o : {implicit->dart_occurrence[d], implicit->alpha3_occurrence[d]})
+                if (o >= 0) {
+                    uf.unite(static_cast<long>(d), static_cast<long>(nd) + o);
+                    used[static_cast<std::size_t>(o)] = 1;
+                }
+        }
+        for (const auto& c : implicit->cells)
+            for (long o : c) used[static_cast<std::size_t>(o)] = 1;
+        std::vector<int> rootLabel(nd + static_cast<std::size_t>(nocc), -1);
+        vlabel.assign(nd, -1);
+        occLabel.assign(static_cast<std::size_t>(nocc), -1);
+        auto labelOf = [&](long x) {
+            int& l = rootLabel[static_cast<std::size_t>(uf.find(x))];
+            if (l < 0) l = nv++;
+            return l;
+        };
+        for (std::size_t d = 0; d < nd; ++d)
+            if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(static_cast<long>(d));
+        for (long o = 0; o < nocc; ++o)
+            if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(static_cast<long>(nd) + o);
+    }
     out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement);
+    if (implicit) {
+        // Classes without darts: position of their occurrence.
+        std::vector<char> hasDart(static_cast<std::size_t>(nv), 0);
+        for (int l : vlabel)
+            if (l >= 0) hasDart[static_cast<std::size_t>(l)] = 1;
+        for (long o = 0; o < nocc; ++o) {
+            const int l = occLabel[static_cast<std::size_t>(o)];
+            if (l >= 0 && !hasDart[static_cast<std::size_t>(l)]) {
+                out.vertices[static_cast<std::size_t>(l)] = implicit->position(o);
+                hasDart[static_cast<std::size_t>(l)] = 1;
+            }
+        }
+    }
 
     int nq = 0;
     const std::vector<int>& flabel = labels.face;
@@ -36,13 +107,21 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const std::vector<int>& fsize = labels.face_size;
     const std::vector<int>& ksize = labels.corner_size;
     const int nc = static_cast<int>(labels.cell_size.size());
-    const std::vector<int> qlabel = labelOrbits(g, 0b1011, &nq);
-    stats.quads = nq;
-    {
+    if (!implicit) {
+        const std::vector<int> qlabel = labelOrbits(g, 0b1011, &nq);
+        stats.quads = nq;
         std::vector<char> bq(static_cast<std::size_t>(nq), 0);
         for (std::size_t d = 0; d < qlabel.size(); ++d)
             if (qlabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d)) bq[static_cast<std::size_t>(qlabel[d])] = 1;
         stats.boundary_quads = std::count(bq.begin(), bq.end(), 1);
+    } else {
+        // Boundary quads: faces with a free alpha_3 that is not a link into an implicit cell.
+        std::vector<char> bq(labels.face_size.size(), 0);
+        for (std::size_t d = 0; d < flabel.size(); ++d)
+            if (flabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d) && implicit->alpha3_occurrence[d] < 0)
+                bq[static_cast<std::size_t>(flabel[d])] = 1;
+        stats.boundary_quads = std::count(bq.begin(), bq.end(), 1);
+        // Quads are counted at the end from the cells: interior ones are shared by two.
     }
 
     std::vector<int> off, idx;
@@ -104,6 +183,16 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             continue;
         }
         out.polyhedra.push_back(std::move(poly));
+    }
+    if (implicit) {
+        for (const auto& c : implicit->cells) {
+            std::array<int, 8> h;
+            for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = occLabel[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
+            out.hexes.push_back(h);
+        }
+        long cellFaces = 6 * static_cast<long>(out.hexes.size());
+        for (const auto& p : out.polyhedra) cellFaces += static_cast<long>(p.faces.size());
+        stats.quads = (cellFaces + stats.boundary_quads) / 2;
     }
     stats.non_hex_cells = static_cast<long>(out.polyhedra.size()) + stats.collapsed_cells;
     return out;

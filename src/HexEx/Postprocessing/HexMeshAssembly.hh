@@ -9,6 +9,7 @@
 #include "../Mesh/HexMesh.hh"
 #include "VertexMerging.hh"
 
+#include <functional>
 #include <vector>
 
 namespace HexEx {
@@ -29,9 +30,24 @@ struct DartGeometry {
     std::vector<signed char> handedness;   ///< +1 if the dart's frame (d1, d2, d3) is right-handed
 };
 
+/// Unit cells produced without darts (DartSet::implicitCell()) and how the explicit darts
+/// meet them. Their corners are "occurrences": grid points strictly inside one tet.
+struct ImplicitCells {
+    long n_occurrences = 0;                       ///< number of occurrence ids
+    std::vector<int> dart_occurrence;             ///< per dart: occurrence of its own grid point, or -1
+    std::vector<int> alpha3_occurrence;           ///< per dart: occurrence of its implicit alpha_3 partner, or -1
+    /// The implicit cells, each as its 8 corner occurrences in VTK order.
+    std::vector<std::array<long, 8>> cells;
+    /// 3D position of an occurrence (used for vertices that no explicit dart touches).
+    std::function<Vec3d(long)> position;
+};
+
 /// Assembles vertices (one per <alpha_1, alpha_2, alpha_3> orbit, placed by
 /// mergedVertexPositions()), hexes in VTK order (from a right-handed dart of each cell) and polyhedra
 /// for every other cell. @p labels are the face, corner and cell orbits from validateHexGMap().
-HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats);
+/// With @p implicit, vertex classes also join darts to the occurrences they sit on or link
+/// to, and the implicit cells are appended as hexes.
+HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
+                        const ImplicitCells* implicit = nullptr);
 
 } // namespace HexEx
