@@ -83,15 +83,10 @@ public:
     template <class What>
     long long integer(const What& what) {
         const std::string_view tok = token(what);
-        const char* first = tok.data();
-        const char* last = first + tok.size();
-        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
         long long value = 0;
-        const auto res = std::from_chars(first, last, value);
-        if (res.ec == std::errc::result_out_of_range && res.ptr == last)
-            fail(line_, "integer " + quoteToken(tok) + " out of range for " + what());
-        if (res.ec != std::errc() || res.ptr != last)
-            fail(line_, "expected an integer for " + what() + ", got " + quoteToken(tok));
+        const detail::NumberParse r = detail::parseInteger(tok, value);
+        if (r == detail::NumberParse::OutOfRange) fail(line_, "integer " + quoteToken(tok) + " out of range for " + what());
+        if (r != detail::NumberParse::Ok) fail(line_, "expected an integer for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -99,19 +94,11 @@ public:
     template <class What>
     double real(const What& what) {
         const std::string_view tok = token(what);
-        const char* first = tok.data();
-        const char* last = first + tok.size();
-        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
         double value = 0;
-        const auto res = std::from_chars(first, last, value, std::chars_format::general);
-        if (res.ec == std::errc::result_out_of_range && res.ptr == last) {
-            // Underflow (e.g. 1e-400) rounds to zero as strtod does; overflow is an error.
-            value = std::strtod(std::string(first, last).c_str(), nullptr);
-            if (std::isinf(value)) fail(line_, "number " + quoteToken(tok) + " out of double range for " + what());
-            return value;
-        }
-        if (res.ec != std::errc() || res.ptr != last)
-            fail(line_, "expected a number for " + what() + ", got " + quoteToken(tok));
+        const detail::NumberParse r = detail::parseReal(tok, value);
+        if (r == detail::NumberParse::OutOfRange)
+            fail(line_, "number " + quoteToken(tok) + " out of double range for " + what());
+        if (r != detail::NumberParse::Ok) fail(line_, "expected a number for " + what() + ", got " + quoteToken(tok));
         if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoteToken(tok) + " for " + what());
         return value;
     }

@@ -116,15 +116,10 @@ public:
     template <class What>
     long long integer(std::size_t i, const What& what) const {
         const std::string_view tok = tokens_[i];
-        const char* first = tok.data();
-        const char* last = first + tok.size();
-        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
         long long value = 0;
-        const auto res = std::from_chars(first, last, value);
-        if (res.ec == std::errc::result_out_of_range && res.ptr == last)
-            fail(lineNo_, "integer " + quoteToken(tok) + " out of range for " + what());
-        if (res.ec != std::errc() || res.ptr != last)
-            fail(lineNo_, "expected an integer for " + what() + ", got " + quoteToken(tok));
+        const detail::NumberParse r = detail::parseInteger(tok, value);
+        if (r == detail::NumberParse::OutOfRange) fail(lineNo_, "integer " + quoteToken(tok) + " out of range for " + what());
+        if (r != detail::NumberParse::Ok) fail(lineNo_, "expected an integer for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -137,22 +132,15 @@ public:
         return static_cast<int>(v);
     }
 
-    /// Token @p i as a double; NaN and infinity are returned as such (callers decide).
+    /// Token @p i as a double; NaN and infinity (also from overflow) are returned as such (callers decide).
     template <class What>
     double real(std::size_t i, const What& what) const {
         const std::string_view tok = tokens_[i];
-        const char* first = tok.data();
-        const char* last = first + tok.size();
-        if (first != last && *first == '+' && last - first > 1 && first[1] != '-') ++first;
         double value = 0;
-        const auto res = std::from_chars(first, last, value, std::chars_format::general);
-        if (res.ec == std::errc::result_out_of_range && res.ptr == last) {
-            value = std::strtod(std::string(first, last).c_str(), nullptr);  // underflow -> 0, overflow -> inf
-            return value;
-        }
-        if (res.ec != std::errc() || res.ptr != last)
+        const detail::NumberParse r = detail::parseReal(tok, value);
+        if (r == detail::NumberParse::Malformed)
             fail(lineNo_, "expected a number for " + what() + ", got " + quoteToken(tok));
-        return value;
+        return value;  // OutOfRange: value is +-HUGE_VAL, rejected by finite()
     }
 
     /// Token @p i as a finite double.
