@@ -100,4 +100,16 @@ double parseDouble(const std::string& text, double lo, double hi, const std::str
 
 bool stderrIsTerminal() { return ::isatty(2) != 0; }
 
+InputAndJson parseInputAndJson(const Args& args) {
+    const ParsedArgs pa = parseArgs(args, {{"--json", false, ""}});
+    InputAndJson r;
+    r.help = pa.has("--help");
+    if (r.help) return r;
+    if (pa.positional.size() > 1) throw UsageError("more than one input file given");
+    if (pa.positional.empty()) throw UsageError("no input file given");
+    r.input = pa.positional[0];
+    r.json = pa.has("--json");
+    return r;
+}
+
 } // namespace HexExTool

@@ -53,6 +53,16 @@ public:
 ///         options repeated.
 ParsedArgs parseArgs(const Args& args, const std::vector<OptionSpec>& spec);
 
+/// Arguments of the commands that take one input file and an optional `--json`.
+struct InputAndJson {
+    std::string input;  ///< the input file
+    bool json = false;  ///< --json given
+    bool help = false;  ///< -h/--help given (nothing else is checked then)
+};
+
+/// Parses `IN [--json]`. @throws UsageError for unknown options, no input or several inputs.
+InputAndJson parseInputAndJson(const Args& args);
+
 /// Parses a whole string as an integer in [@p lo, @p hi]; @p what names it in the message.
 /// @throws UsageError otherwise.
 long parseInt(const std::string& text, long lo, long hi, const std::string& what);

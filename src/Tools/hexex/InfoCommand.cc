@@ -34,15 +34,13 @@ int runInfo(const Args& args) {
     std::string input;
     bool json = false;
     try {
-        const ParsedArgs pa = parseArgs(args, {{"--json", false, ""}});
-        if (pa.has("--help")) {
+        const InputAndJson a = parseInputAndJson(args);
+        if (a.help) {
             std::cout << kInfoUsage;
             return 0;
         }
-        if (pa.positional.size() > 1) throw UsageError("more than one input file given");
-        if (pa.positional.empty()) throw UsageError("no input file given");
-        input = pa.positional[0];
-        json = pa.has("--json");
+        input = a.input;
+        json = a.json;
     } catch (const UsageError& e) {
         std::cerr << "hexex info: " << e.what() << "\n" << kInfoUsage;
         return 2;

@@ -41,15 +41,13 @@ int runValidate(const Args& args) {
     std::string input;
     bool json = false;
     try {
-        const ParsedArgs pa = parseArgs(args, {{"--json", false, ""}});
-        if (pa.has("--help")) {
+        const InputAndJson a = parseInputAndJson(args);
+        if (a.help) {
             std::cout << kValidateUsage;
             return 0;
         }
-        if (pa.positional.size() > 1) throw UsageError("more than one input file given");
-        if (pa.positional.empty()) throw UsageError("no input file given");
-        input = pa.positional[0];
-        json = pa.has("--json");
+        input = a.input;
+        json = a.json;
     } catch (const UsageError& e) {
         std::cerr << "hexex validate: " << e.what() << "\n" << kValidateUsage;
         return 2;
