@@ -105,12 +105,14 @@ TEST(SymbolicPerturbation, EveryFrameHasExactlyOneOwnerAroundAnEdge) {
     const Vec3d c[8] = {Vec3d(0, 0, 0), Vec3d(2, 0, 0), Vec3d(0, 2, 0), Vec3d(2, 2, 0),
                         Vec3d(0, 0, 2), Vec3d(2, 0, 2), Vec3d(0, 2, 2), Vec3d(2, 2, 2)};
     const int paths[6][4] = {{0, 1, 3, 7}, {0, 1, 5, 7}, {0, 2, 3, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 4, 6, 7}};
-    std::vector<TetSoS> tets;
+    std::vector<std::array<Vec3d, 4>> corners;  // TetSoS refers to these: keep them alive
     for (const auto& p : paths) {
         std::array<Vec3d, 4> q = {c[p[0]], c[p[1]], c[p[2]], c[p[3]]};
         if (orient3d(q[0], q[1], q[2], q[3]) < 0) std::swap(q[2], q[3]);
-        tets.emplace_back(q);
+        corners.push_back(q);
     }
+    std::vector<TetSoS> tets;
+    for (const auto& q : corners) tets.emplace_back(q);
     const Vec3d z(1, 1, 1);
     for (int a = 0; a < 6; ++a)
         for (int b = 0; b < 6; ++b)

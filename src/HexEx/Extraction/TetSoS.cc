@@ -16,7 +16,7 @@ int permSign(int a, int b, int c, int d) {
 int signOf(double x) { return (x > 0) - (x < 0); }
 } // namespace
 
-TetSoS::TetSoS(const std::array<Vec3d, 4>& corners) : p(corners) {
+TetSoS::TetSoS(const std::array<Vec3d, 4>& corners) : p(corners.data()) {
     vol = orient3d(p[0], p[1], p[2], p[3]);
     for (int j = 0; j < 4; ++j) {
         int o[3], n = 0;

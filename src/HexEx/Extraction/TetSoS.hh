@@ -16,13 +16,13 @@ namespace HexEx {
 /// corner j replaced by x (the barycentric numerator of corner j); x is inside iff every
 /// o_j(x) has the sign of the tet's volume.
 struct TetSoS {
-    std::array<Vec3d, 4> p;    ///< corner parameters
+    const Vec3d* p = nullptr;  ///< the four corner parameters (not owned: they must outlive this object)
     int vol = 0;               ///< sign of the parameter volume (+1 proper, -1 flipped, 0 degenerate)
     std::int8_t g[4][3] = {};  ///< sign of d o_j / d x_k (the gradient of o_j), exact
 
     /// Empty data (degenerate).
     TetSoS() = default;
-    /// Fills the data for corners @p corners.
+    /// Fills the data for @p corners, which must stay alive (and unchanged) while this is used.
     explicit TetSoS(const std::array<Vec3d, 4>& corners);
     /// Sign of o_j(x), exact.
     int side(int j, const Vec3d& x) const;
