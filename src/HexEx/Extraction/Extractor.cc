@@ -293,7 +293,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     HexOrbitLabels labels;
     rep.validation = validateHexGMap(g, &labels, threads);
     AssemblyStats st;
-    output = assembleHexMesh(g, geo, labels, st, useImplicit ? &implicit : nullptr);
+    output = assembleHexMesh(g, geo, labels, st, useImplicit ? &implicit : nullptr, threads);
     rep.output.vertices = static_cast<long>(output.vertices.size());
     rep.output.hexes = static_cast<long>(output.hexes.size());
     rep.output.non_hex_cells = st.non_hex_cells;

@@ -1,5 +1,6 @@
 #include "HexMeshAssembly.hh"
 
+#include "../Core/Parallel.hh"
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
@@ -43,7 +44,7 @@ struct UnionFind {
 };
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit) {
+                        const ImplicitCells* implicit, int threads) {
     HexMesh out;
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -56,8 +57,16 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     int nv = 0;
     std::vector<int> vlabel;
     std::vector<int> occLabel;
+    int nq = 0;
+    std::vector<int> qlabel;
     if (!implicit) {
-        vlabel = labelOrbits(g, 0b1110, &nv);
+        // Vertex and quad orbits are independent labellings.
+        parallelChunks(2, std::min(2, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t job = b; job < e; ++job) {
+                if (job == 0) vlabel = labelOrbits(g, 0b1110, &nv);
+                else qlabel = labelOrbits(g, 0b1011, &nq);
+            }
+        });
     } else {
         UnionFind uf(nd + static_cast<std::size_t>(nocc));
         std::vector<char> used(static_cast<std::size_t>(nocc), 0);
@@ -100,7 +109,6 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         }
     }
 
-    int nq = 0;
     const std::vector<int>& flabel = labels.face;
     const std::vector<int>& clabel = labels.cell;
     const std::vector<int>& klabel = labels.corner;
@@ -108,7 +116,6 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const std::vector<int>& ksize = labels.corner_size;
     const int nc = static_cast<int>(labels.cell_size.size());
     if (!implicit) {
-        const std::vector<int> qlabel = labelOrbits(g, 0b1011, &nq);
         stats.quads = nq;
         std::vector<char> bq(static_cast<std::size_t>(nq), 0);
         for (std::size_t d = 0; d < qlabel.size(); ++d)

@@ -47,7 +47,8 @@ struct ImplicitCells {
 /// for every other cell. @p labels are the face, corner and cell orbits from validateHexGMap().
 /// With @p implicit, vertex classes also join darts to the occurrences they sit on or link
 /// to, and the implicit cells are appended as hexes.
+/// @p threads lets independent labellings run side by side (the result does not depend on it).
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit = nullptr);
+                        const ImplicitCells* implicit = nullptr, int threads = 1);
 
 } // namespace HexEx
