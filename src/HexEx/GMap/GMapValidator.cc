@@ -39,6 +39,37 @@ std::vector<int> labelBy(const GMap<3>& g, int n_gen, Next next, std::vector<int
     return label;
 }
 
+/// Labels the orbits of two involutions a, b: each orbit is a path or a cycle that
+/// alternates a and b, so it is walked once in each direction instead of searched.
+/// Same labels as labelBy() whenever a and b are involutions.
+template <class A, class B>
+std::vector<int> labelAlternating(const GMap<3>& g, A fa, B fb, std::vector<int>& size) {
+    const std::size_t n = g.n_darts();
+    std::vector<int> label(n, -1);
+    size.clear();
+    auto usable = [&](int x) { return x >= 0 && static_cast<std::size_t>(x) < n && g.is_alive(DartHandle(x)); };
+    for (std::size_t s = 0; s < n; ++s) {
+        if (!g.is_alive(DartHandle(static_cast<int>(s))) || label[s] >= 0) continue;
+        const int l = static_cast<int>(size.size());
+        int count = 1;
+        label[s] = l;
+        for (int firstA = 1; firstA >= 0; --firstA) {  // forward starting with a, then backward with b
+            int cur = static_cast<int>(s);
+            bool useA = firstA != 0;
+            while (true) {
+                const int nx = useA ? fa(cur) : fb(cur);
+                if (!usable(nx) || nx == cur || label[static_cast<std::size_t>(nx)] >= 0) break;
+                label[static_cast<std::size_t>(nx)] = l;
+                ++count;
+                cur = nx;
+                useA = !useA;
+            }
+        }
+        size.push_back(count);
+    }
+    return label;
+}
+
 } // namespace
 
 std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
@@ -102,9 +133,10 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     std::vector<int> l01, l12, l0121, l012, s01, s12, s0121, size;
     parallelChunks(4, std::min(4, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
         for (std::size_t job = b; job < e; ++job) {
-            if (job == 0) l01 = labelBy(g, 2, [&](int d, int k) { return a(d, k); }, s01);
-            if (job == 1) l12 = labelBy(g, 2, [&](int d, int k) { return a(d, k + 1); }, s12);
-            if (job == 2) l0121 = labelBy(g, 2, [&](int d, int k) { return k == 0 ? a(d, 0) : a(a(a(d, 1), 2), 1); }, s0121);
+            if (job == 0) l01 = labelAlternating(g, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); }, s01);
+            if (job == 1) l12 = labelAlternating(g, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); }, s12);
+            if (job == 2)
+                l0121 = labelAlternating(g, [&](int d) { return a(d, 0); }, [&](int d) { return a(a(a(d, 1), 2), 1); }, s0121);
             if (job == 3) l012 = labelBy(g, 3, [&](int d, int k) { return a(d, k); }, size);
         }
     });
