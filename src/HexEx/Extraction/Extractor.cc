@@ -1,5 +1,6 @@
 #include "../HexEx.hh"
 
+#include "../Core/CompensatedSum.hh"
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
@@ -85,12 +86,14 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     rep.input.singular_edges = static_cast<long>(sing.edges.size());
     rep.input.singular_vertices = static_cast<long>(sing.vertices.size());
     const std::vector<TetSoS> tets = buildTetSoS(params, threads);
+    CompensatedSum volume6;
     for (const auto& T : tets) {
         if (T.vol < 0) ++rep.input.flipped_tets;
         if (T.vol == 0) ++rep.input.degenerate_tets;
         const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
-        rep.input.parametric_volume += ((e1 % e2) | e3) / 6.0;
+        volume6.add((e1 % e2) | e3);
     }
+    rep.input.parametric_volume = volume6.value() / 6.0;
     if (tr.n_unresolved > 0)
         rep.warnings.push_back(std::to_string(tr.n_unresolved) + " transitions on degenerate faces could not be resolved from their neighbours");
     rep.timings_s.preprocess = secondsSince(t0);

@@ -3,6 +3,8 @@
 
 #include "MapStatistics.hh"
 
+#include "../Core/CompensatedSum.hh"
+
 #include "../Predicates/ExactPredicates.hh"
 
 #include <algorithm>
@@ -45,8 +47,7 @@ MapStatistics computeMapStatistics(const ParametrizedTetMesh& pm) {
     s.boundary_faces = mesh.has_adjacency() ? mesh.n_boundary_faces() : countBoundaryFaces(mesh);
 
     bool first = true;
-    // Neumaier-compensated sum: the volume of a large map stays exact to the last digits.
-    double volume6 = 0, compensation = 0;
+    CompensatedSum volume6;  // the volume of a large map stays exact to the last digits
     const std::size_t n = std::min(pm.params.size(), mesh.n_cells());
     for (std::size_t c = 0; c < n; ++c) {
         const auto& p = pm.params[c];
@@ -54,9 +55,7 @@ MapStatistics computeMapStatistics(const ParametrizedTetMesh& pm) {
         if (sign < 0) ++s.flipped_tets;
         if (sign == 0) ++s.degenerate_tets;
         const double det = ((p[1] - p[0]) % (p[2] - p[0])) | (p[3] - p[0]);
-        const double t = volume6 + det;
-        compensation += std::abs(volume6) >= std::abs(det) ? (volume6 - t) + det : (det - t) + volume6;
-        volume6 = t;
+        volume6.add(det);
         for (const auto& q : p) {
             if (first) {
                 s.param_bbox_min = s.param_bbox_max = q;
@@ -67,7 +66,7 @@ MapStatistics computeMapStatistics(const ParametrizedTetMesh& pm) {
             }
         }
     }
-    s.parametric_volume = (volume6 + compensation) / 6.0;
+    s.parametric_volume = volume6.value() / 6.0;
     return s;
 }
 
