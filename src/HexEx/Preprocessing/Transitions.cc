@@ -83,7 +83,11 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     Transitions out;
     const std::size_t nhf = mesh.n_halffaces();
     out.halfface.assign(nhf, GridTransform());
-    std::vector<FaceFit> fits(nhf);
+    // Fits are kept only for the (rare) ambiguous faces, sorted by halfface.
+    std::vector<std::pair<std::size_t, FaceFit>> fits;
+    auto fitOf = [&](std::size_t h) -> const FaceFit& {
+        return std::lower_bound(fits.begin(), fits.end(), h, [](const auto& x, std::size_t k) { return x.first < k; })->second;
+    };
     std::vector<char> decided(nhf, 1);
 
     auto setTransition = [&](std::size_t h, int rot) {
@@ -107,6 +111,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     // that halfface and its opposite only, so chunks never touch the same entries.
     const int chunks = std::max(1, threads);
     std::vector<int> ambiguous(static_cast<std::size_t>(chunks), 0);
+    std::vector<std::vector<std::pair<std::size_t, FaceFit>>> ambiguousFits(static_cast<std::size_t>(chunks));
     parallelChunks(nhf, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
             const HalfFaceHandle hf(static_cast<int>(h));
@@ -123,16 +128,18 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                 u[k] = params[c.uidx()][lc];
                 w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
             }
-            fits[h] = fitFace(u, w);
-            if (fits[h].ambiguous) {
+            const FaceFit fit = fitFace(u, w);
+            if (fit.ambiguous) {
+                ambiguousFits[static_cast<std::size_t>(chunk)].emplace_back(h, fit);
                 ++ambiguous[static_cast<std::size_t>(chunk)];
                 decided[h] = decided[opp.uidx()] = 0;
             } else {
-                setTransition(h, fits[h].best);
+                setTransition(h, fit.best);
             }
         }
     });
     for (int a : ambiguous) out.n_ambiguous += a;
+    for (auto& part : ambiguousFits) fits.insert(fits.end(), part.begin(), part.end());  // chunks are in halfface order
     if (out.n_ambiguous == 0) return out;
 
     // Resolve ambiguous faces from edge consistency: the rotation that makes the holonomy
@@ -171,7 +178,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                 if (!known || ring.first[cur] != c.idx()) continue;
                 // A maps chart c2 -> chart c; the loop c -> c2 -> c is trivial iff X = A^-1.
                 const int want = A.R.inverse().index();
-                if (fits[h].candidates & (1u << want)) {
+                if (fitOf(h).candidates & (1u << want)) {
                     setTransition(h, want);
                     progress = true;
                 }
@@ -183,7 +190,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);
         if (decided[h] || opp.idx() < hf.idx()) continue;
         ++out.n_unresolved;
-        setTransition(h, (fits[h].candidates & 1u) ? 0 : fits[h].best);
+        setTransition(h, (fitOf(h).candidates & 1u) ? 0 : fitOf(h).best);
     }
     return out;
 }
