@@ -221,7 +221,8 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
 
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
-                                                  int threads, TraceStats& stats) {
+                                                  int threads, TraceStats& stats,
+                                                  const std::function<void(double)>& progress) {
     const std::size_t n = darts.darts.size();
     if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
@@ -230,13 +231,15 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;  // local: per-chunk counters next to each other would share cache lines
-        for (std::size_t d = b; d < e; ++d)
+        for (std::size_t d = b; d < e; ++d) {
+            if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(static_cast<double>(d - b) / static_cast<double>(e - b));
             for (int i = 0; i < 4; ++i) {
                 const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
                 alpha[d][i] = static_cast<int>(p);
                 if (p == kUnconnected) ++st.unconnected[i];
                 else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
             }
+        }
         part[static_cast<std::size_t>(k)] = st;
     });
     for (const auto& p : part) {

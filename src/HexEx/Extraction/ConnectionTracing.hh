@@ -9,6 +9,7 @@
 #include "DartExtraction.hh"
 
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace HexEx {
@@ -34,8 +35,11 @@ struct TraceStats {
 /// kUnconnected marks a failure; values <= -2 are partners in implicit cells
 /// (implicitPartnerOccurrence()). Deterministic for any thread count. Throws InputError if
 /// there are more darts than an int can index.
+/// @p progress, if set, is called from the calling thread with the fraction done (of the
+/// first chunk, a good estimate of the whole).
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
-                                                  int threads, TraceStats& stats);
+                                                  int threads, TraceStats& stats,
+                                                  const std::function<void(double)>& progress = {});
 
 } // namespace HexEx

@@ -121,7 +121,8 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     t0 = std::chrono::steady_clock::now();
     progress("connect", 0);
     TraceStats ts;
-    std::vector<DartLinks> alpha = traceConnections(mesh, tr, tets, ds, threads, ts);
+    std::vector<DartLinks> alpha =
+        traceConnections(mesh, tr, tets, ds, threads, ts, [&](double f) { progress("connect", f); });
     // Keep only mutual links.
     for (std::size_t d = 0; d < nd; ++d)
         for (int i = 0; i < 4; ++i) {
