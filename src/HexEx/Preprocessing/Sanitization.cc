@@ -17,12 +17,14 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     parallelChunks(mesh.n_vertices(), chunks, [&](int chunk, std::size_t vbegin, std::size_t vend) {
     std::vector<int> star;                 // cells around the vertex, BFS order
     std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
-    auto visited = [&](int c) { return std::find(star.begin(), star.end(), c) != star.end(); };
+    // mark[c] == v: cell c already in the star of vertex v (O(1) instead of a search).
+    std::vector<int> mark(mesh.n_cells(), -1);
     for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
         star.assign(1, *cells.first);
+        mark[static_cast<std::size_t>(*cells.first)] = static_cast<int>(vi);
         toChart.assign(1, GridTransform());
         for (std::size_t q = 0; q < star.size(); ++q) {
             const CellHandle c(star[q]);
@@ -32,7 +34,8 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                 const HalfFaceHandle o = mesh.opposite_halfface(hf);
                 if (!o.is_valid()) continue;
                 const int n = TetMesh::cell(o).idx();
-                if (visited(n)) continue;
+                if (mark[static_cast<std::size_t>(n)] == static_cast<int>(vi)) continue;
+                mark[static_cast<std::size_t>(n)] = static_cast<int>(vi);
                 star.push_back(n);
                 toChart.push_back(tr.halfface[hf.uidx()] * toChart[q]);
             }
