@@ -229,19 +229,51 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     std::vector<DartLinks> alpha(n);
     const int chunks = std::max(1, threads);
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
+    // alpha_0 and alpha_3 are the expensive traces (they cross tets). Pass 1 traces them only
+    // from the darts whose d1 (alpha_0) or d3 (alpha_3) points in the positive axis direction
+    // of their own chart; a found partner that is still pending gets the link back in a
+    // sequential pass; pass 2 traces whatever is still pending (partners seen through a
+    // transition that flips the direction, boundaries, failures).
+    constexpr int kPending = std::numeric_limits<int>::min();
+    auto deferred = [&](std::size_t d, int i) {
+        const auto& f = darts.darts[d].d;
+        return (i == 0 && dirSign(f[0]) < 0) || (i == 3 && dirSign(f[2]) < 0);
+    };
+    auto record = [&](TraceStats& st, std::size_t d, int i, long p) {
+        alpha[d][i] = static_cast<int>(p);
+        if (p == kUnconnected) ++st.unconnected[i];
+        else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
+    };
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;  // local: per-chunk counters next to each other would share cache lines
         for (std::size_t d = b; d < e; ++d) {
-            if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(static_cast<double>(d - b) / static_cast<double>(e - b));
+            if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
             for (int i = 0; i < 4; ++i) {
-                const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
-                alpha[d][i] = static_cast<int>(p);
-                if (p == kUnconnected) ++st.unconnected[i];
-                else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
+                if (deferred(d, i)) {
+                    alpha[d][i] = kPending;
+                    continue;
+                }
+                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
             }
         }
         part[static_cast<std::size_t>(k)] = st;
     });
+    for (std::size_t d = 0; d < n; ++d)
+        for (int i : {0, 3}) {
+            if (deferred(d, i)) continue;
+            const int p = alpha[d][i];
+            if (p >= 0 && static_cast<std::size_t>(p) != d && alpha[static_cast<std::size_t>(p)][i] == kPending)
+                alpha[static_cast<std::size_t>(p)][i] = static_cast<int>(d);
+        }
+    std::vector<TraceStats> part2(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        TraceStats st;
+        for (std::size_t d = b; d < e; ++d)
+            for (int i : {0, 3})
+                if (alpha[d][i] == kPending) record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
+        part2[static_cast<std::size_t>(k)] = st;
+    });
+    part.insert(part.end(), part2.begin(), part2.end());
     for (const auto& p : part) {
         for (int i = 0; i < 4; ++i) stats.unconnected[i] += p.unconnected[i];
         stats.boundary_alpha3 += p.boundary_alpha3;
