@@ -11,6 +11,11 @@ namespace {
 
 /// Distinct positions (the darts of one h-vertex agree up to rounding in their tets).
 std::vector<Vec3d> distinctPositions(std::vector<Vec3d> p, double tol) {
+    // Common case: every dart of the class computed the very same position.
+    if (std::all_of(p.begin(), p.end(), [&](const Vec3d& x) { return x == p.front(); })) {
+        p.resize(std::min<std::size_t>(p.size(), 1));
+        return p;
+    }
     std::sort(p.begin(), p.end(), [](const Vec3d& a, const Vec3d& b) {
         return a[0] != b[0] ? a[0] < b[0] : a[1] != b[1] ? a[1] < b[1] : a[2] < b[2];
     });
