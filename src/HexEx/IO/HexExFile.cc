@@ -2,6 +2,7 @@
 /// Implementation of the `.hexex` reader (in-memory tokenizer with std::from_chars) and writer.
 
 #include "HexExFile.hh"
+#include "ReaderSupport.hh"
 #include "TextParsing.hh"
 
 #include "../Core/Error.hh"
@@ -250,13 +251,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         warnings.push_back(name + ": " + std::to_string(nUnused) + " of " + std::to_string(positions.size()) +
                            " vertices are not used by any tet");
 
-    try {
-        pm.mesh.build_adjacency();
-    } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
-    }
-    const std::string manifold = pm.mesh.check_manifold();
-    if (!manifold.empty()) throw InputError(name + ": " + manifold);
+    detail::finishTetMesh(pm, name);
 
     if (report) {
         report->reoriented = reoriented;
@@ -266,16 +261,11 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
 }
 
 ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, ReadReport* report) {
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw InputError(name + ": read error");
-    return readHexExBuffer(text, name, report);
+    return readHexExBuffer(detail::readWholeStream(in, name), name, report);
 }
 
 ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file: is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
+    std::ifstream in = detail::openInputFile(path);
     std::string text;
     in.seekg(0, std::ios::end);
     const std::streamoff size = in.tellg();

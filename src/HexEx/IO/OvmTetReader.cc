@@ -4,6 +4,7 @@
 /// from their halffaces.
 
 #include "OvmTetReader.hh"
+#include "ReaderSupport.hh"
 #include "TextParsing.hh"
 
 #include "../Core/Error.hh"
@@ -504,29 +505,18 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& n
     if (nUnused > 0)
         warnings.push_back(name + ": " + std::to_string(nUnused) + " of " + std::to_string(positions.size()) +
                            " vertices are not used by any tet");
-    try {
-        pm.mesh.build_adjacency();
-    } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
-    }
-    const std::string manifold = pm.mesh.check_manifold();
-    if (!manifold.empty()) throw InputError(name + ": " + manifold);
+    detail::finishTetMesh(pm, name);
 
     if (report) report->warnings.insert(report->warnings.end(), warnings.begin(), warnings.end());
     return pm;
 }
 
 ParametrizedTetMesh readOvmTetStream(std::istream& in, const std::string& name, ReadReport* report) {
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    if (in.bad()) throw InputError(name + ": read error");
-    return readOvmTetBuffer(text, name, report);
+    return readOvmTetBuffer(detail::readWholeStream(in, name), name, report);
 }
 
 ParametrizedTetMesh readOvmTetMesh(const std::string& path, ReadReport* report) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file: is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
+    std::ifstream in = detail::openInputFile(path);
     return readOvmTetStream(in, path, report);
 }
 

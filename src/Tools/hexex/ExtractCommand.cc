@@ -283,27 +283,23 @@ int runExtract(const Args& args) {
     // Write.
     progress.update("write", 0);
     t0 = std::chrono::steady_clock::now();
-    try {
-        for (const auto& w : HexEx::writeHexMesh(output, hm)) {
-            if (!quiet) std::cerr << "hexex extract: warning: " << w << "\n";
-            extras.warnings.push_back(w);
-        }
-    } catch (const std::exception& e) {
-        progress.finish();
-        std::cerr << "hexex extract: error: " << e.what() << "\n";
-        return 2;
-    }
-    if (!surface_path.empty()) {
+    // Runs one writer; its warnings go to stderr and the report. False on failure.
+    auto write = [&](auto&& writer) {
         try {
-            for (const auto& w : HexEx::writeBoundarySurface(surface_path, hm)) {
+            for (const auto& w : writer()) {
                 if (!quiet) std::cerr << "hexex extract: warning: " << w << "\n";
                 extras.warnings.push_back(w);
             }
+            return true;
         } catch (const std::exception& e) {
             progress.finish();
             std::cerr << "hexex extract: error: " << e.what() << "\n";
-            return 2;
+            return false;
         }
+    };
+    if (!write([&] { return HexEx::writeHexMesh(output, hm); })) return 2;
+    if (!surface_path.empty()) {
+        if (!write([&] { return HexEx::writeBoundarySurface(surface_path, hm); })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";
     }
     extras.write_s = secondsSince(t0);

@@ -1,0 +1,49 @@
+#pragma once
+/// @file ReaderSupport.hh
+/// Steps shared by the tet-mesh readers (.hexex, .ovm): reading a whole stream, opening an
+/// input file with a clear error, and finishing the mesh (adjacency and manifoldness).
+
+#include "../Core/Error.hh"
+#include "../Mesh/ParametrizedTetMesh.hh"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <system_error>
+
+namespace HexEx {
+namespace detail {
+
+/// The rest of @p in as a string; InputError "<name>: read error" on failure.
+inline std::string readWholeStream(std::istream& in, const std::string& name) {
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (in.bad()) throw InputError(name + ": read error");
+    return text;
+}
+
+/// Opens @p path for binary reading; InputError "<path>: cannot open file: <reason>".
+inline std::ifstream openInputFile(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw InputError(path + ": cannot open file: is a directory");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
+    return in;
+}
+
+/// Builds the adjacency of a freshly read mesh and checks that it is a manifold; errors
+/// are prefixed with the file @p name.
+inline void finishTetMesh(ParametrizedTetMesh& pm, const std::string& name) {
+    try {
+        pm.mesh.build_adjacency();
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
+    const std::string manifold = pm.mesh.check_manifold();
+    if (!manifold.empty()) throw InputError(name + ": " + manifold);
+}
+
+} // namespace detail
+} // namespace HexEx
