@@ -69,7 +69,7 @@ ExtractionReport extractAndCheck(ParametrizedTetMesh pm, const Expect& ex, HexMe
     }
     EXPECT_EQ(r.output.non_hex_cells, 0);
     EXPECT_EQ(r.output.unconnected_darts, 0);
-    EXPECT_EQ(r.darts.extracted, 48 * ex.hexes);
+    EXPECT_EQ(r.darts.extracted + 48 * r.darts.implicit_cells, 48 * ex.hexes);
     EXPECT_TRUE(r.validation.valid()) << r.validation.summary();
     EXPECT_TRUE(r.valid_all_hex);
     long over = 0, badEdges = 0, bq = 0;
@@ -236,48 +236,77 @@ TEST(ExtractGivenRotations, HalffacePropertyIsUsedAndChecked) {
     }
 }
 
+/// Extracts @p pm with and without implicit cells and expects the same mesh: counts,
+/// vertex positions (as sets), validity, a manifold boundary, and the same output for 2 threads.
+/// Returns the report with implicit cells.
+ExtractionReport expectSameWithAndWithoutImplicitCells(ParametrizedTetMesh pm, long hexes, HexMesh& on) {
+    pm.mesh.build_adjacency();
+    HexMesh off;
+    ExtractionOptions o;
+    const auto r1 = extractHexMesh(pm, on, o);
+    o.implicit_cells = false;
+    const auto r0 = extractHexMesh(pm, off, o);
+    EXPECT_GT(r1.darts.implicit_cells, 0);
+    EXPECT_EQ(r0.darts.implicit_cells, 0);
+    EXPECT_EQ(r1.darts.extracted + 48 * r1.darts.implicit_cells, r0.darts.extracted);
+    EXPECT_EQ(r1.output.hexes, hexes);
+    EXPECT_EQ(r1.output.hexes, r0.output.hexes);
+    EXPECT_EQ(r1.output.vertices, r0.output.vertices);
+    EXPECT_EQ(r1.output.quads, r0.output.quads);
+    EXPECT_EQ(r1.output.boundary_quads, r0.output.boundary_quads);
+    EXPECT_TRUE(r1.valid_all_hex) << r1.validation.summary();
+    long over = 0, badEdges = 0, bq = 0;
+    checkQuadManifold(on, over, badEdges, bq);
+    EXPECT_EQ(over, 0);
+    EXPECT_EQ(badEdges, 0);
+    EXPECT_EQ(bq, r1.output.boundary_quads);
+    auto sorted = [](std::vector<Vec3d> v) {
+        std::sort(v.begin(), v.end(), [](const Vec3d& a, const Vec3d& b) {
+            return a[0] != b[0] ? a[0] < b[0] : a[1] != b[1] ? a[1] < b[1] : a[2] < b[2];
+        });
+        return v;
+    };
+    const auto p1 = sorted(on.vertices), p0 = sorted(off.vertices);
+    EXPECT_EQ(p1.size(), p0.size());
+    for (std::size_t i = 0; i < std::min(p1.size(), p0.size()); ++i) EXPECT_LT((p1[i] - p0[i]).norm(), 1e-12);
+    HexMesh two;
+    o.implicit_cells = true;
+    o.threads = 2;
+    extractHexMesh(pm, two, o);
+    EXPECT_EQ(two.hexes, on.hexes);
+    EXPECT_TRUE(std::equal(two.vertices.begin(), two.vertices.end(), on.vertices.begin(), on.vertices.end()));
+    return r1;
+}
+
 TEST(ExtractImplicitCells, SameMeshWithAndWithoutDarts) {
     for (int k : {3, 4, 5, 6}) {
         SCOPED_TRACE("valence " + std::to_string(k));
-        auto pm = generateCylinder(k, 8, 8, 1, 1);
-        pm.mesh.build_adjacency();
-        HexMesh on, off;
-        ExtractionOptions o;
-        const auto r1 = extractHexMesh(pm, on, o);
-        o.implicit_cells = false;
-        const auto r0 = extractHexMesh(pm, off, o);
-        EXPECT_GT(r1.darts.implicit_cells, 0);
-        EXPECT_EQ(r0.darts.implicit_cells, 0);
-        EXPECT_LT(r1.darts.extracted, r0.darts.extracted);
-        EXPECT_EQ(r1.output.hexes, k * 64 * 8);
-        EXPECT_EQ(r1.output.hexes, r0.output.hexes);
-        EXPECT_EQ(r1.output.vertices, r0.output.vertices);
-        EXPECT_EQ(r1.output.quads, r0.output.quads);
-        EXPECT_EQ(r1.output.boundary_quads, r0.output.boundary_quads);
-        EXPECT_TRUE(r1.valid_all_hex) << r1.validation.summary();
-        long over = 0, badEdges = 0, bq = 0;
-        checkQuadManifold(on, over, badEdges, bq);
-        EXPECT_EQ(over, 0);
-        EXPECT_EQ(badEdges, 0);
-        EXPECT_EQ(bq, r1.output.boundary_quads);
-        // Same vertex positions (as sets) and the singular valence around the axis.
-        auto sorted = [](std::vector<Vec3d> v) {
-            std::sort(v.begin(), v.end(), [](const Vec3d& a, const Vec3d& b) {
-                return a[0] != b[0] ? a[0] < b[0] : a[1] != b[1] ? a[1] < b[1] : a[2] < b[2];
-            });
-            return v;
-        };
-        const auto p1 = sorted(on.vertices), p0 = sorted(off.vertices);
-        ASSERT_EQ(p1.size(), p0.size());
-        for (std::size_t i = 0; i < p1.size(); ++i) EXPECT_LT((p1[i] - p0[i]).norm(), 1e-12);
+        HexMesh on;
+        expectSameWithAndWithoutImplicitCells(generateCylinder(k, 8, 8, 1, 1), k * 64 * 8, on);
         for (int v : HexExTest::axisEdgeValences(on)) EXPECT_EQ(v, k);
-        // Deterministic across thread counts.
-        HexMesh two;
-        o.implicit_cells = true;
-        o.threads = 2;
-        extractHexMesh(pm, two, o);
-        EXPECT_EQ(two.hexes, on.hexes);
     }
+}
+
+TEST(ExtractImplicitCells, CellsOnTetFacesAndBoundary) {
+    // One cube of tets, 8^3 grid cells: cells touching the tets' interior faces (on one
+    // side) and the boundary are implicit too; their corners are joined across faces.
+    HexMesh on;
+    const auto r = expectSameWithAndWithoutImplicitCells(generateCube(1, 8), 512, on);
+    EXPECT_GT(r.darts.implicit_cells, 216);  // more than the cells strictly inside one tet could give
+    EXPECT_EQ(r.output.boundary_quads, 6 * 64);
+}
+
+TEST(ExtractImplicitCells, JoinsAcrossTransitions) {
+    // Random chart per tet: every interior face has a non-trivial transition.
+    for (unsigned seed : {3u, 4u}) {
+        SCOPED_TRACE("seed " + std::to_string(seed));
+        auto pm = generateCube(2, 8);
+        applyRandomChartTransforms(pm, seed);
+        HexMesh on;
+        expectSameWithAndWithoutImplicitCells(pm, 512, on);
+    }
+    HexMesh ring;
+    expectSameWithAndWithoutImplicitCells(generateTwistedRing(12, 8, 3, 2), 12 * 64, ring);
 }
 
 TEST(ExtractTransitions, DegenerateFaceRotationsAreResolvedFromNeighbours) {

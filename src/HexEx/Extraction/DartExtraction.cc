@@ -72,7 +72,40 @@ bool DartSet::implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& 
     return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
 }
 
-DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells) {
+namespace {
+/// Fills the flags of a proper tet's dense index: which box points lie in the closed image
+/// (and on which faces), which may be implicit-cell corners, and which unit cells are
+/// implicit (all 8 corners usable: the closed image is convex, so it contains the cell).
+void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di) {
+    const int dx = di.dims[0], dy = di.dims[1], dz = di.dims[2];
+    di.flags.assign(static_cast<std::size_t>(dx) * static_cast<std::size_t>(dy) * static_cast<std::size_t>(dz), 0);
+    std::size_t l = 0;
+    for (int x = 0; x < dx; ++x)
+        for (int y = 0; y < dy; ++y)
+            for (int zc = 0; zc < dz; ++zc, ++l) {
+                const Vec3d zp(di.lo[0] + x, di.lo[1] + y, di.lo[2] + zc);
+                unsigned fl = 1;
+                for (int j = 0; j < 4 && fl; ++j) {
+                    const int s = T.side(j, zp);
+                    if (s == -T.vol) fl = 0;
+                    else if (s == 0) fl |= 16u << j;
+                }
+                if (fl && ((fl >> 4) & ~static_cast<unsigned>(usable)) == 0) fl |= 4;
+                di.flags[l] = static_cast<std::uint8_t>(fl);
+            }
+    auto at = [&](int x, int y, int zc) { return di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
+    for (int x = 0; x + 1 < dx; ++x)
+        for (int y = 0; y + 1 < dy; ++y)
+            for (int zc = 0; zc + 1 < dz; ++zc) {
+                bool all = true;
+                for (int q = 0; q < 8 && all; ++q) all = (at(x + (q & 1), y + ((q >> 1) & 1), zc + (q >> 2)) & 4) != 0;
+                if (all) di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc] |= 2;
+            }
+}
+} // namespace
+
+DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
+                     const std::vector<FaceMask>* usable_faces) {
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
@@ -80,6 +113,12 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
     std::vector<std::size_t> count(n, 0);
     const auto& frames = allFrames();
+    // Octant of every frame's cell: bit a is set if the frame points in the -a direction
+    // (the cell's lower corner is then z - octant).
+    std::array<std::uint8_t, 48> frameOctant{};
+    for (std::size_t f = 0; f < frames.size(); ++f)
+        for (AxisDir x : frames[f])
+            if (dirSign(x) < 0) frameOctant[f] = static_cast<std::uint8_t>(frameOctant[f] | (1u << dirAxis(x)));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         auto& out = parts[static_cast<std::size_t>(k)];
         for (std::size_t c = b; c < e; ++c) {
@@ -113,48 +152,43 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                     di->dims[a] = ihi[a] - ilo[a] + 1;
                 }
                 di->offset.reserve(static_cast<std::size_t>(points) + 1);
-                if (implicit_cells && T.vol > 0) {
-                    // Interior points, then cells whose 8 corners are all interior.
-                    const int dx = di->dims[0], dy = di->dims[1], dz = di->dims[2];
-                    di->flags.assign(static_cast<std::size_t>(points), 0);
-                    std::size_t l = 0;
-                    for (int x = ilo[0]; x <= ihi[0]; ++x)
-                        for (int y = ilo[1]; y <= ihi[1]; ++y)
-                            for (int zc = ilo[2]; zc <= ihi[2]; ++zc, ++l) {
-                                const Vec3d zp(x, y, zc);
-                                bool inside = true;
-                                for (int j = 0; j < 4 && inside; ++j) inside = T.side(j, zp) == T.vol;
-                                if (inside) di->flags[l] = 1;
-                            }
-                    auto at = [&](int x, int y, int zc) { return di->flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
-                    for (int x = 0; x + 1 < dx; ++x)
-                        for (int y = 0; y + 1 < dy; ++y)
-                            for (int zc = 0; zc + 1 < dz; ++zc) {
-                                bool all = true;
-                                for (int q = 0; q < 8 && all; ++q) all = (at(x + (q & 1), y + ((q >> 1) & 1), zc + (q >> 2)) & 1) != 0;
-                                if (all) di->flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc] |= 2;
-                            }
-                }
+                if (implicit_cells && T.vol > 0) markImplicitCells(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), *di);
             }
+            const bool flagged = di && !di->flags.empty();
+            std::size_t l = 0;  // local index of (x, y, zc) in the box
             for (int x = ilo[0]; x <= ihi[0]; ++x)
                 for (int y = ilo[1]; y <= ihi[1]; ++y)
-                    for (int zc = ilo[2]; zc <= ihi[2]; ++zc) {
+                    for (int zc = ilo[2]; zc <= ihi[2]; ++zc, ++l) {
                         if (di) di->offset.push_back(static_cast<std::uint32_t>(out.size() - before));
-                        const Vec3d zp(x, y, zc);
                         std::array<int, 4> oz;
-                        bool outside = false, interior = true;
-                        for (int j = 0; j < 4 && !outside; ++j) {
-                            oz[j] = T.side(j, zp);
-                            if (oz[j] == -T.vol) outside = true;
-                            if (oz[j] == 0) interior = false;
-                        }
-                        if (outside) continue;
-                        for (const auto& f : frames) {
-                            if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
-                            if (di && !di->flags.empty()) {
-                                const long lc = di->local(cellLowerCorner(Vec3i(x, y, zc), f));
-                                if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) continue;
+                        bool interior = true;
+                        unsigned implicitOctants = 0;
+                        if (flagged) {
+                            // The signs were found while marking the implicit cells.
+                            const std::uint8_t fl = di->flags[l];
+                            if (!(fl & 1)) continue;
+                            for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
+                            interior = (fl >> 4) == 0;
+                            for (unsigned o = 0; o < 8; ++o) {
+                                const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1),
+                                                                zc - static_cast<int>(o >> 2)));
+                                if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
                             }
+                            if (implicitOctants == 0xFF) continue;  // every cell around z is implicit
+                        } else {
+                            bool outside = false;
+                            const Vec3d zp(x, y, zc);
+                            for (int j = 0; j < 4 && !outside; ++j) {
+                                oz[static_cast<std::size_t>(j)] = T.side(j, zp);
+                                if (oz[static_cast<std::size_t>(j)] == -T.vol) outside = true;
+                                if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
+                            }
+                            if (outside) continue;
+                        }
+                        for (std::size_t fi = 0; fi < frames.size(); ++fi) {
+                            const auto& f = frames[fi];
+                            if ((implicitOctants >> frameOctant[fi]) & 1) continue;
+                            if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
                             Dart d;
                             d.tet = static_cast<int>(c);
                             d.z = Vec3i(x, y, zc);

@@ -49,8 +49,9 @@ struct DartSet {
         int lo[3] = {0, 0, 0};              ///< smallest grid point of the box
         int dims[3] = {0, 0, 0};            ///< box size per axis
         std::vector<std::uint32_t> offset;  ///< per box point (x-major), first dart relative to tet_begin; one extra at the end
-        /// Per box point: bit 0 = strictly inside the tet, bit 1 = the unit cell with this
-        /// lower corner is implicit (all 8 corners strictly inside; no darts stored).
+        /// Per box point: bit 0 = in the closed tet image, bit 1 = the unit cell with this
+        /// lower corner is implicit (no darts stored), bit 2 = may be a corner of an implicit
+        /// cell, bits 4..7 = lies on face j (o_j = 0). Empty unless implicit cells are on.
         std::vector<std::uint8_t> flags;
         long occ_base = 0;                  ///< first occurrence id of this box (see occurrence())
         /// Local index of @p z in the box, or -1 outside.
@@ -72,8 +73,8 @@ struct DartSet {
 
     /// Index of the dart of tet @p t with key (z, d), or -1.
     long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
-    /// Occurrence id of grid point @p z strictly inside tet @p t (a vertex known without
-    /// darts), or -1 if @p t has no dense index or @p z is not strictly inside.
+    /// Occurrence id of grid point @p z in the closed image of tet @p t (a vertex known
+    /// without darts), or -1 if @p t has no dense index with flags or @p z is outside.
     long occurrence(int t, const Vec3i& z) const;
     /// True if the unit cell of the dart (z, d) in tet @p t is implicit (no darts stored).
     bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
@@ -93,12 +94,20 @@ inline Vec3i cellLowerCorner(const Vec3i& z, const std::array<AxisDir, 3>& d) {
     return c;
 }
 
+/// Bit j of the per-tet masks passed to extractDarts(): grid points on face j may be
+/// corners of implicit cells.
+using FaceMask = std::uint8_t;
+
 /// Extracts every dart of every non-degenerate tet. Deterministic for any thread count.
 /// Throws InputError if a tet's parameter image is absurdly large (more than
 /// @p max_points_per_tet grid points in its bounding box). With @p implicit_cells, unit
-/// cells whose 8 corners lie strictly inside one large proper tet get no darts: they are
-/// hexes by construction (only valid when no tet is flipped, so nothing can annihilate them).
+/// cells contained in the closed image of one large proper tet get no darts: they are
+/// hexes by construction (only valid when no tet is flipped, so nothing can annihilate
+/// them). A corner of such a cell must lie strictly inside the tet or on a face j with bit
+/// j set in @p usable_faces[t] (the caller allows boundary faces and faces shared with a
+/// proper tet, where vertices can be joined across; without masks only strictly interior
+/// corners are used).
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
-                     bool implicit_cells = false);
+                     bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr);
 
 } // namespace HexEx

@@ -18,6 +18,42 @@
 namespace HexEx {
 
 namespace {
+/// Pairs of occurrences that are one grid point seen from both tets of an interior face:
+/// points on face j of a dense tet that may be implicit-cell corners, mapped through the
+/// face's transition into the neighbour (found once, from the smaller halfface).
+std::vector<std::pair<int, int>> joinOccurrencesAcrossFaces(const TetMesh& mesh, const Transitions& tr, const DartSet& ds,
+                                                            int threads) {
+    const int chunks = std::max(1, threads);
+    std::vector<std::vector<std::pair<int, int>>> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(ds.dense.size(), chunks, [&](int k, std::size_t b, std::size_t e) {
+        auto& out = parts[static_cast<std::size_t>(k)];
+        for (std::size_t s = b; s < e; ++s) {
+            const DartSet::DenseIndex& di = ds.dense[s];
+            if (di.flags.empty()) continue;
+            for (int j = 0; j < 4; ++j) {
+                const HalfFaceHandle hf = TetMesh::halfface(CellHandle(di.tet), j);
+                const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+                if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
+                const int nb = TetMesh::cell(opp).idx();
+                const GridTransform& g = tr.halfface[hf.uidx()];
+                std::size_t l = 0;
+                for (int x = 0; x < di.dims[0]; ++x)
+                    for (int y = 0; y < di.dims[1]; ++y)
+                        for (int zc = 0; zc < di.dims[2]; ++zc, ++l) {
+                            const unsigned fl = di.flags[l];
+                            if (!(fl & 4) || !((fl >> (4 + j)) & 1)) continue;
+                            const Vec3i z(di.lo[0] + x, di.lo[1] + y, di.lo[2] + zc);
+                            const long o = ds.occurrence(nb, g.apply(z));
+                            if (o >= 0) out.emplace_back(static_cast<int>(di.occ_base + static_cast<long>(l)), static_cast<int>(o));
+                        }
+            }
+        }
+    });
+    std::vector<std::pair<int, int>> all;
+    for (auto& p : parts) all.insert(all.end(), p.begin(), p.end());
+    return all;
+}
+
 double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
@@ -103,7 +139,19 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     progress("darts", 0);
     // Cells inside one large proper tet need no darts, unless a fold could annihilate them.
     const bool useImplicit = opt.implicit_cells && rep.input.flipped_tets == 0;
-    DartSet ds = extractDarts(tets, threads, 1e9, useImplicit);
+    // Grid points on a face may be corners of implicit cells if the face is on the boundary
+    // or shared with a proper tet: their vertex is then joined across (joinOccurrencesAcrossFaces).
+    std::vector<FaceMask> usableFaces;
+    if (useImplicit) {
+        usableFaces.assign(tets.size(), 0);
+        for (std::size_t c = 0; c < tets.size(); ++c)
+            for (int j = 0; j < 4; ++j) {
+                const HalfFaceHandle opp = mesh.opposite_halfface(TetMesh::halfface(CellHandle(static_cast<int>(c)), j));
+                if (!opp.is_valid() || tets[TetMesh::cell(opp).uidx()].vol > 0)
+                    usableFaces[c] = static_cast<FaceMask>(usableFaces[c] | (1u << j));
+            }
+    }
+    DartSet ds = extractDarts(tets, threads, 1e9, useImplicit, useImplicit ? &usableFaces : nullptr);
     if (ds.n_occurrences >= std::numeric_limits<int>::max() / 2)
         throw InputError("too many grid points in large tets for 32-bit indices");
     ImplicitCells implicit;
@@ -257,17 +305,36 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     });
     if (useImplicit) {
         // The implicit cells, as 8 corner occurrences in VTK order (the tet's chart is
-        // right-handed: proper tets only).
+        // right-handed: proper tets only), and their faces on the boundary.
         for (const auto& di : ds.dense) {
             if (di.flags.empty()) continue;
+            unsigned boundaryFaces = 0;
+            for (int j = 0; j < 4; ++j)
+                if (mesh.is_boundary(TetMesh::halfface(CellHandle(di.tet), j))) boundaryFaces |= 1u << j;
             const long dy = di.dims[1], dz = di.dims[2];
+            const long X = dy * dz, Y = dz, Z = 1;
+            const long step[3] = {X, Y, Z};
             for (std::size_t l = 0; l < di.flags.size(); ++l) {
                 if (!(di.flags[l] & 2)) continue;
                 const long b = di.occ_base + static_cast<long>(l);
-                const long X = dy * dz, Y = dz, Z = 1;
                 implicit.cells.push_back({b, b + X, b + X + Y, b + Y, b + Z, b + X + Z, b + X + Y + Z, b + Y + Z});
+                if (!boundaryFaces) continue;
+                // A face of the cell is on the boundary if its 4 corners share a boundary face.
+                for (int a = 0; a < 3; ++a)
+                    for (int side = 0; side < 2; ++side) {
+                        unsigned common = boundaryFaces;
+                        for (int q = 0; q < 8; ++q) {
+                            if (((q >> a) & 1) != side) continue;
+                            long lq = static_cast<long>(l);
+                            for (int k = 0; k < 3; ++k)
+                                if ((q >> k) & 1) lq += step[k];
+                            common &= static_cast<unsigned>(di.flags[static_cast<std::size_t>(lq)]) >> 4;
+                        }
+                        if (common) ++implicit.boundary_quads;
+                    }
             }
         }
+        implicit.joined_occurrences = joinOccurrencesAcrossFaces(mesh, tr, ds, threads);
         implicit.position = [&](long occ) {
             // The dense index holding this occurrence: the last with occ_base <= occ.
             auto it = std::upper_bound(ds.dense.begin(), ds.dense.end(), occ,

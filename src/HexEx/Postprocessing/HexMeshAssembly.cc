@@ -79,6 +79,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                     used[static_cast<std::size_t>(o)] = 1;
                 }
         }
+        for (const auto& jo : implicit->joined_occurrences)
+            uf.unite(static_cast<long>(nd) + jo.first, static_cast<long>(nd) + jo.second);
         for (const auto& c : implicit->cells)
             for (long o : c) used[static_cast<std::size_t>(o)] = 1;
         std::vector<int> rootLabel(nd + static_cast<std::size_t>(nocc), -1);
@@ -127,7 +129,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (std::size_t d = 0; d < flabel.size(); ++d)
             if (flabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d) && implicit->alpha3_occurrence[d] < 0)
                 bq[static_cast<std::size_t>(flabel[d])] = 1;
-        stats.boundary_quads = std::count(bq.begin(), bq.end(), 1);
+        stats.boundary_quads = std::count(bq.begin(), bq.end(), 1) + implicit->boundary_quads;
         // Quads are counted at the end from the cells: interior ones are shared by two.
     }
 

@@ -10,6 +10,7 @@
 #include "VertexMerging.hh"
 
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace HexEx {
@@ -31,11 +32,15 @@ struct DartGeometry {
 };
 
 /// Unit cells produced without darts (DartSet::implicitCell()) and how the explicit darts
-/// meet them. Their corners are "occurrences": grid points strictly inside one tet.
+/// meet them. Their corners are "occurrences": grid points in the closed image of one tet.
 struct ImplicitCells {
     long n_occurrences = 0;                       ///< number of occurrence ids
     std::vector<int> dart_occurrence;             ///< per dart: occurrence of its own grid point, or -1
     std::vector<int> alpha3_occurrence;           ///< per dart: occurrence of its implicit alpha_3 partner, or -1
+    /// Pairs of occurrences that are the same grid point seen from the two tets of a shared
+    /// face (one vertex).
+    std::vector<std::pair<int, int>> joined_occurrences;
+    long boundary_quads = 0;                      ///< faces of implicit cells on the boundary
     /// The implicit cells, each as its 8 corner occurrences in VTK order.
     std::vector<std::array<long, 8>> cells;
     /// 3D position of an occurrence (used for vertices that no explicit dart touches).
