@@ -79,20 +79,45 @@ namespace {
 void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di) {
     const int dx = di.dims[0], dy = di.dims[1], dz = di.dims[2];
     di.flags.assign(static_cast<std::size_t>(dx) * static_cast<std::size_t>(dy) * static_cast<std::size_t>(dz), 0);
+    // o_j is affine along a row of constant (x, y): its signs along the row are s(lo), then
+    // at most one zero, then s(hi). Exact signs at the row ends and a binary search for the
+    // change replace one predicate per point by O(log dz) per row.
+    std::vector<int> sign(static_cast<std::size_t>(dz) * 4);
     std::size_t l = 0;
     for (int x = 0; x < dx; ++x)
-        for (int y = 0; y < dy; ++y)
-            for (int zc = 0; zc < dz; ++zc, ++l) {
-                const Vec3d zp(di.lo[0] + x, di.lo[1] + y, di.lo[2] + zc);
+        for (int y = 0; y < dy; ++y, l += static_cast<std::size_t>(dz)) {
+            auto side = [&](int j, int zc) { return T.side(j, Vec3d(di.lo[0] + x, di.lo[1] + y, di.lo[2] + zc)); };
+            bool rowOutside = false;
+            for (int j = 0; j < 4 && !rowOutside; ++j) {
+                int* sj = sign.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(dz);
+                const int s0 = side(j, 0), s1 = dz > 1 ? side(j, dz - 1) : s0;
+                if (s0 == s1) {  // constant along the row (zero twice: identically zero)
+                    if (s0 == -T.vol) rowOutside = true;
+                    std::fill(sj, sj + dz, s0);
+                    continue;
+                }
+                // First index whose sign differs from s0 (sign at dz-1 differs).
+                int a = 0, b = dz - 1;
+                while (b - a > 1) {
+                    const int m = a + (b - a) / 2;
+                    (side(j, m) == s0 ? a : b) = m;
+                }
+                std::fill(sj, sj + b, s0);
+                std::fill(sj + b, sj + dz, s1);
+                if (s0 != 0 && b < dz - 1 && side(j, b) == 0) sj[b] = 0;
+            }
+            if (rowOutside) continue;
+            for (int zc = 0; zc < dz; ++zc) {
                 unsigned fl = 1;
                 for (int j = 0; j < 4 && fl; ++j) {
-                    const int s = T.side(j, zp);
+                    const int s = sign[static_cast<std::size_t>(j) * static_cast<std::size_t>(dz) + static_cast<std::size_t>(zc)];
                     if (s == -T.vol) fl = 0;
                     else if (s == 0) fl |= 16u << j;
                 }
                 if (fl && ((fl >> 4) & ~static_cast<unsigned>(usable)) == 0) fl |= 4;
-                di.flags[l] = static_cast<std::uint8_t>(fl);
+                di.flags[l + static_cast<std::size_t>(zc)] = static_cast<std::uint8_t>(fl);
             }
+        }
     auto at = [&](int x, int y, int zc) { return di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
     for (int x = 0; x + 1 < dx; ++x)
         for (int y = 0; y + 1 < dy; ++y)

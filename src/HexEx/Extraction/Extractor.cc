@@ -247,7 +247,16 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
         const auto& cv = mesh.cell_vertices(CellHandle(t));
         const Vec3d z = toVec3d(zi);
-        const auto oz = T.sides(z);
+        // Exact zeros: from the implicit-cell flags where the tet has them, else predicates.
+        std::array<int, 4> oz;
+        const int slot = ds.dense_slot[static_cast<std::size_t>(t)];
+        const DartSet::DenseIndex* di = slot >= 0 ? &ds.dense[static_cast<std::size_t>(slot)] : nullptr;
+        const long l = di && !di->flags.empty() ? di->local(zi) : -1;
+        if (l >= 0 && (di->flags[static_cast<std::size_t>(l)] & 1)) {
+            for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((di->flags[static_cast<std::size_t>(l)] >> (4 + j)) & 1) ? 0 : T.vol;
+        } else {
+            oz = T.sides(z);
+        }
         const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
         const double V = (e1 % e2) | e3;
         double lam[4];
