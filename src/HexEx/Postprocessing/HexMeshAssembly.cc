@@ -21,20 +21,20 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 }
 } // namespace
 
-/// Union-find with path halving.
+/// Union-find with path halving over 32-bit ids (darts plus occurrences stay below 2^31).
 struct UnionFind {
-    std::vector<long> parent;
+    std::vector<int> parent;
     explicit UnionFind(std::size_t n) : parent(n) {
-        for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<long>(i);
+        for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<int>(i);
     }
-    long find(long x) {
+    int find(int x) {
         while (parent[static_cast<std::size_t>(x)] != x) {
             parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
             x = parent[static_cast<std::size_t>(x)];
         }
         return x;
     }
-    void unite(long x, long y) {
+    void unite(int x, int y) {
         x = find(x);
         y = find(y);
         if (x == y) return;
@@ -68,33 +68,38 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             }
         });
     } else {
+        const int ndi = static_cast<int>(nd);
         UnionFind uf(nd + static_cast<std::size_t>(nocc));
         std::vector<char> used(static_cast<std::size_t>(nocc), 0);
         for (std::size_t d = 0; d < nd; ++d) {
             if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
-            for (int i = 1; i < 4; ++i) uf.unite(static_cast<long>(d), a(static_cast<int>(d), i));
+            for (int i = 1; i < 4; ++i) uf.unite(static_cast<int>(d), a(static_cast<int>(d), i));
             for (int o : {implicit->dart_occurrence[d], implicit->alpha3_occurrence[d]})
                 if (o >= 0) {
-                    uf.unite(static_cast<long>(d), static_cast<long>(nd) + o);
+                    uf.unite(static_cast<int>(d), ndi + o);
                     used[static_cast<std::size_t>(o)] = 1;
                 }
         }
-        for (const auto& jo : implicit->joined_occurrences)
-            uf.unite(static_cast<long>(nd) + jo.first, static_cast<long>(nd) + jo.second);
+        for (const auto& jo : implicit->joined_occurrences) uf.unite(ndi + jo.first, ndi + jo.second);
         for (const auto& c : implicit->cells)
             for (long o : c) used[static_cast<std::size_t>(o)] = 1;
-        std::vector<int> rootLabel(nd + static_cast<std::size_t>(nocc), -1);
+        // Labels by first appearance; the root's slot in parent is reused for its label
+        // (encoded as -2 - label) once every class is final.
         vlabel.assign(nd, -1);
         occLabel.assign(static_cast<std::size_t>(nocc), -1);
-        auto labelOf = [&](long x) {
-            int& l = rootLabel[static_cast<std::size_t>(uf.find(x))];
-            if (l < 0) l = nv++;
-            return l;
+        for (std::size_t x = 0; x < uf.parent.size(); ++x) uf.find(static_cast<int>(x));  // flatten: parent = root
+        auto labelOf = [&](int x) {
+            const int r = uf.parent[static_cast<std::size_t>(x)];
+            if (r < 0) return -2 - r;  // x is a root that has a label already
+            int& slot = uf.parent[static_cast<std::size_t>(r)];
+            if (slot < 0) return -2 - slot;
+            slot = -2 - nv;
+            return nv++;
         };
         for (std::size_t d = 0; d < nd; ++d)
-            if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(static_cast<long>(d));
+            if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(static_cast<int>(d));
         for (long o = 0; o < nocc; ++o)
-            if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(static_cast<long>(nd) + o);
+            if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(ndi + static_cast<int>(o));
     }
     out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement);
     if (implicit) {
@@ -102,13 +107,17 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         std::vector<char> hasDart(static_cast<std::size_t>(nv), 0);
         for (int l : vlabel)
             if (l >= 0) hasDart[static_cast<std::size_t>(l)] = 1;
+        std::vector<std::pair<int, long>> todo;  // (class, its first occurrence)
         for (long o = 0; o < nocc; ++o) {
             const int l = occLabel[static_cast<std::size_t>(o)];
             if (l >= 0 && !hasDart[static_cast<std::size_t>(l)]) {
-                out.vertices[static_cast<std::size_t>(l)] = implicit->position(o);
+                todo.emplace_back(l, o);
                 hasDart[static_cast<std::size_t>(l)] = 1;
             }
         }
+        parallelChunks(todo.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t k = b; k < e; ++k) out.vertices[static_cast<std::size_t>(todo[k].first)] = implicit->position(todo[k].second);
+        });
     }
 
     const std::vector<int>& flabel = labels.face;
@@ -194,6 +203,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         out.polyhedra.push_back(std::move(poly));
     }
     if (implicit) {
+        out.hexes.reserve(out.hexes.size() + implicit->cells.size());
         for (const auto& c : implicit->cells) {
             std::array<int, 8> h;
             for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = occLabel[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
