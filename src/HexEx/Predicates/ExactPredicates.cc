@@ -68,6 +68,8 @@ int orient3d(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
     const double bound = 1e-15 * perm;
     if (det > bound) return 1;
     if (-det > bound) return -1;
+    // Exact zero: two equal points (a grid point at a tet corner, the common uncertain case).
+    if (a == b || a == c || a == d || b == c || b == d || c == d) return 0;
     if (smallDyadic(a) && smallDyadic(b) && smallDyadic(c) && smallDyadic(d)) return (det > 0) - (det < 0);
     return static_cast<int>(CGAL::orientation(P3(a), P3(b), P3(c), P3(d)));
 }
@@ -78,6 +80,9 @@ int orient2dAxis(const Vec3d& a, const Vec3d& b, const Vec3d& c, int axis) {
     const double det = t1 - t2, bound = 5e-16 * (std::fabs(t1) + std::fabs(t2));
     if (det > bound) return 1;
     if (-det > bound) return -1;
+    // Exact zero: one factor of each product is an exact zero difference (common for
+    // axis-aligned faces, where the filter cannot decide).
+    if ((b[i] == a[i] || c[j] == a[j]) && (b[j] == a[j] || c[i] == a[i])) return 0;
     if (smallDyadic(a) && smallDyadic(b) && smallDyadic(c)) return (det > 0) - (det < 0);
     return static_cast<int>(
         CGAL::orientation(K::Point_2(a[i], a[j]), K::Point_2(b[i], b[j]), K::Point_2(c[i], c[j])));

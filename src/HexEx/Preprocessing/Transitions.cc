@@ -128,6 +128,9 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                 u[k] = params[c.uidx()][lc];
                 w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
             }
+            // Same chart on both sides of a proper face: identity (already set). A face whose
+            // image is degenerate may hide a rotation about it, so it goes through the fit.
+            if (u[0] == w[0] && u[1] == w[1] && u[2] == w[2] && ((u[1] - u[0]) % (u[2] - u[0])).sqrnorm() > 0) continue;
             const FaceFit fit = fitFace(u, w);
             if (fit.ambiguous) {
                 ambiguousFits[static_cast<std::size_t>(chunk)].emplace_back(h, fit);
