@@ -18,6 +18,9 @@
 namespace HexEx {
 
 namespace {
+/// Tets per block of the deterministic parallel sums.
+constexpr std::size_t kSumBlock = 4096;
+
 /// Pairs of occurrences that are one grid point seen from both tets of an interior face:
 /// points on face j of a dense tet that may be implicit-cell corners, mapped through the
 /// face's transition into the neighbour (found once, from the smaller halfface).
@@ -80,18 +83,26 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     progress("preprocess", 0);
     CornerParams params = input.params;
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
-    double absVolume = 0;
-    for (std::size_t c = 0; c < params.size(); ++c) {
-        const auto& q = params[c];
-        for (const auto& p : q)
-            for (int k = 0; k < 3; ++k) {
-                if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
-                if (std::fabs(p[k]) > 1e9)
-                    throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
-                                     " is out of range (|u| <= 1e9)");
+    // Sums go per fixed block of tets, then over the blocks in order: the same result for
+    // any thread count. An error names the first bad tet (chunks are rethrown in order).
+    const std::size_t nBlocks = (params.size() + kSumBlock - 1) / kSumBlock;
+    std::vector<double> blockSum(nBlocks, 0.0);
+    parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
+        for (std::size_t blk = bb; blk < be; ++blk)
+            for (std::size_t c = blk * kSumBlock; c < std::min(params.size(), (blk + 1) * kSumBlock); ++c) {
+                const auto& q = params[c];
+                for (const auto& p : q)
+                    for (int k = 0; k < 3; ++k) {
+                        if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
+                        if (std::fabs(p[k]) > 1e9)
+                            throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
+                                             " is out of range (|u| <= 1e9)");
+                    }
+                blockSum[blk] += std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
             }
-        absVolume += std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
-    }
+    });
+    double absVolume = 0;
+    for (double v : blockSum) absVolume += v;
     if (absVolume > opt.max_hexes)
         throw InputError("the map covers a parametric volume of " + std::to_string(absVolume) +
                          " grid cells, more than the limit of " + std::to_string(opt.max_hexes) +
@@ -122,12 +133,26 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     rep.input.singular_edges = static_cast<long>(sing.edges.size());
     rep.input.singular_vertices = static_cast<long>(sing.vertices.size());
     const std::vector<TetSoS> tets = buildTetSoS(params, threads);
+    struct BlockCounts {
+        CompensatedSum volume6;
+        long flipped = 0, degenerate = 0;
+    };
+    std::vector<BlockCounts> blocks(nBlocks);
+    parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
+        for (std::size_t blk = bb; blk < be; ++blk)
+            for (std::size_t c = blk * kSumBlock; c < std::min(tets.size(), (blk + 1) * kSumBlock); ++c) {
+                const TetSoS& T = tets[c];
+                if (T.vol < 0) ++blocks[blk].flipped;
+                if (T.vol == 0) ++blocks[blk].degenerate;
+                const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
+                blocks[blk].volume6.add((e1 % e2) | e3);
+            }
+    });
     CompensatedSum volume6;
-    for (const auto& T : tets) {
-        if (T.vol < 0) ++rep.input.flipped_tets;
-        if (T.vol == 0) ++rep.input.degenerate_tets;
-        const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
-        volume6.add((e1 % e2) | e3);
+    for (const auto& b : blocks) {
+        rep.input.flipped_tets += b.flipped;
+        rep.input.degenerate_tets += b.degenerate;
+        volume6.add(b.volume6.value());
     }
     rep.input.parametric_volume = volume6.value() / 6.0;
     if (tr.n_unresolved > 0)
@@ -159,10 +184,14 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     const std::size_t nd = ds.darts.size();
     rep.darts.extracted = static_cast<long>(nd);
     std::vector<signed char> sign(nd);
-    for (std::size_t d = 0; d < nd; ++d) {
-        sign[d] = ds.darts[d].sign;
-        if (sign[d] < 0) ++rep.darts.anti;
-    }
+    std::vector<long> antiPerChunk(static_cast<std::size_t>(threads), 0);
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            sign[d] = ds.darts[d].sign;
+            if (sign[d] < 0) ++antiPerChunk[static_cast<std::size_t>(k)];
+        }
+    });
+    for (long a : antiPerChunk) rep.darts.anti += a;
     rep.timings_s.darts = secondsSince(t0);
 
     // Connections.
@@ -171,15 +200,21 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     TraceStats ts;
     std::vector<DartLinks> alpha =
         traceConnections(mesh, tr, tets, ds, threads, ts, [&](double f) { progress("connect", f); });
-    // Keep only mutual links.
-    for (std::size_t d = 0; d < nd; ++d)
-        for (int i = 0; i < 4; ++i) {
-            const int p = alpha[d][i];
-            if (p < 0 || p == static_cast<int>(d)) continue;
-            if (alpha[static_cast<std::size_t>(p)][i] != static_cast<int>(d)) {
-                ++rep.darts.asymmetric_links;
-                alpha[d][i] = kUnconnected;
+    // Keep only mutual links: found first, then cut (a cut while others still read could
+    // hide an asymmetry from the partner's side).
+    std::vector<std::vector<std::pair<std::size_t, int>>> oneSided(static_cast<std::size_t>(threads));
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d)
+            for (int i = 0; i < 4; ++i) {
+                const int p = alpha[d][i];
+                if (p < 0 || p == static_cast<int>(d)) continue;
+                if (alpha[static_cast<std::size_t>(p)][i] != static_cast<int>(d)) oneSided[static_cast<std::size_t>(k)].emplace_back(d, i);
             }
+    });
+    for (const auto& part : oneSided)
+        for (const auto& [d, i] : part) {
+            ++rep.darts.asymmetric_links;
+            alpha[d][i] = kUnconnected;
         }
     rep.timings_s.connect = secondsSince(t0);
 

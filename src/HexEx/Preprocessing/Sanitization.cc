@@ -8,6 +8,56 @@
 
 namespace HexEx {
 
+namespace {
+/// Rounds @p u to multiples of the quantum for magnitude @p bound, then snaps coordinates
+/// within @p epsilon of an integer (counted in @p snapped).
+void quantize(Vec3d& u, double bound, double epsilon, int& snapped) {
+    int e = 0;
+    std::frexp(bound + 1.0, &e);  // bound + 1 < 2^e
+    const double quantum = std::ldexp(1.0, e - 52);
+    for (int k = 0; k < 3; ++k) {
+        if (!std::isfinite(u[k])) continue;
+        u[k] = std::nearbyint(u[k] / quantum) * quantum;
+        const double r = std::nearbyint(u[k]);
+        if (u[k] != r && std::fabs(u[k] - r) <= epsilon) {
+            u[k] = r;
+            ++snapped;
+        }
+    }
+}
+
+/// The common case, without the breadth-first walk: every face around @p v has the
+/// identity transition and every cell holds the same parameter for @p v. Then all copies
+/// get the same quantized value. Returns false (nothing changed) otherwise.
+bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Transitions& tr, VertexHandle v,
+                          double epsilon, int& snapped) {
+    auto cells = mesh.vertex_cells(v);
+    const Vec3d* first = nullptr;
+    for (auto it = cells.first; it != cells.second; ++it) {
+        const CellHandle c(*it);
+        const auto& cv = mesh.cell_vertices(c);
+        int k = 0;
+        while (cv[k] != v) ++k;
+        const Vec3d& p = params[c.uidx()][k];
+        if (first && !(p == *first)) return false;
+        if (!first) first = &p;
+        for (int j = 0; j < 4; ++j)
+            if (j != k && !tr.halfface[TetMesh::halfface(c, j).uidx()].is_identity()) return false;
+    }
+    Vec3d u = *first;
+    quantize(u, std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])}), epsilon, snapped);
+    if (u == *first) return true;  // already clean: nothing to write
+    for (auto it = cells.first; it != cells.second; ++it) {
+        const CellHandle c(*it);
+        const auto& cv = mesh.cell_vertices(c);
+        int k = 0;
+        while (cv[k] != v) ++k;
+        params[c.uidx()][k] = u;
+    }
+    return true;
+}
+} // namespace
+
 SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, const Transitions& tr,
                                  const SanitizeOptions& opt) {
     SanitizeStats stats;
@@ -23,6 +73,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         const VertexHandle v(static_cast<int>(vi));
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
+        if (sanitizeSimpleVertex(mesh, params, tr, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;
         star.assign(1, *cells.first);
         mark[static_cast<std::size_t>(*cells.first)] = static_cast<int>(vi);
         toChart.assign(1, GridTransform());
@@ -57,18 +108,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
             bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]),
                               umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
         }
-        int e = 0;
-        std::frexp(bound + 1.0, &e);  // bound + 1 < 2^e
-        const double quantum = std::ldexp(1.0, e - 52);
-        for (int k = 0; k < 3; ++k) {
-            if (!std::isfinite(u[k])) continue;
-            u[k] = std::nearbyint(u[k] / quantum) * quantum;
-            const double r = std::nearbyint(u[k]);
-            if (u[k] != r && std::fabs(u[k] - r) <= opt.epsilon) {
-                u[k] = r;
-                ++snapped[static_cast<std::size_t>(chunk)];
-            }
-        }
+        quantize(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
         for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
     }
     });
