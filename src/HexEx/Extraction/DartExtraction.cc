@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <new>
 #include <string>
 
 namespace HexEx {
@@ -130,7 +131,7 @@ void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di
 } // namespace
 
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
-                     const std::vector<FaceMask>* usable_faces) {
+                     const std::vector<FaceMask>* usable_faces, double expected_cells) {
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
@@ -144,8 +145,19 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     for (std::size_t f = 0; f < frames.size(); ++f)
         for (AxisDir x : frames[f])
             if (dirSign(x) < 0) frameOctant[f] = static_cast<std::uint8_t>(frameOctant[f] | (1u << dirAxis(x)));
+    // Capacity from the expected number of cells (about 48 darts each), so that the vectors
+    // neither reallocate nor get copied when joined: chunk 0 reserves room for all
+    // (reserved but untouched memory costs no RSS). Capped; beyond that vectors grow.
+    constexpr double kMaxReserve = 64.0 * 1024 * 1024;
+    auto reserveFor = [&](double cells) {
+        return static_cast<std::size_t>(std::min(50.0 * std::max(0.0, cells) + 4096.0, kMaxReserve));
+    };
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         auto& out = parts[static_cast<std::size_t>(k)];
+        try {
+            out.reserve(reserveFor(k == 0 ? expected_cells : expected_cells * static_cast<double>(e - b) / static_cast<double>(n)));
+        } catch (const std::bad_alloc&) {  // the estimate is only a hint
+        }
         for (std::size_t c = b; c < e; ++c) {
             const TetSoS& T = tets[c];
             if (T.vol == 0) continue;
@@ -229,10 +241,11 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     DartSet s;
     std::size_t total = 0;
     for (const auto& p : parts) total += p.size();
+    s.darts = std::move(parts[0]);
     s.darts.reserve(total);
-    for (auto& p : parts) {
-        s.darts.insert(s.darts.end(), p.begin(), p.end());
-        std::vector<Dart>().swap(p);
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+        s.darts.insert(s.darts.end(), parts[k].begin(), parts[k].end());
+        std::vector<Dart>().swap(parts[k]);
     }
     s.tet_begin.assign(n + 1, 0);
     for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];

@@ -106,8 +106,9 @@ using FaceMask = std::uint8_t;
 /// them). A corner of such a cell must lie strictly inside the tet or on a face j with bit
 /// j set in @p usable_faces[t] (the caller allows boundary faces and faces shared with a
 /// proper tet, where vertices can be joined across; without masks only strictly interior
-/// corners are used).
+/// corners are used). @p expected_cells (e.g. the parametric volume) only sizes buffers.
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
-                     bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr);
+                     bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
+                     double expected_cells = 0);
 
 } // namespace HexEx

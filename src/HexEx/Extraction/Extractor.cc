@@ -176,7 +176,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                     usableFaces[c] = static_cast<FaceMask>(usableFaces[c] | (1u << j));
             }
     }
-    DartSet ds = extractDarts(tets, threads, 1e9, useImplicit, useImplicit ? &usableFaces : nullptr);
+    DartSet ds = extractDarts(tets, threads, 1e9, useImplicit, useImplicit ? &usableFaces : nullptr, absVolume);
     if (ds.n_occurrences >= std::numeric_limits<int>::max() / 2)
         throw InputError("too many grid points in large tets for 32-bit indices");
     ImplicitCells implicit;
