@@ -81,7 +81,9 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Preprocessing: transitions, sanitization, classification.
     auto t0 = std::chrono::steady_clock::now();
     progress("preprocess", 0);
-    CornerParams params = input.params;
+    // The working copy (sanitization changes it) is filled by the parallel check below
+    // (Vec3d's default constructor leaves the storage untouched).
+    CornerParams params(input.params.size());
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
     // Sums go per fixed block of tets, then over the blocks in order: the same result for
     // any thread count. An error names the first bad tet (chunks are rethrown in order).
@@ -90,7 +92,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
         for (std::size_t blk = bb; blk < be; ++blk)
             for (std::size_t c = blk * kSumBlock; c < std::min(params.size(), (blk + 1) * kSumBlock); ++c) {
-                const auto& q = params[c];
+                const auto& q = params[c] = input.params[c];
                 for (const auto& p : q)
                     for (int k = 0; k < 3; ++k) {
                         if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
@@ -242,23 +244,29 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     }
     std::vector<DartLinks> links;
     links.swap(alpha);
-    for (std::size_t d = 0; d < nd; ++d) {
-        if (!alive[d]) continue;
-        DartLinks l;
-        for (int i = 0; i < 4; ++i) {
-            const int p = links[d][i];
-            if (p >= 0 && alive[static_cast<std::size_t>(p)]) {
-                l[i] = newIndex[static_cast<std::size_t>(p)];
-            } else if (i == 3 && implicitPartnerOccurrence(p) >= 0) {
-                l[i] = newIndex[d];  // free in the map; the partner is an implicit cell
-                implicit.alpha3_occurrence[static_cast<std::size_t>(newIndex[d])] = static_cast<int>(implicitPartnerOccurrence(p));
-            } else {
-                l[i] = newIndex[d];
-                if (i < 3) ++rep.output.unconnected_darts;
+    // With every dart alive, each dart rewrites only its own entry: parallel.
+    const bool allAlive = n_alive == static_cast<int>(nd);
+    std::vector<long> unconnected(static_cast<std::size_t>(threads), 0);
+    parallelChunks(nd, allAlive ? threads : 1, [&](int k, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            if (!alive[d]) continue;
+            DartLinks l;
+            for (int i = 0; i < 4; ++i) {
+                const int p = links[d][i];
+                if (p >= 0 && alive[static_cast<std::size_t>(p)]) {
+                    l[i] = newIndex[static_cast<std::size_t>(p)];
+                } else if (i == 3 && implicitPartnerOccurrence(p) >= 0) {
+                    l[i] = newIndex[d];  // free in the map; the partner is an implicit cell
+                    implicit.alpha3_occurrence[static_cast<std::size_t>(newIndex[d])] = static_cast<int>(implicitPartnerOccurrence(p));
+                } else {
+                    l[i] = newIndex[d];
+                    if (i < 3) ++unconnected[static_cast<std::size_t>(k)];
+                }
             }
+            links[static_cast<std::size_t>(newIndex[d])] = l;
         }
-        links[static_cast<std::size_t>(newIndex[d])] = l;
-    }
+    });
+    for (long u : unconnected) rep.output.unconnected_darts += u;
     links.resize(static_cast<std::size_t>(n_alive));
     links.shrink_to_fit();
     GMap<3> g;
