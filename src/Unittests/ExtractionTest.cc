@@ -309,6 +309,21 @@ TEST(ExtractImplicitCells, JoinsAcrossTransitions) {
     expectSameWithAndWithoutImplicitCells(generateTwistedRing(12, 8, 3, 2), 12 * 64, ring);
 }
 
+TEST(ExtractImplicitCells, SphereWithSingularitiesAndDegenerateTets) {
+    // The bundled sphere scaled by 3: large tets next to the two degenerate ones and around
+    // interior singular edges. Implicit cells must not change the mesh.
+    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex";
+    std::ifstream probe(path);
+    if (!probe) GTEST_SKIP() << "bundled example " << path << " not found";
+    auto pm = readHexExFile(path);
+    for (auto& q : pm.params)
+        for (auto& p : q) p *= 3.0;
+    HexMesh on;
+    const auto r = expectSameWithAndWithoutImplicitCells(pm, 5832, on);
+    EXPECT_EQ(r.input.degenerate_tets, 2);
+    EXPECT_EQ(r.output.vertices, 6859);
+}
+
 TEST(ExtractTransitions, DegenerateFaceRotationsAreResolvedFromNeighbours) {
     // Move the interior vertex with parameter (2,1,1) onto the middle of the segment
     // (1,1,1)-(2,2,2): the face through these three points collapses to a segment, so its
