@@ -81,9 +81,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Preprocessing: transitions, sanitization, classification.
     auto t0 = std::chrono::steady_clock::now();
     progress("preprocess", 0);
-    // The working copy (sanitization changes it) is filled by the parallel check below
-    // (Vec3d's default constructor leaves the storage untouched).
-    CornerParams params(input.params.size());
+    CornerParams params = input.params;  // the working copy: sanitization changes it
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
     // Sums go per fixed block of tets, then over the blocks in order: the same result for
     // any thread count. An error names the first bad tet (chunks are rethrown in order).
@@ -92,7 +90,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
         for (std::size_t blk = bb; blk < be; ++blk)
             for (std::size_t c = blk * kSumBlock; c < std::min(params.size(), (blk + 1) * kSumBlock); ++c) {
-                const auto& q = params[c] = input.params[c];
+                const auto& q = params[c];
                 for (const auto& p : q)
                     for (int k = 0; k < 3; ++k) {
                         if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
