@@ -170,8 +170,17 @@ constexpr int kMaxSteps = 4096;
 
 long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 
+/// Number of distinct frame codes (frameCode()).
+constexpr int kFrameCodes = 216;
+/// A table index for a frame (d1, d2, d3): each direction is one of 6 values.
+int frameCode(const std::array<AxisDir, 3>& d) { return (d[0] * 6 + d[1]) * 6 + d[2]; }
+/// Entries of a run table (see traceOne()): no dart with that frame, or several.
+constexpr int kNoDart = -1, kSeveralDarts = -2;
+
+/// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
+/// tet at the dart's grid point (kNoDart / kSeveralDarts), replacing the local scan.
 long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-              long dart, int i, long& steps) {
+              long dart, int i, long& steps, const int* run = nullptr) {
     const Dart& D = set.darts[static_cast<std::size_t>(dart)];
     int t = D.tet;
     int s = tets[static_cast<std::size_t>(t)].vol;
@@ -180,7 +189,11 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     int entry = -1;
     // First look among the darts of the same tet at the same grid point: they are stored
     // contiguously around this dart (alpha_1..alpha_3 partners usually are there).
-    if (samePoint(target.z, D.z)) {
+    const int known = run && samePoint(target.z, D.z) ? run[frameCode(target.d)] : kSeveralDarts;
+    if (known >= 0) return known;
+    if (known == kNoDart) {
+        if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+    } else if (samePoint(target.z, D.z)) {
         const std::size_t lo = set.tet_begin[static_cast<std::size_t>(t)], hi = set.tet_begin[static_cast<std::size_t>(t) + 1];
         for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
             if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
@@ -244,16 +257,34 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         if (p == kUnconnected) ++st.unconnected[i];
         else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
     };
+    const auto& D = darts.darts;
+    auto sameRun = [&](std::size_t x, std::size_t y) { return D[x].tet == D[y].tet && samePoint(D[x].z, D[y].z); };
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;  // local: per-chunk counters next to each other would share cache lines
+        // The darts of one tet at one grid point (a run) are contiguous: a table from frame
+        // code to dart answers the lookups of alpha_1..alpha_3 partners there.
+        std::array<int, kFrameCodes> run;
+        run.fill(kNoDart);
+        std::size_t runB = b, runE = b;
         for (std::size_t d = b; d < e; ++d) {
             if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
+            if (d >= runE) {
+                for (std::size_t x = runB; x < runE; ++x) run[static_cast<std::size_t>(frameCode(D[x].d))] = kNoDart;
+                runB = d;
+                while (runB > 0 && sameRun(runB - 1, d)) --runB;
+                runE = d + 1;
+                while (runE < n && sameRun(runE, d)) ++runE;
+                for (std::size_t x = runB; x < runE; ++x) {
+                    int& slot = run[static_cast<std::size_t>(frameCode(D[x].d))];
+                    slot = slot == kNoDart ? static_cast<int>(x) : kSeveralDarts;
+                }
+            }
             for (int i = 0; i < 4; ++i) {
                 if (deferred(d, i)) {
                     alpha[d][i] = kPending;
                     continue;
                 }
-                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
+                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data()));
             }
         }
         part[static_cast<std::size_t>(k)] = st;
