@@ -36,9 +36,11 @@ int signOf(double x) { return (x > 0) - (x < 0); }
 
 /// Sign of orient3d(P, Q, a, b) for the line P = z + e^2 e2 + e^3 e3, Q = P + D:
 /// det(D, a-z, b-z) - e^2 h (b-a).e3 + e^3 h (b-a).e2 with h the handedness of (D, e2, e3).
-int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, int h, const Vec3d& a, const Vec3d& b) {
+/// The handedness h is only needed for ties; it is computed then.
+int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b) {
     const int t0 = dirSign(D) * orient2dAxis(z, a, b, dirAxis(D));
     if (t0 != 0) return t0;
+    const int h = frameHandedness(D, e2, e3);
     const int t2 = -h * dirSign(e3) * signOf(b[dirAxis(e3)] - a[dirAxis(e3)]);
     if (t2 != 0) return t2;
     return h * dirSign(e2) * signOf(b[dirAxis(e2)] - a[dirAxis(e2)]);
@@ -72,7 +74,6 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
 int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
-    const int h = frameHandedness(d0, d1, d2);
     int cand[4], n = 0;
     if (i == 0) {
         const Vec3d z = toVec3d(s.z);
@@ -81,17 +82,30 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
             if (T.vol * dirSign(d0) * T.g[j][dirAxis(d0)] >= 0) continue;  // not leaving along d0
             cand[n++] = j;
         }
+        if (n == 1) return cand[0];  // the only face the line can leave through
+        // Edge signs are antisymmetric in (a, b) and shared by adjacent faces: each of the
+        // six edges is evaluated at most once (index: a < b, sign for the pair (a, b)).
+        int edgeSign[4][4];
+        bool known[4][4] = {};
+        auto sign = [&](int a, int b) {
+            const int lo = a < b ? a : b, hi = a < b ? b : a;
+            if (!known[lo][hi]) {
+                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi]);
+                known[lo][hi] = true;
+            }
+            return a < b ? edgeSign[lo][hi] : -edgeSign[lo][hi];
+        };
         for (int k = 0; k < n; ++k) {
             const int j = cand[k];
             int o[3], m = 0;
             for (int q = 0; q < 4; ++q)
                 if (q != j) o[m++] = q;
-            const int s0 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[0]], T.p[o[1]]);
-            const int s1 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[1]], T.p[o[2]]);
-            const int s2 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[2]], T.p[o[0]]);
+            const int s0 = sign(o[0], o[1]);
+            const int s1 = sign(o[1], o[2]);
+            const int s2 = sign(o[2], o[0]);
             if (s0 == s1 && s1 == s2 && s0 != 0) return j;
         }
-        return n == 1 ? cand[0] : -1;
+        return -1;
     }
     const std::array<int, 4> oz = T.sides(toVec3d(s.z));
     for (int j = 0; j < 4; ++j) {
@@ -103,6 +117,7 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
     }
     if (n == 0) return -1;
     if (i == 3) return cand[0];
+    const int h = frameHandedness(d0, d1, d2);
     if (i == 1) return firstRotationalExit(T, cand, n, d2, h, d2);
     return firstRotationalExit(T, cand, n, d0, h, d2);
 }
@@ -279,10 +294,21 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                     slot = slot == kNoDart ? static_cast<int>(x) : kSeveralDarts;
                 }
             }
+            const auto& f = D[d].d;
             for (int i = 0; i < 4; ++i) {
                 if (deferred(d, i)) {
                     alpha[d][i] = kPending;
                     continue;
+                }
+                if (i > 0) {  // partner at the same grid point: usually in this run
+                    const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
+                                                        : i == 2 ? std::array<AxisDir, 3>{f[0], f[2], f[1]}
+                                                                 : std::array<AxisDir, 3>{f[0], f[1], dirNeg(f[2])};
+                    const int hit = run[static_cast<std::size_t>(frameCode(want))];
+                    if (hit >= 0) {
+                        alpha[d][i] = hit;
+                        continue;
+                    }
                 }
                 record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data()));
             }
