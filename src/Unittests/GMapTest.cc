@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace HexEx;
 
 namespace {
@@ -83,6 +85,33 @@ TEST(GMap, ValidatorAcceptsAHexAndCatchesBrokenLinks) {
     v = validateHexGMap(h);
     EXPECT_FALSE(v.valid());
     EXPECT_EQ(v.open_links, 2);  // dart 0 and its former partner
+}
+
+TEST(GMap, CellByCellLabelsAgreeWithGenericOrbits) {
+    GMap<3> g = makeHex();
+    HexOrbitLabels labels;
+    EXPECT_TRUE(validateHexGMap(g, &labels).valid());
+    ASSERT_EQ(labels.cell_offset.size(), 2u);  // involutive map: per-cell dart lists filled
+    EXPECT_EQ(labels.cell_darts.size(), 48u);
+    EXPECT_TRUE(std::is_sorted(labels.cell_darts.begin(), labels.cell_darts.end()));
+    EXPECT_EQ(labels.face_size, std::vector<int>(6, 8));
+    EXPECT_EQ(labels.corner_size, std::vector<int>(8, 6));
+    int nv = 0, nGeneric = 0;
+    EXPECT_EQ(labelVertexOrbits(g, labels, &nv), labelOrbits(g, 0b1110, &nGeneric));
+    EXPECT_EQ(nv, nGeneric);
+    long boundary = 0;
+    EXPECT_EQ(countQuadOrbits(g, labels, &boundary), 6);
+    EXPECT_EQ(boundary, 6);
+    // Not an involution: the general path, without per-cell lists, same answers.
+    GMap<3> h = g;
+    h.link(DartHandle(0), DartHandle(0), 2);
+    HexOrbitLabels broken;
+    validateHexGMap(h, &broken);
+    EXPECT_TRUE(broken.cell_offset.empty());
+    EXPECT_EQ(labelVertexOrbits(h, broken, &nv), labelOrbits(h, 0b1110, &nGeneric));
+    int nq = 0;
+    labelOrbits(h, 0b1011, &nq);
+    EXPECT_EQ(countQuadOrbits(h, broken, &boundary), nq);
 }
 
 TEST(GMap, LabelOrbitsCountsCells) {

@@ -36,9 +36,11 @@ int signOf(double x) { return (x > 0) - (x < 0); }
 
 /// Sign of orient3d(P, Q, a, b) for the line P = z + e^2 e2 + e^3 e3, Q = P + D:
 /// det(D, a-z, b-z) - e^2 h (b-a).e3 + e^3 h (b-a).e2 with h the handedness of (D, e2, e3).
-int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, int h, const Vec3d& a, const Vec3d& b) {
+/// The handedness h is only needed for ties; it is computed then.
+int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b) {
     const int t0 = dirSign(D) * orient2dAxis(z, a, b, dirAxis(D));
     if (t0 != 0) return t0;
+    const int h = frameHandedness(D, e2, e3);
     const int t2 = -h * dirSign(e3) * signOf(b[dirAxis(e3)] - a[dirAxis(e3)]);
     if (t2 != 0) return t2;
     return h * dirSign(e2) * signOf(b[dirAxis(e2)] - a[dirAxis(e2)]);
@@ -72,7 +74,6 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
 int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
-    const int h = frameHandedness(d0, d1, d2);
     int cand[4], n = 0;
     if (i == 0) {
         const Vec3d z = toVec3d(s.z);
@@ -81,17 +82,30 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
             if (T.vol * dirSign(d0) * T.g[j][dirAxis(d0)] >= 0) continue;  // not leaving along d0
             cand[n++] = j;
         }
+        if (n == 1) return cand[0];  // the only face the line can leave through
+        // Edge signs are antisymmetric in (a, b) and shared by adjacent faces: each of the
+        // six edges is evaluated at most once (index: a < b, sign for the pair (a, b)).
+        int edgeSign[4][4];
+        bool known[4][4] = {};
+        auto sign = [&](int a, int b) {
+            const int lo = a < b ? a : b, hi = a < b ? b : a;
+            if (!known[lo][hi]) {
+                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi]);
+                known[lo][hi] = true;
+            }
+            return a < b ? edgeSign[lo][hi] : -edgeSign[lo][hi];
+        };
         for (int k = 0; k < n; ++k) {
             const int j = cand[k];
             int o[3], m = 0;
             for (int q = 0; q < 4; ++q)
                 if (q != j) o[m++] = q;
-            const int s0 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[0]], T.p[o[1]]);
-            const int s1 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[1]], T.p[o[2]]);
-            const int s2 = lineEdgeSign(z, d0, d1, d2, h, T.p[o[2]], T.p[o[0]]);
+            const int s0 = sign(o[0], o[1]);
+            const int s1 = sign(o[1], o[2]);
+            const int s2 = sign(o[2], o[0]);
             if (s0 == s1 && s1 == s2 && s0 != 0) return j;
         }
-        return n == 1 ? cand[0] : -1;
+        return -1;
     }
     const std::array<int, 4> oz = T.sides(toVec3d(s.z));
     for (int j = 0; j < 4; ++j) {
@@ -103,6 +117,7 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
     }
     if (n == 0) return -1;
     if (i == 3) return cand[0];
+    const int h = frameHandedness(d0, d1, d2);
     if (i == 1) return firstRotationalExit(T, cand, n, d2, h, d2);
     return firstRotationalExit(T, cand, n, d0, h, d2);
 }
@@ -170,8 +185,17 @@ constexpr int kMaxSteps = 4096;
 
 long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 
+/// Number of distinct frame codes (frameCode()).
+constexpr int kFrameCodes = 216;
+/// A table index for a frame (d1, d2, d3): each direction is one of 6 values.
+int frameCode(const std::array<AxisDir, 3>& d) { return (d[0] * 6 + d[1]) * 6 + d[2]; }
+/// Entries of a run table (see traceOne()): no dart with that frame, or several.
+constexpr int kNoDart = -1, kSeveralDarts = -2;
+
+/// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
+/// tet at the dart's grid point (kNoDart / kSeveralDarts), replacing the local scan.
 long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-              long dart, int i, long& steps) {
+              long dart, int i, long& steps, const int* run = nullptr) {
     const Dart& D = set.darts[static_cast<std::size_t>(dart)];
     int t = D.tet;
     int s = tets[static_cast<std::size_t>(t)].vol;
@@ -180,7 +204,11 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     int entry = -1;
     // First look among the darts of the same tet at the same grid point: they are stored
     // contiguously around this dart (alpha_1..alpha_3 partners usually are there).
-    if (samePoint(target.z, D.z)) {
+    const int known = run && samePoint(target.z, D.z) ? run[frameCode(target.d)] : kSeveralDarts;
+    if (known >= 0) return known;
+    if (known == kNoDart) {
+        if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+    } else if (samePoint(target.z, D.z)) {
         const std::size_t lo = set.tet_begin[static_cast<std::size_t>(t)], hi = set.tet_begin[static_cast<std::size_t>(t) + 1];
         for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
             if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
@@ -244,16 +272,45 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         if (p == kUnconnected) ++st.unconnected[i];
         else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
     };
+    const auto& D = darts.darts;
+    auto sameRun = [&](std::size_t x, std::size_t y) { return D[x].tet == D[y].tet && samePoint(D[x].z, D[y].z); };
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;  // local: per-chunk counters next to each other would share cache lines
+        // The darts of one tet at one grid point (a run) are contiguous: a table from frame
+        // code to dart answers the lookups of alpha_1..alpha_3 partners there.
+        std::array<int, kFrameCodes> run;
+        run.fill(kNoDart);
+        std::size_t runB = b, runE = b;
         for (std::size_t d = b; d < e; ++d) {
             if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
+            if (d >= runE) {
+                for (std::size_t x = runB; x < runE; ++x) run[static_cast<std::size_t>(frameCode(D[x].d))] = kNoDart;
+                runB = d;
+                while (runB > 0 && sameRun(runB - 1, d)) --runB;
+                runE = d + 1;
+                while (runE < n && sameRun(runE, d)) ++runE;
+                for (std::size_t x = runB; x < runE; ++x) {
+                    int& slot = run[static_cast<std::size_t>(frameCode(D[x].d))];
+                    slot = slot == kNoDart ? static_cast<int>(x) : kSeveralDarts;
+                }
+            }
+            const auto& f = D[d].d;
             for (int i = 0; i < 4; ++i) {
                 if (deferred(d, i)) {
                     alpha[d][i] = kPending;
                     continue;
                 }
-                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
+                if (i > 0) {  // partner at the same grid point: usually in this run
+                    const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
+                                                        : i == 2 ? std::array<AxisDir, 3>{f[0], f[2], f[1]}
+                                                                 : std::array<AxisDir, 3>{f[0], f[1], dirNeg(f[2])};
+                    const int hit = run[static_cast<std::size_t>(frameCode(want))];
+                    if (hit >= 0) {
+                        alpha[d][i] = hit;
+                        continue;
+                    }
+                }
+                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data()));
             }
         }
         part[static_cast<std::size_t>(k)] = st;

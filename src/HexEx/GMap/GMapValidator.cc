@@ -70,7 +70,188 @@ std::vector<int> labelAlternating(const GMap<3>& g, A fa, B fb, std::vector<int>
     return label;
 }
 
+/// Union-find over dense ids; the smaller root survives a union.
+class DenseUnionFind {
+public:
+    /// @p n singleton sets.
+    explicit DenseUnionFind(std::size_t n) : parent_(n) {
+        for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
+    }
+    /// Root of @p x (path halving).
+    int find(int x) {
+        while (parent_[static_cast<std::size_t>(x)] != x) {
+            const int p = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(x)])];
+            parent_[static_cast<std::size_t>(x)] = p;
+            x = p;
+        }
+        return x;
+    }
+    /// Joins the sets of @p x and @p y.
+    void unite(int x, int y) {
+        x = find(x);
+        y = find(y);
+        if (x == y) return;
+        if (x < y) std::swap(x, y);
+        parent_[static_cast<std::size_t>(x)] = y;
+    }
+
+private:
+    std::vector<int> parent_;
+};
+
+/// Walks the orbit of @p s under two involutions a, b (a path or a cycle alternating them),
+/// once from s starting with a, then starting with b; calls visit(x) on every dart not yet
+/// seen (s is marked by the caller); seen(x) tells whether x was visited. Returns the orbit size.
+template <class A, class B, class Seen, class Visit>
+int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
+    int count = 1;
+    for (int firstA = 1; firstA >= 0; --firstA) {
+        int cur = s;
+        bool useA = firstA != 0;
+        while (true) {
+            const int nx = useA ? fa(cur) : fb(cur);
+            if (nx == cur || seen(nx)) break;
+            visit(nx);
+            ++count;
+            cur = nx;
+            useA = !useA;
+        }
+    }
+    return count;
+}
+
+/// Orbit labelling for maps whose darts are all alive and whose links are all involutions:
+/// one breadth-first search per cell (<alpha_0, alpha_1, alpha_2>) whose darts, still in
+/// cache, then give the face, corner and strip orbits of that cell (they never leave it).
+/// Fills the equation 3-6 counts of @p v and, if given, @p out.
+void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out) {
+    const auto& L = g.links();
+    const std::size_t n = L.size();
+    std::vector<int> cell(n, -1), face(n, -1), corner(n, -1);
+    std::vector<int> csize, fsize, ksize, cdarts, coff;
+    cdarts.reserve(n);
+    coff.push_back(0);
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
+    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
+    constexpr int kStripSeen = -2;
+    for (std::size_t s = 0; s < n; ++s) {
+        if (cell[s] >= 0) continue;
+        const int c = static_cast<int>(csize.size());
+        const std::size_t first = cdarts.size();
+        cell[s] = c;
+        cdarts.push_back(static_cast<int>(s));
+        for (std::size_t q = first; q < cdarts.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(cdarts[q])];
+            for (int i = 0; i < 3; ++i) {
+                int& l = cell[static_cast<std::size_t>(r[i])];
+                if (l < 0) {
+                    l = c;
+                    __builtin_prefetch(&L[static_cast<std::size_t>(r[i])]);
+                    cdarts.push_back(r[i]);
+                }
+            }
+        }
+        const int size = static_cast<int>(cdarts.size() - first);
+        csize.push_back(size);
+        if (size != 48) v.eq6_hex += size;
+        int* const begin = cdarts.data() + first;
+        int* const end = begin + size;
+        for (const int* x = begin; x != end; ++x) {
+            if (corner[static_cast<std::size_t>(*x)] != -1) continue;
+            corner[static_cast<std::size_t>(*x)] = kStripSeen;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 0); }, a121,
+                [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
+                [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
+            if (m != 8) v.eq5_strip += m;
+        }
+        for (const int* x = begin; x != end; ++x) {
+            if (face[static_cast<std::size_t>(*x)] >= 0) continue;
+            const int f = static_cast<int>(fsize.size());
+            face[static_cast<std::size_t>(*x)] = f;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
+                [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; },
+                [&](int d) { face[static_cast<std::size_t>(d)] = f; });
+            fsize.push_back(m);
+            if (m != 8) v.eq3_quad += m;
+        }
+        for (const int* x = begin; x != end; ++x) {
+            if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
+            const int k = static_cast<int>(ksize.size());
+            corner[static_cast<std::size_t>(*x)] = k;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
+                [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; },
+                [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
+            ksize.push_back(m);
+            if (m != 6) v.eq4_corner += m;
+        }
+        std::sort(begin, end);
+        coff.push_back(static_cast<int>(cdarts.size()));
+    }
+    if (out) {
+        out->cell = std::move(cell);
+        out->cell_size = std::move(csize);
+        out->face = std::move(face);
+        out->face_size = std::move(fsize);
+        out->corner = std::move(corner);
+        out->corner_size = std::move(ksize);
+        out->cell_darts = std::move(cdarts);
+        out->cell_offset = std::move(coff);
+    }
+}
+
 } // namespace
+
+std::vector<int> labelVertexOrbits(const GMap<3>& g, const HexOrbitLabels& labels, int* n_labels) {
+    if (labels.cell_offset.empty()) return labelOrbits(g, 0b1110, n_labels);
+    const auto& L = g.links();
+    const std::size_t n = L.size();
+    const std::vector<int>& corner = labels.corner;
+    DenseUnionFind uf(labels.corner_size.size());
+    for (std::size_t d = 0; d < n; ++d) uf.unite(corner[d], corner[static_cast<std::size_t>(L[d][3])]);
+    // Number the classes by first appearance in dart order: by their smallest dart.
+    std::vector<int> rootLabel(labels.corner_size.size(), -1);
+    std::vector<int> label(n);
+    int nv = 0;
+    for (std::size_t d = 0; d < n; ++d) {
+        int& l = rootLabel[static_cast<std::size_t>(uf.find(corner[d]))];
+        if (l < 0) l = nv++;
+        label[d] = l;
+    }
+    if (n_labels) *n_labels = nv;
+    return label;
+}
+
+long countQuadOrbits(const GMap<3>& g, const HexOrbitLabels& labels, long* boundary) {
+    const auto& L = g.links();
+    const std::size_t n = L.size();
+    std::vector<int> qlabel;
+    std::vector<char> bq;
+    long nq = 0;
+    if (labels.cell_offset.empty()) {
+        int m = 0;
+        qlabel = labelOrbits(g, 0b1011, &m);
+        nq = m;
+        bq.assign(static_cast<std::size_t>(m), 0);
+        for (std::size_t d = 0; d < n; ++d)
+            if (qlabel[d] >= 0 && L[d][3] == static_cast<int>(d)) bq[static_cast<std::size_t>(qlabel[d])] = 1;
+    } else {
+        const std::vector<int>& face = labels.face;
+        const std::size_t nf = labels.face_size.size();
+        DenseUnionFind uf(nf);
+        for (std::size_t d = 0; d < n; ++d) uf.unite(face[d], face[static_cast<std::size_t>(L[d][3])]);
+        bq.assign(nf, 0);
+        for (std::size_t d = 0; d < n; ++d)
+            if (L[d][3] == static_cast<int>(d)) bq[static_cast<std::size_t>(uf.find(face[d]))] = 1;
+        for (std::size_t f = 0; f < nf; ++f)
+            if (uf.find(static_cast<int>(f)) == static_cast<int>(f)) ++nq;
+    }
+    if (boundary) *boundary = std::count(bq.begin(), bq.end(), 1);
+    return nq;
+}
 
 std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
     const auto& L = g.links();
@@ -122,6 +303,10 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq1_edge_connection += w.eq1_edge_connection;
         v.boundary_darts += w.boundary_darts;
         v.eq2_face_connection += w.eq2_face_connection;
+    }
+    if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
+        labelCellByCell(g, v, labels);
+        return v;
     }
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
         long bad = 0;

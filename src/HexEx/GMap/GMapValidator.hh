@@ -39,16 +39,36 @@ struct HexOrbitLabels {
     std::vector<int> face_size;   ///< darts per face orbit
     std::vector<int> corner_size; ///< darts per corner orbit
     std::vector<int> cell_size;   ///< darts per cell orbit
+    /// The darts of every cell, ascending within a cell: cell c holds
+    /// cell_darts[cell_offset[c] .. cell_offset[c + 1]). Filled (together with exact face and
+    /// corner orbits) only when every dart is alive and every link is an involution;
+    /// otherwise both are empty.
+    std::vector<int> cell_darts;
+    std::vector<int> cell_offset; ///< see cell_darts (n cells + 1 entries, or empty)
 };
 
 /// Checks every alive dart of @p g against equations 1-6 of the paper and the involution
 /// property. Linear time. If @p labels is given, the face, corner and cell orbits are
-/// returned there (labels numbered in order of their smallest dart). @p threads runs the
-/// checks and the independent orbit labelings in parallel; the result does not depend on it.
+/// returned there. Cells are numbered in order of their smallest dart. When every dart is
+/// alive and every link an involution (the usual case), faces and corners are numbered cell
+/// by cell (in the order of the cells) and labels->cell_darts is filled; otherwise faces and
+/// corners are numbered in order of their smallest dart. @p threads runs the checks (and
+/// the independent orbit labelings of the general case) in parallel; the result does not
+/// depend on it.
 GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1);
 
 /// Labels the orbits of @p g for the links in @p mask (bit i = alpha_i): returns a label
 /// per dart (-1 for erased darts), labels numbered 0.. in order of their smallest dart.
 std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels = nullptr);
+
+/// The same labels as labelOrbits(g, 0b1110, n_labels) (vertices: <alpha_1, alpha_2,
+/// alpha_3> orbits, numbered in order of their smallest dart), computed from the corner
+/// orbits in @p labels (joined over alpha_3) when validateHexGMap() filled labels.cell_darts.
+std::vector<int> labelVertexOrbits(const GMap<3>& g, const HexOrbitLabels& labels, int* n_labels = nullptr);
+
+/// Number of <alpha_0, alpha_1, alpha_3> orbits (quads), and in @p boundary how many of
+/// them hold a dart with a free alpha_3; computed from the face orbits in @p labels (joined
+/// over alpha_3) when validateHexGMap() filled labels.cell_darts.
+long countQuadOrbits(const GMap<3>& g, const HexOrbitLabels& labels, long* boundary);
 
 } // namespace HexEx

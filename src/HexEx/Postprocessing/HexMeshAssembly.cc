@@ -57,14 +57,13 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     int nv = 0;
     std::vector<int> vlabel;
     std::vector<int> occLabel;
-    int nq = 0;
-    std::vector<int> qlabel;
+    long nq = 0;
     if (!implicit) {
         // Vertex and quad orbits are independent labellings.
         parallelChunks(2, std::min(2, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
             for (std::size_t job = b; job < e; ++job) {
-                if (job == 0) vlabel = labelOrbits(g, 0b1110, &nv);
-                else qlabel = labelOrbits(g, 0b1011, &nq);
+                if (job == 0) vlabel = labelVertexOrbits(g, labels, &nv);
+                else nq = countQuadOrbits(g, labels, &stats.boundary_quads);
             }
         });
     } else {
@@ -128,10 +127,6 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const int nc = static_cast<int>(labels.cell_size.size());
     if (!implicit) {
         stats.quads = nq;
-        std::vector<char> bq(static_cast<std::size_t>(nq), 0);
-        for (std::size_t d = 0; d < qlabel.size(); ++d)
-            if (qlabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d)) bq[static_cast<std::size_t>(qlabel[d])] = 1;
-        stats.boundary_quads = std::count(bq.begin(), bq.end(), 1);
     } else {
         // Boundary quads: faces with a free alpha_3 that is not a link into an implicit cell.
         std::vector<char> bq(labels.face_size.size(), 0);
@@ -143,11 +138,15 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     }
 
     std::vector<int> off, idx;
-    groupByLabel(clabel, nc, off, idx);
+    // The validator usually grouped the darts by cell already (ascending within a cell).
+    const bool grouped = !implicit && !labels.cell_offset.empty();
+    if (!grouped) groupByLabel(clabel, nc, off, idx);
+    const std::vector<int>& cellOff = grouped ? labels.cell_offset : off;
+    const std::vector<int>& cellDarts = grouped ? labels.cell_darts : idx;
     auto V = [&](int d) { return vlabel[static_cast<std::size_t>(d)]; };
     for (int c = 0; c < nc; ++c) {
-        const int* first = idx.data() + off[static_cast<std::size_t>(c)];
-        const int size = off[static_cast<std::size_t>(c) + 1] - off[static_cast<std::size_t>(c)];
+        const int* first = cellDarts.data() + cellOff[static_cast<std::size_t>(c)];
+        const int size = cellOff[static_cast<std::size_t>(c) + 1] - cellOff[static_cast<std::size_t>(c)];
         bool hex = size == 48;
         int d0 = -1;
         for (int k = 0; k < size && hex; ++k) {
