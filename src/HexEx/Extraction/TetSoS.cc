@@ -2,6 +2,8 @@
 
 #include "../Predicates/ExactPredicates.hh"
 
+#include <cmath>
+
 namespace HexEx {
 
 namespace {
@@ -25,8 +27,22 @@ TetSoS::TetSoS(const std::array<Vec3d, 4>& corners) : p(corners.data()) {
         // o_j(x) = (-1)^(3-j) * orient3d(p_o0, p_o1, p_o2, x); its gradient's k-th component
         // is the 2D orientation of the face projected along axis k.
         const int parity = ((3 - j) % 2 == 0) ? 1 : -1;
-        for (int k = 0; k < 3; ++k)
-            g[j][k] = static_cast<std::int8_t>(parity * orient2dAxis(p[o[0]], p[o[1]], p[o[2]], k));
+        // Component k of (b - a) x (c - a) is orient2dAxis(a, b, c, k). The same filtered
+        // arithmetic inline, with the differences shared by the three axes; only uncertain
+        // components call the predicate.
+        const Vec3d& a = p[o[0]];
+        const Vec3d u = p[o[1]] - a, v = p[o[2]] - a;
+        for (int k = 0; k < 3; ++k) {
+            const int i = (k + 1) % 3, m = (k + 2) % 3;
+            const double t1 = u[i] * v[m], t2 = u[m] * v[i];
+            const double det = t1 - t2, bound = 5e-16 * (std::fabs(t1) + std::fabs(t2));
+            int sgn;
+            if (det > bound) sgn = 1;
+            else if (-det > bound) sgn = -1;
+            else if ((u[i] == 0 || v[m] == 0) && (u[m] == 0 || v[i] == 0)) sgn = 0;
+            else sgn = orient2dAxis(a, p[o[1]], p[o[2]], k);
+            g[j][k] = static_cast<std::int8_t>(parity * sgn);
+        }
     }
 }
 

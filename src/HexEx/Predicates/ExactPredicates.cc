@@ -51,7 +51,8 @@ namespace {
 inline bool smallDyadic(const Vec3d& p) {
     for (int k = 0; k < 3; ++k) {
         const double x = p[k] * 64.0;
-        if (!(std::fabs(x) <= 32768.0) || x != std::floor(x)) return false;
+        // |x| <= 2^15 first (also rejects NaN), so the integer conversion is exact and cheap.
+        if (!(std::fabs(x) <= 32768.0) || x != static_cast<double>(static_cast<int>(x))) return false;
     }
     return true;
 }
