@@ -355,19 +355,34 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     });
     if (useImplicit) {
         // The implicit cells, as 8 corner occurrences in VTK order (the tet's chart is
-        // right-handed: proper tets only), and their faces on the boundary.
-        for (const auto& di : ds.dense) {
-            if (di.flags.empty()) continue;
+        // right-handed: proper tets only), and their faces on the boundary. Work items are
+        // x-slabs of the dense boxes: counted, then filled at their prefix offsets (the
+        // order is the sequential one for any thread count).
+        struct Slab {
+            std::size_t dense, x;
+            long count = 0, boundary_quads = 0;
+        };
+        std::vector<Slab> slabs;
+        for (std::size_t s = 0; s < ds.dense.size(); ++s)
+            if (!ds.dense[s].flags.empty())
+                for (int x = 0; x < ds.dense[s].dims[0]; ++x) slabs.push_back({s, static_cast<std::size_t>(x)});
+        auto forSlab = [&](Slab& sl, bool fill, std::size_t at) {
+            const DartSet::DenseIndex& di = ds.dense[sl.dense];
             unsigned boundaryFaces = 0;
             for (int j = 0; j < 4; ++j)
                 if (mesh.is_boundary(TetMesh::halfface(CellHandle(di.tet), j))) boundaryFaces |= 1u << j;
-            const long dy = di.dims[1], dz = di.dims[2];
-            const long X = dy * dz, Y = dz, Z = 1;
-            const long step[3] = {X, Y, Z};
-            for (std::size_t l = 0; l < di.flags.size(); ++l) {
+            const int dy = di.dims[1], dz = di.dims[2];
+            const int X = dy * dz, Y = dz, Z = 1;
+            const int step[3] = {X, Y, Z};
+            const std::size_t l0 = sl.x * static_cast<std::size_t>(X);
+            for (std::size_t l = l0; l < l0 + static_cast<std::size_t>(X); ++l) {
                 if (!(di.flags[l] & 2)) continue;
-                const long b = di.occ_base + static_cast<long>(l);
-                implicit.cells.push_back({b, b + X, b + X + Y, b + Y, b + Z, b + X + Z, b + X + Y + Z, b + Y + Z});
+                if (fill) {
+                    const int c = static_cast<int>(di.occ_base) + static_cast<int>(l);
+                    implicit.cells[at++] = {c, c + X, c + X + Y, c + Y, c + Z, c + X + Z, c + X + Y + Z, c + Y + Z};
+                    continue;
+                }
+                ++sl.count;
                 if (!boundaryFaces) continue;
                 // A face of the cell is on the boundary if its 4 corners share a boundary face.
                 for (int a = 0; a < 3; ++a)
@@ -375,15 +390,27 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                         unsigned common = boundaryFaces;
                         for (int q = 0; q < 8; ++q) {
                             if (((q >> a) & 1) != side) continue;
-                            long lq = static_cast<long>(l);
+                            std::size_t lq = l;
                             for (int k = 0; k < 3; ++k)
-                                if ((q >> k) & 1) lq += step[k];
-                            common &= static_cast<unsigned>(di.flags[static_cast<std::size_t>(lq)]) >> 4;
+                                if ((q >> k) & 1) lq += static_cast<std::size_t>(step[k]);
+                            common &= static_cast<unsigned>(di.flags[lq]) >> 4;
                         }
-                        if (common) ++implicit.boundary_quads;
+                        if (common) ++sl.boundary_quads;
                     }
             }
+        };
+        parallelChunks(slabs.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t k = b; k < e; ++k) forSlab(slabs[k], false, 0);
+        });
+        std::vector<std::size_t> slabStart(slabs.size() + 1, 0);
+        for (std::size_t k = 0; k < slabs.size(); ++k) {
+            slabStart[k + 1] = slabStart[k] + static_cast<std::size_t>(slabs[k].count);
+            implicit.boundary_quads += slabs[k].boundary_quads;
         }
+        implicit.cells.resize(slabStart.back());
+        parallelChunks(slabs.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t k = b; k < e; ++k) forSlab(slabs[k], true, slabStart[k]);
+        });
         implicit.joined_occurrences = joinOccurrencesAcrossFaces(mesh, tr, ds, threads);
         implicit.position = [&](long occ) {
             // The dense index holding this occurrence: the last with occ_base <= occ.

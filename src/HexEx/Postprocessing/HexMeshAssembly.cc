@@ -81,7 +81,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         }
         for (const auto& jo : implicit->joined_occurrences) uf.unite(ndi + jo.first, ndi + jo.second);
         for (const auto& c : implicit->cells)
-            for (long o : c) used[static_cast<std::size_t>(o)] = 1;
+            for (int o : c) used[static_cast<std::size_t>(o)] = 1;
         // Labels by first appearance; the root's slot in parent is reused for its label
         // (encoded as -2 - label) once every class is final.
         vlabel.assign(nd, -1);

@@ -42,7 +42,7 @@ struct ImplicitCells {
     std::vector<std::pair<int, int>> joined_occurrences;
     long boundary_quads = 0;                      ///< faces of implicit cells on the boundary
     /// The implicit cells, each as its 8 corner occurrences in VTK order.
-    std::vector<std::array<long, 8>> cells;
+    std::vector<std::array<int, 8>> cells;
     /// 3D position of an occurrence (used for vertices that no explicit dart touches).
     std::function<Vec3d(long)> position;
 };
