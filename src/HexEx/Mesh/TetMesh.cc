@@ -1,6 +1,7 @@
 #include "TetMesh.hh"
 
 #include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
 
 #include <algorithm>
 #include <sstream>
@@ -56,7 +57,7 @@ EdgeHandle TetMesh::find_edge(VertexHandle a, VertexHandle b) const {
     return EdgeHandle();
 }
 
-void TetMesh::build_adjacency() {
+void TetMesh::build_adjacency(int threads) {
     const std::size_t nv = positions_.size(), nc = cells_.size();
     // Vertex -> cells (counting sort keeps cells ascending).
     vc_off_.assign(nv + 1, 0);
@@ -70,49 +71,58 @@ void TetMesh::build_adjacency() {
             for (auto v : cells_[c]) vc_idx_[fill[v.uidx()]++] = static_cast<int>(c);
     }
 
-    // Opposite halffaces: search the star of the face's least-used vertex.
-    opposite_.assign(4 * nc, -2);  // -2: not yet searched, -1: boundary
-    for (std::size_t c = 0; c < nc; ++c) {
-        for (int i = 0; i < 4; ++i) {
-            const std::size_t hf = 4 * c + i;
-            if (opposite_[hf] != -2) continue;
-            VertexHandle fv[3];
-            for (int k = 0; k < 3; ++k) fv[k] = cells_[c][kFaceCorners[i][k]];
-            int best = 0;
-            for (int k = 1; k < 3; ++k)
-                if (vc_off_[fv[k].uidx() + 1] - vc_off_[fv[k].uidx()] <
-                    vc_off_[fv[best].uidx() + 1] - vc_off_[fv[best].uidx()])
-                    best = k;
-            int found = -1, n_found = 0;
-            for (int o = vc_off_[fv[best].uidx()]; o < vc_off_[fv[best].uidx() + 1]; ++o) {
-                const int c2 = vc_idx_[o];
-                if (c2 == static_cast<int>(c)) continue;
-                const auto& cv = cells_[c2];
-                int mask = 0;
-                for (int k = 0; k < 3; ++k)
-                    for (int j = 0; j < 4; ++j)
-                        if (cv[j] == fv[k]) mask |= 1 << j;
-                // Three of the four corners match: the fourth (missing bit) is the opposite corner.
-                static constexpr int kMissing[16] = {-1, -1, -1, -1, -1, -1, -1, 3, -1, -1, -1, 2, -1, 1, 0, -1};
-                if (kMissing[mask] >= 0) {
-                    ++n_found;
-                    found = 4 * c2 + kMissing[mask];
+    // Opposite halffaces. Each shared face is found once, from the tet with the smaller
+    // index: halfface (c, i) searches the star of its least-used vertex for a tet c2 > c
+    // with the same three vertices (tets in parallel, each writing only its own slots),
+    // then the matches are linked both ways.
+    std::vector<int> up(4 * nc, -1);
+    const int chunks = nc < 50000 ? 1 : resolveThreadCount(threads);
+    parallelChunks(nc, chunks, [&](int, std::size_t cb, std::size_t ce) {
+        for (std::size_t c = cb; c < ce; ++c)
+            for (int i = 0; i < 4; ++i) {
+                VertexHandle fv[3];
+                for (int k = 0; k < 3; ++k) fv[k] = cells_[c][kFaceCorners[i][k]];
+                int best = 0;
+                for (int k = 1; k < 3; ++k)
+                    if (vc_off_[fv[k].uidx() + 1] - vc_off_[fv[k].uidx()] <
+                        vc_off_[fv[best].uidx() + 1] - vc_off_[fv[best].uidx()])
+                        best = k;
+                int found = -1, n_found = 0;
+                for (int o = vc_off_[fv[best].uidx()]; o < vc_off_[fv[best].uidx() + 1]; ++o) {
+                    const int c2 = vc_idx_[o];
+                    if (c2 <= static_cast<int>(c)) continue;
+                    const auto& cv = cells_[static_cast<std::size_t>(c2)];
+                    int mask = 0;
+                    for (int k = 0; k < 3; ++k)
+                        for (int j = 0; j < 4; ++j)
+                            if (cv[j] == fv[k]) mask |= 1 << j;
+                    // Three of the four corners match: the fourth (missing bit) is the opposite corner.
+                    static constexpr int kMissing[16] = {-1, -1, -1, -1, -1, -1, -1, 3, -1, -1, -1, 2, -1, 1, 0, -1};
+                    if (kMissing[mask] >= 0) {
+                        ++n_found;
+                        found = 4 * c2 + kMissing[mask];
+                    }
                 }
+                if (n_found > 1) {
+                    std::ostringstream os;
+                    os << "non-manifold mesh: face (" << fv[0] << ", " << fv[1] << ", " << fv[2] << ") of tet " << c
+                       << " is shared by " << (n_found + 1) << " tets";
+                    throw InputError(os.str());
+                }
+                up[4 * c + static_cast<std::size_t>(i)] = found;
             }
-            if (n_found > 1) {
-                std::ostringstream os;
-                os << "non-manifold mesh: face (" << fv[0] << ", " << fv[1] << ", " << fv[2] << ") of tet " << c
-                   << " is shared by " << (n_found + 1) << " tets";
-                throw InputError(os.str());
-            }
-            if (found >= 0 && opposite_[found] != -2) {
-                std::ostringstream os;
-                os << "non-manifold mesh: tet " << c << " repeats a face of tet " << found / 4;
-                throw InputError(os.str());
-            }
-            opposite_[hf] = found;
-            if (found >= 0) opposite_[found] = static_cast<int>(hf);
+    });
+    opposite_.assign(4 * nc, -1);  // -1: boundary
+    for (std::size_t hf = 0; hf < 4 * nc; ++hf) {
+        const int found = up[hf];
+        if (found < 0) continue;
+        if (opposite_[hf] >= 0 || opposite_[static_cast<std::size_t>(found)] >= 0) {
+            std::ostringstream os;
+            os << "non-manifold mesh: tet " << hf / 4 << " repeats a face of tet " << found / 4;
+            throw InputError(os.str());
         }
+        opposite_[hf] = found;
+        opposite_[static_cast<std::size_t>(found)] = static_cast<int>(hf);
     }
 
     // Faces.

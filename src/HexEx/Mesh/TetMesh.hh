@@ -66,7 +66,9 @@ public:
 
     /// Builds edges, faces, opposite halffaces and incidence lists.
     /// Throws InputError naming the elements if a face is shared by more than two tets.
-    void build_adjacency();
+    /// @p threads parallelizes the face matching of large meshes (0 = all hardware threads);
+    /// the result does not depend on it.
+    void build_adjacency(int threads = 0);
     /// True once build_adjacency() ran after the last change.
     bool has_adjacency() const { return adjacency_built_; }
 
