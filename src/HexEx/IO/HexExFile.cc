@@ -6,6 +6,7 @@
 #include "TextParsing.hh"
 
 #include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
 #include "../Predicates/ExactPredicates.hh"
 
 #include <algorithm>
@@ -69,6 +70,9 @@ public:
 
     /// Bytes not yet consumed.
     std::size_t remaining() const { return text_.size() - pos_; }
+
+    /// Current byte offset.
+    std::size_t position() const { return pos_; }
 
     /// Next token; @p what() describes the expected item for the end-of-file message.
     template <class What>
@@ -146,6 +150,88 @@ std::string listTets(const std::vector<std::size_t>& list, const std::vector<int
     return s;
 }
 
+/// Tokens per tet: 4 vertex indices and 12 parameters.
+constexpr int kTetTokens = 16;
+
+/// Fast path for the tet section of large files. The text from @p begin (line
+/// @p firstLine) is cut into chunks at token boundaries; tokens and line breaks are counted
+/// per chunk, then every chunk parses its tokens straight into place (token g is field
+/// g % 16 of tet g / 16). Returns false on anything unusual (wrong token count, a malformed
+/// or non-finite number, an index out of range, a repeated vertex): the caller then runs
+/// the sequential parser, which reports the exact error.
+bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, long long nv, long long nc,
+                       std::vector<std::array<int, 4>>& cells, CornerParams& params, std::vector<int>& lines,
+                       int threads) {
+    const std::size_t n = text.size();
+    const int k = 4 * threads;  // more chunks than threads: lines are not all equally long
+    std::vector<std::size_t> cut(static_cast<std::size_t>(k) + 1, n);
+    cut[0] = begin;
+    for (int i = 1; i < k; ++i) {
+        std::size_t p = std::max(begin + (n - begin) * static_cast<std::size_t>(i) / static_cast<std::size_t>(k),
+                                 cut[static_cast<std::size_t>(i) - 1]);
+        while (p < n && !isSpace(text[p])) ++p;  // a cut never splits a token
+        cut[static_cast<std::size_t>(i)] = p;
+    }
+    std::vector<long long> tokens(static_cast<std::size_t>(k), 0), breaks(static_cast<std::size_t>(k), 0);
+    parallelChunks(static_cast<std::size_t>(k), threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) {
+            bool inToken = false;
+            for (std::size_t p = cut[i]; p < cut[i + 1]; ++p) {
+                const bool sp = isSpace(text[p]);
+                if (!sp && !inToken) ++tokens[i];
+                if (text[p] == '\n') ++breaks[i];
+                inToken = !sp;
+            }
+        }
+    });
+    std::vector<long long> firstToken(static_cast<std::size_t>(k) + 1, 0), lineAt(static_cast<std::size_t>(k) + 1, firstLine);
+    for (std::size_t i = 0; i < static_cast<std::size_t>(k); ++i) {
+        firstToken[i + 1] = firstToken[i] + tokens[i];
+        lineAt[i + 1] = lineAt[i] + breaks[i];
+    }
+    if (firstToken.back() != kTetTokens * nc || lineAt.back() > INT_MAX) return false;
+    cells.resize(static_cast<std::size_t>(nc));
+    params.resize(static_cast<std::size_t>(nc));
+    lines.resize(static_cast<std::size_t>(nc));
+    std::vector<char> ok(static_cast<std::size_t>(k), 1);
+    parallelChunks(static_cast<std::size_t>(k), threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e && ok[i]; ++i) {
+            long long g = firstToken[i];
+            int line = static_cast<int>(lineAt[i]);
+            std::size_t p = cut[i];
+            while (ok[i]) {
+                while (p < cut[i + 1] && isSpace(text[p])) {
+                    if (text[p] == '\n') ++line;
+                    ++p;
+                }
+                if (p >= cut[i + 1]) break;
+                const std::size_t start = p;
+                while (p < cut[i + 1] && !isSpace(text[p])) ++p;
+                const std::string_view tok = text.substr(start, p - start);
+                const auto c = static_cast<std::size_t>(g / kTetTokens);
+                const int f = static_cast<int>(g % kTetTokens);
+                ++g;
+                if (f < 4) {
+                    long long idx = 0;
+                    if (detail::parseInteger(tok, idx) != detail::NumberParse::Ok || idx < 0 || idx >= nv) ok[i] = 0;
+                    cells[c][static_cast<std::size_t>(f)] = static_cast<int>(idx);
+                    if (f == 0) lines[c] = line;
+                } else {
+                    double value = 0;
+                    if (detail::parseReal(tok, value) != detail::NumberParse::Ok || !std::isfinite(value)) ok[i] = 0;
+                    params[c][static_cast<std::size_t>((f - 4) / 3)][(f - 4) % 3] = value;
+                }
+            }
+        }
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    for (const auto& cv : cells)
+        for (int a = 0; a < 4; ++a)
+            for (int b = a + 1; b < 4; ++b)
+                if (cv[static_cast<std::size_t>(a)] == cv[static_cast<std::size_t>(b)]) return false;
+    return true;
+}
+
 } // namespace
 
 ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name, ReadReport* report) {
@@ -176,10 +262,20 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     CornerParams params;
     std::vector<int> lines;  // line of each tet's first token
     in.setNote("file declares " + std::to_string(nc) + " tets");
+    // Large files: parallel fast path; if it finds anything wrong, the sequential parser
+    // below runs from the same place and reports the exact error.
+    constexpr long long kParallelMinTets = 20000;
+    const bool parsed = nc >= kParallelMinTets &&
+                        parseTetsParallel(text, in.position(), in.line(), nv, nc, cells, params, lines, resolveThreadCount(0));
+    if (!parsed) {
+        cells.clear();
+        params.clear();
+        lines.clear();
+    }
     cells.reserve(ncReserve);
     params.reserve(ncReserve);
     lines.reserve(ncReserve);
-    for (long long c = 0; c < nc; ++c) {
+    for (long long c = parsed ? nc : 0; c < nc; ++c) {
         const auto tetDesc = [&] { return "tet " + std::to_string(c); };
         std::array<int, 4> cv;
         for (int i = 0; i < 4; ++i) {
@@ -207,7 +303,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         cells.push_back(cv);
         params.push_back(cp);
     }
-    if (in.atToken()) in.fail(in.line(), "unexpected data after last tet");
+    if (!parsed && in.atToken()) in.fail(in.line(), "unexpected data after last tet");
 
     // 3D orientation (exact): all positive, or all negative (mirrored), nothing else.
     std::vector<std::size_t> negative, positive;

@@ -141,31 +141,49 @@ void TetMesh::build_adjacency(int threads) {
         if (opp < 0) ++n_boundary_faces_;
     }
 
-    // Edges, grouped by smaller endpoint and sorted by the larger one.
-    edges_.clear();
-    ve_off_.assign(nv + 1, 0);
-    ve_idx_.clear();
-    std::vector<int> nbrs;
-    for (std::size_t v = 0; v < nv; ++v) {
+    // Edges, grouped by smaller endpoint and sorted by the larger one: per vertex the
+    // larger neighbours are counted, then (after a prefix sum) written, both in parallel.
+    auto largerNeighbours = [&](std::size_t v, std::vector<int>& nbrs) {
         nbrs.clear();
         for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
-            for (auto w : cells_[vc_idx_[o]])
+            for (auto w : cells_[static_cast<std::size_t>(vc_idx_[o])])
                 if (w.idx() > static_cast<int>(v)) nbrs.push_back(w.idx());
         std::sort(nbrs.begin(), nbrs.end());
         nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
-        for (int w : nbrs) {
-            ve_idx_.push_back(static_cast<int>(edges_.size()));
-            edges_.push_back({VertexHandle(static_cast<int>(v)), VertexHandle(w)});
+    };
+    const int vchunks = nv < 20000 ? 1 : resolveThreadCount(threads);
+    ve_off_.assign(nv + 1, 0);
+    parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
+        std::vector<int> nbrs;
+        for (std::size_t v = b; v < e; ++v) {
+            largerNeighbours(v, nbrs);
+            ve_off_[v + 1] = static_cast<int>(nbrs.size());
         }
-        ve_off_[v + 1] = static_cast<int>(ve_idx_.size());
-    }
+    });
+    for (std::size_t v = 0; v < nv; ++v) ve_off_[v + 1] += ve_off_[v];
+    const std::size_t ne = static_cast<std::size_t>(ve_off_[nv]);
+    edges_.resize(ne);
+    ve_idx_.resize(ne);
+    parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
+        std::vector<int> nbrs;
+        for (std::size_t v = b; v < e; ++v) {
+            largerNeighbours(v, nbrs);
+            for (std::size_t k = 0; k < nbrs.size(); ++k) {
+                const std::size_t id = static_cast<std::size_t>(ve_off_[v]) + k;
+                ve_idx_[id] = static_cast<int>(id);
+                edges_[id] = {VertexHandle(static_cast<int>(v)), VertexHandle(nbrs[k])};
+            }
+        }
+    });
     cell_edges_.resize(6 * nc);
-    for (std::size_t c = 0; c < nc; ++c)
-        for (int k = 0; k < 6; ++k)
-            cell_edges_[6 * c + k] = find_edge(cells_[c][kEdgeCorners[k][0]], cells_[c][kEdgeCorners[k][1]]).idx();
+    parallelChunks(nc, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t c = b; c < e; ++c)
+            for (int k = 0; k < 6; ++k)
+                cell_edges_[6 * c + static_cast<std::size_t>(k)] =
+                    find_edge(cells_[c][kEdgeCorners[k][0]], cells_[c][kEdgeCorners[k][1]]).idx();
+    });
 
     // Edge -> cells in cyclic order: walk across the faces that contain the edge.
-    const std::size_t ne = edges_.size();
     ec_off_.assign(ne + 1, 0);
     for (std::size_t c = 0; c < nc; ++c)
         for (int k = 0; k < 6; ++k) ++ec_off_[cell_edges_[6 * c + k] + 1];
@@ -188,7 +206,9 @@ void TetMesh::build_adjacency(int threads) {
             if (start[e] < 0) start[e] = static_cast<int>(c);
         }
     boundary_edge_.assign(ne, 0);
-    for (std::size_t e = 0; e < ne; ++e) {
+    // Every edge fills only its own slots: edges in parallel.
+    parallelChunks(ne, ne < 20000 ? 1 : resolveThreadCount(threads), [&](int, std::size_t eb, std::size_t ee) {
+    for (std::size_t e = eb; e < ee; ++e) {
         int c = start[e], in_hf = start_hf[e];
         if (in_hf >= 0) boundary_edge_[e] = 1;
         int pos = ec_off_[e];
@@ -212,6 +232,7 @@ void TetMesh::build_adjacency(int threads) {
         }
         // A non-manifold edge leaves slots unfilled; check_manifold() reports it.
     }
+    });
 
     boundary_vertex_.assign(nv, 0);
     for (std::size_t hf = 0; hf < 4 * nc; ++hf)

@@ -1,0 +1,171 @@
+/// @file HexExFileParallelTest.cc
+/// Tests of the .hexex reader's parallel path for large tet sections (20,000 tets or
+/// more): the same mesh as written, any token layout, and for every kind of defect the same
+/// file:line:reason message the sequential parser gives.
+
+#include <HexEx/Core/Error.hh>
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/IO/HexExFile.hh>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace HexEx;
+
+namespace {
+
+/// A cube of 6 * 15^3 = 20,250 tets: large enough for the parallel path.
+const ParametrizedTetMesh& largeMesh() {
+    static const ParametrizedTetMesh pm = generateCube(15, 3);
+    return pm;
+}
+
+/// The mesh's file split into lines (without line breaks).
+std::vector<std::string> largeLines() {
+    std::ostringstream os;
+    writeHexExStream(os, largeMesh());
+    std::vector<std::string> lines;
+    std::istringstream is(os.str());
+    for (std::string l; std::getline(is, l);) lines.push_back(l);
+    return lines;
+}
+
+std::string join(const std::vector<std::string>& lines, const char* sep = "\n") {
+    std::string s;
+    for (const auto& l : lines) s += l + sep;
+    return s;
+}
+
+/// Index in largeLines() of the line of tet @p c (line numbers are this + 1).
+std::size_t tetLineIndex(std::size_t c) { return largeMesh().mesh.n_vertices() + 2 + c; }
+
+/// Tokens of one line.
+std::vector<std::string> tokens(const std::string& line) {
+    std::istringstream is(line);
+    std::vector<std::string> t;
+    for (std::string s; is >> s;) t.push_back(s);
+    return t;
+}
+
+std::string joinTokens(const std::vector<std::string>& t) {
+    std::string s;
+    for (std::size_t i = 0; i < t.size(); ++i) s += (i ? " " : "") + t[i];
+    return s;
+}
+
+std::string errorOf(const std::string& text) {
+    try {
+        readHexExBuffer(text, "big.hexex");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no InputError";
+    return "";
+}
+
+void expectError(const std::string& text, std::size_t line, const std::string& reason) {
+    const std::string msg = errorOf(text);
+    const std::string prefix = "big.hexex:" + std::to_string(line) + ": ";
+    EXPECT_EQ(msg.rfind(prefix, 0), 0u) << "message: " << msg << "\nexpected prefix: " << prefix;
+    EXPECT_NE(msg.find(reason), std::string::npos) << "message: " << msg << "\nexpected reason: " << reason;
+}
+
+void expectSameMesh(const ParametrizedTetMesh& a, const ParametrizedTetMesh& b) {
+    ASSERT_EQ(a.mesh.n_cells(), b.mesh.n_cells());
+    ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices());
+    for (std::size_t c = 0; c < a.mesh.n_cells(); ++c) {
+        ASSERT_EQ(a.mesh.cell_vertices(CellHandle(static_cast<int>(c))), b.mesh.cell_vertices(CellHandle(static_cast<int>(c))))
+            << "tet " << c;
+        for (int i = 0; i < 4; ++i)
+            for (int k = 0; k < 3; ++k) ASSERT_EQ(a.params[c][i][k], b.params[c][i][k]) << "tet " << c;
+    }
+}
+
+} // namespace
+
+TEST(HexExFileParallel, ReadsWhatWasWritten) {
+    const auto lines = largeLines();
+    ASSERT_GE(largeMesh().mesh.n_cells(), 20000u);
+    const auto pm = readHexExBuffer(join(lines), "big.hexex");
+    expectSameMesh(largeMesh(), pm);
+    EXPECT_TRUE(pm.mesh.has_adjacency());
+}
+
+TEST(HexExFileParallel, AnyLayout) {
+    // Every tet over three lines, CRLF line ends and tabs: the same mesh.
+    auto lines = largeLines();
+    std::vector<std::string> out(lines.begin(), lines.begin() + static_cast<long>(tetLineIndex(0)));
+    for (std::size_t c = 0; c < largeMesh().mesh.n_cells(); ++c) {
+        const auto t = tokens(lines[tetLineIndex(c)]);
+        out.push_back(t[0] + "\t" + t[1] + " " + t[2] + " " + t[3]);
+        out.push_back(joinTokens(std::vector<std::string>(t.begin() + 4, t.begin() + 10)));
+        out.push_back("  " + joinTokens(std::vector<std::string>(t.begin() + 10, t.end())) + "\t");
+    }
+    expectSameMesh(largeMesh(), readHexExBuffer(join(out, "\r\n"), "big.hexex"));
+    // Line numbers follow the layout: a bad token in the third line of tet 15000.
+    const std::size_t third = tetLineIndex(0) + 3 * 15000 + 2;
+    out[third] = "  x" + out[third].substr(2);
+    expectError(join(out, "\r\n"), third + 1, "expected a number for parameter");
+}
+
+TEST(HexExFileParallel, MalformedNumberNamesTetAndLine) {
+    auto lines = largeLines();
+    auto t = tokens(lines[tetLineIndex(12345)]);
+    t[8] = "0.5abc";  // parameter v of corner 1 (tokens: 4 indices, then u v w per corner)
+    lines[tetLineIndex(12345)] = joinTokens(t);
+    expectError(join(lines), tetLineIndex(12345) + 1,
+                "expected a number for parameter v of corner 1 of tet 12345, got '0.5abc'");
+}
+
+TEST(HexExFileParallel, NaNIsRefused) {
+    auto lines = largeLines();
+    auto t = tokens(lines[tetLineIndex(20000)]);
+    t[15] = "nan";
+    lines[tetLineIndex(20000)] = joinTokens(t);
+    expectError(join(lines), tetLineIndex(20000) + 1, "NaN or infinite value 'nan' for parameter w of corner 3 of tet 20000");
+}
+
+TEST(HexExFileParallel, VertexIndexOutOfRange) {
+    auto lines = largeLines();
+    auto t = tokens(lines[tetLineIndex(15000)]);
+    const std::string nv = std::to_string(largeMesh().mesh.n_vertices());
+    t[2] = nv;
+    lines[tetLineIndex(15000)] = joinTokens(t);
+    expectError(join(lines), tetLineIndex(15000) + 1, "vertex index " + nv + " of tet 15000 out of range [0, " + nv + ")");
+}
+
+TEST(HexExFileParallel, RepeatedVertex) {
+    auto lines = largeLines();
+    auto t = tokens(lines[tetLineIndex(17000)]);
+    t[3] = t[1];
+    lines[tetLineIndex(17000)] = joinTokens(t);
+    expectError(join(lines), tetLineIndex(17000) + 1, "tet 17000 repeats vertex " + t[1]);
+}
+
+TEST(HexExFileParallel, TruncatedAndTrailingData) {
+    auto lines = largeLines();
+    const std::size_t last = tetLineIndex(largeMesh().mesh.n_cells() - 1);
+    auto t = tokens(lines[last]);
+    t.pop_back();
+    auto cut = lines;
+    cut[last] = joinTokens(t);
+    expectError(join(cut), last + 1, "unexpected end of file: expected parameter w of corner 3 of tet 20249 (file declares 20250 tets)");
+    auto extra = lines;
+    extra.push_back("7");
+    expectError(join(extra), last + 2, "unexpected data after last tet");
+}
+
+TEST(HexExFileParallel, InvertedTetListedWithItsLine) {
+    // Swapping two corners (with their parameters) inverts one tet in 3D.
+    auto lines = largeLines();
+    auto t = tokens(lines[tetLineIndex(9999)]);
+    std::swap(t[0], t[1]);
+    for (int k = 0; k < 3; ++k) std::swap(t[static_cast<std::size_t>(4 + k)], t[static_cast<std::size_t>(7 + k)]);
+    lines[tetLineIndex(9999)] = joinTokens(t);
+    expectError(join(lines), tetLineIndex(9999) + 1,
+                "1 of 20250 tets are inverted in 3D (negatively oriented): tet 9999 (line " +
+                    std::to_string(tetLineIndex(9999) + 1) + ")");
+}
