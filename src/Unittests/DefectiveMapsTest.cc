@@ -151,6 +151,7 @@ TEST(DefectiveMaps, NoisyCubeIsThreadIndependentWithPolyhedra) {
     const auto r1 = run(pm, h1, 1);
     EXPECT_GT(h1.polyhedra.size(), 0u);  // the test must exercise non-hex cells
     EXPECT_GT(h1.hexes.size(), 3000u);   // and enough cells for several chunks
+    EXPECT_GT(r1.darts.asymmetric_links, 0);  // and one-sided links (partners found by several darts)
     for (int threads : {2, 3, 4}) {
         SCOPED_TRACE("threads = " + std::to_string(threads));
         HexMesh h;
@@ -163,5 +164,7 @@ TEST(DefectiveMaps, NoisyCubeIsThreadIndependentWithPolyhedra) {
         EXPECT_EQ(r.output.quads, r1.output.quads);
         EXPECT_EQ(r.output.non_hex_cells, r1.output.non_hex_cells);
         EXPECT_EQ(r.validation.summary(), r1.validation.summary());
+        EXPECT_EQ(r.darts.asymmetric_links, r1.darts.asymmetric_links);
+        EXPECT_EQ(r.output.unconnected_darts, r1.output.unconnected_darts);
     }
 }
