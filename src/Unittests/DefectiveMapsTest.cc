@@ -9,8 +9,10 @@
 
 #include "TestMeshChecks.hh"
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 using namespace HexEx;
 
@@ -137,4 +139,32 @@ TEST(DefectiveMaps, S1PolycubeScale1) {
     EXPECT_EQ(r.output.vertices, 13274);
     EXPECT_EQ(r.output.non_hex_cells, 0);
     EXPECT_TRUE(r.valid_all_hex) << r.validation.summary();
+}
+
+// Noise that breaks the charts' consistency across faces gives non-hex cells and boundary
+// vertices whose darts disagree; with thousands of cells the validator, the cell assembly
+// and the vertex merging run in several chunks: the output must not depend on the threads.
+TEST(DefectiveMaps, NoisyCubeIsThreadIndependentWithPolyhedra) {
+    auto pm = generateCube(16, 16);
+    applyParameterNoise(pm, 0.2, 7);
+    HexMesh h1;
+    const auto r1 = run(pm, h1, 1);
+    EXPECT_GT(h1.polyhedra.size(), 0u);  // the test must exercise non-hex cells
+    EXPECT_GT(h1.hexes.size(), 3000u);   // and enough cells for several chunks
+    EXPECT_GT(r1.darts.asymmetric_links, 0);  // and one-sided links (partners found by several darts)
+    for (int threads : {2, 3, 4}) {
+        SCOPED_TRACE("threads = " + std::to_string(threads));
+        HexMesh h;
+        const auto r = run(pm, h, threads);
+        EXPECT_EQ(h.hexes, h1.hexes);
+        ASSERT_EQ(h.vertices.size(), h1.vertices.size());
+        EXPECT_TRUE(std::equal(h.vertices.begin(), h.vertices.end(), h1.vertices.begin()));
+        ASSERT_EQ(h.polyhedra.size(), h1.polyhedra.size());
+        for (std::size_t p = 0; p < h.polyhedra.size(); ++p) EXPECT_EQ(h.polyhedra[p].faces, h1.polyhedra[p].faces);
+        EXPECT_EQ(r.output.quads, r1.output.quads);
+        EXPECT_EQ(r.output.non_hex_cells, r1.output.non_hex_cells);
+        EXPECT_EQ(r.validation.summary(), r1.validation.summary());
+        EXPECT_EQ(r.darts.asymmetric_links, r1.darts.asymmetric_links);
+        EXPECT_EQ(r.output.unconnected_darts, r1.output.unconnected_darts);
+    }
 }

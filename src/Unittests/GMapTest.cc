@@ -3,10 +3,12 @@
 #include <HexEx/GMap/GMap.hh>
 #include <HexEx/GMap/GMapValidator.hh>
 #include <HexEx/Postprocessing/DartAnnihilation.hh>
+#include <HexEx/Postprocessing/FaceConnectionRepair.hh>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <string>
 
 using namespace HexEx;
 
@@ -112,6 +114,37 @@ TEST(GMap, CellByCellLabelsAgreeWithGenericOrbits) {
     int nq = 0;
     labelOrbits(h, 0b1011, &nq);
     EXPECT_EQ(countQuadOrbits(h, broken, &boundary), nq);
+}
+
+// Many pairs of hexes glued over one quad, every third pair only partly (3 of 8 alpha_3
+// links cut): enough darts that the candidate search runs in several chunks; the repair
+// must sew exactly the missing links, with any thread count.
+TEST(GMap, PartialFaceConnectionsRepairedWithAnyThreadCount) {
+    const GMap<3> hex = makeHex();
+    const int pairs = 1800;  // 172800 darts
+    GMap<3> g;
+    g.add_darts(static_cast<std::size_t>(pairs) * 96);
+    for (int p = 0; p < pairs; ++p)
+        for (int h = 0; h < 2; ++h) {
+            const int base = 96 * p + 48 * h;
+            for (int d = 0; d < 48; ++d)
+                for (int i = 0; i < 3; ++i) g.link(DartHandle(base + d), DartHandle(base + hex.alpha(DartHandle(d), i).idx()), i);
+        }
+    for (int p = 0; p < pairs; ++p)
+        for (int d = 8; d < 16; ++d) {  // quad 1 of the first hex to quad 1 of the second
+            if (p % 3 == 0 && (d == 9 || d == 12 || d == 14)) continue;
+            g.sew(DartHandle(96 * p + d), DartHandle(96 * p + 48 + d), 3);
+        }
+    GMap<3> full = g;
+    for (int p = 0; p < pairs; p += 3)
+        for (int d : {9, 12, 14}) full.sew(DartHandle(96 * p + d), DartHandle(96 * p + 48 + d), 3);
+    EXPECT_TRUE(validateHexGMap(full).valid());
+    for (int threads : {1, 2, 3}) {
+        SCOPED_TRACE("threads = " + std::to_string(threads));
+        GMap<3> h = g;
+        EXPECT_EQ(completePartialFaceConnections(h, threads), (pairs + 2) / 3);
+        EXPECT_EQ(h.links(), full.links());
+    }
 }
 
 TEST(GMap, LabelOrbitsCountsCells) {

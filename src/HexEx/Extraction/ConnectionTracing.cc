@@ -259,8 +259,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     // alpha_0 and alpha_3 are the expensive traces (they cross tets). Pass 1 traces them only
     // from the darts whose d1 (alpha_0) or d3 (alpha_3) points in the positive axis direction
-    // of their own chart; a found partner that is still pending gets the link back in a
-    // sequential pass; pass 2 traces whatever is still pending (partners seen through a
+    // of their own chart; a found partner that is still pending gets the link back (the
+    // smallest dart that found it); pass 2 traces whatever is still pending (partners seen through a
     // transition that flips the direction, boundaries, failures).
     constexpr int kPending = std::numeric_limits<int>::min();
     auto deferred = [&](std::size_t d, int i) {
@@ -315,13 +315,24 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         }
         part[static_cast<std::size_t>(k)] = st;
     });
-    for (std::size_t d = 0; d < n; ++d)
-        for (int i : {0, 3}) {
-            if (deferred(d, i)) continue;
-            const int p = alpha[d][i];
-            if (p >= 0 && static_cast<std::size_t>(p) != d && alpha[static_cast<std::size_t>(p)][i] == kPending)
-                alpha[static_cast<std::size_t>(p)][i] = static_cast<int>(d);
-        }
+    // Links back into pending entries, in parallel: a pending entry (a deferred link, and
+    // only those are pending) takes the smallest dart that found it, as a sequential pass
+    // in dart order would write first; the entries are updated by an atomic minimum.
+    // Other threads only read entries that are not deferred, so these never conflict.
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d)
+            for (int i : {0, 3}) {
+                if (deferred(d, i)) continue;
+                const int p = alpha[d][i];
+                if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) continue;
+                int* slot = &alpha[static_cast<std::size_t>(p)][i];
+                const int mine = static_cast<int>(d);
+                int cur = __atomic_load_n(slot, __ATOMIC_RELAXED);
+                while ((cur == kPending || cur > mine) &&
+                       !__atomic_compare_exchange_n(slot, &cur, mine, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+                }
+            }
+    });
     std::vector<TraceStats> part2(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;

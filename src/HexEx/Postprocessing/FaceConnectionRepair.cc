@@ -1,20 +1,39 @@
 #include "FaceConnectionRepair.hh"
 
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
 #include <map>
 #include <vector>
 
 namespace HexEx {
 
-long completePartialFaceConnections(GMap<3>& g) {
+long completePartialFaceConnections(GMap<3>& g, int threads) {
     long repaired = 0;
     const std::size_t n = g.n_darts();
     std::vector<char> done(n, 0);
-    for (std::size_t s = 0; s < n; ++s) {
-        const DartHandle d0(static_cast<int>(s));
-        if (done[s] || !g.is_alive(d0)) continue;
-        // Quick skip: a consistent face has the same alpha_3 freedom along alpha_0 and alpha_1.
+    // Quick skip: a consistent face has the same alpha_3 freedom along alpha_0 and alpha_1.
+    auto consistent = [&](DartHandle d0) {
         const bool f = g.is_free(d0, 3);
-        if (f == g.is_free(g.alpha(d0, 0), 3) && f == g.is_free(g.alpha(d0, 1), 3)) continue;
+        return f == g.is_free(g.alpha(d0, 0), 3) && f == g.is_free(g.alpha(d0, 1), 3);
+    };
+    // The darts that fail the quick skip, found in parallel (read only). A repair only
+    // links whole faces (a partial quad and the quad it is linked to), whose darts then
+    // pass the test, so no other dart can start failing it: visiting only these darts, in
+    // order and with the test repeated, does what a scan of all darts would.
+    const int chunks = std::max(1, std::min(threads, static_cast<int>(n / 65536)));
+    std::vector<std::vector<int>> candidates(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        for (std::size_t s = b; s < e; ++s) {
+            const DartHandle d0(static_cast<int>(s));
+            if (g.is_alive(d0) && !consistent(d0)) candidates[static_cast<std::size_t>(k)].push_back(d0.idx());
+        }
+    });
+    std::vector<int> todo;
+    for (const auto& c : candidates) todo.insert(todo.end(), c.begin(), c.end());
+    for (const int s : todo) {
+        const DartHandle d0(s);
+        if (done[static_cast<std::size_t>(s)] || consistent(d0)) continue;
         const std::vector<DartHandle> face = g.orbit(d0, 0b0011);
         for (auto x : face) done[x.uidx()] = 1;
         // Partial: some darts linked by alpha_3, some free.

@@ -9,7 +9,8 @@
 namespace HexEx {
 
 /// Sews the missing alpha_3 links of partially connected quads. Returns the number of
-/// quads completed. Deterministic (quads visited in order of their smallest dart).
-long completePartialFaceConnections(GMap<3>& g);
+/// quads completed. Deterministic (quads visited in order of their smallest dart); @p threads
+/// looks for candidate quads in parallel (the result does not depend on it).
+long completePartialFaceConnections(GMap<3>& g, int threads = 1);
 
 } // namespace HexEx

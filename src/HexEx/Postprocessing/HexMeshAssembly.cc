@@ -4,6 +4,7 @@
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
+#include <iterator>
 
 namespace HexEx {
 
@@ -100,7 +101,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (long o = 0; o < nocc; ++o)
             if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(ndi + static_cast<int>(o));
     }
-    out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement);
+    out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads);
     if (implicit) {
         // Classes without darts: position of their occurrence.
         std::vector<char> hasDart(static_cast<std::size_t>(nv), 0);
@@ -144,62 +145,88 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const std::vector<int>& cellOff = grouped ? labels.cell_offset : off;
     const std::vector<int>& cellDarts = grouped ? labels.cell_darts : idx;
     auto V = [&](int d) { return vlabel[static_cast<std::size_t>(d)]; };
-    for (int c = 0; c < nc; ++c) {
-        const int* first = cellDarts.data() + cellOff[static_cast<std::size_t>(c)];
-        const int size = cellOff[static_cast<std::size_t>(c) + 1] - cellOff[static_cast<std::size_t>(c)];
-        bool hex = size == 48;
-        int d0 = -1;
-        for (int k = 0; k < size && hex; ++k) {
-            const int d = first[k];
-            if (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
-                ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6)
-                hex = false;
-            if (d0 < 0 && geo.handedness[static_cast<std::size_t>(d)] > 0) d0 = d;
-        }
-        if (hex && d0 >= 0) {
-            auto up = [&](int d) { return a(a(a(d, 2), 1), 0); };
-            const int d1 = a(d0, 0), d3 = a(a(d0, 1), 0), d2 = a(a(d1, 1), 0);
-            std::array<int, 8> h = {V(d0), V(d1), V(d2), V(d3), V(up(d0)), V(up(d1)), V(up(d2)), V(up(d3))};
-            std::array<int, 8> s = h;
-            std::sort(s.begin(), s.end());
-            if (std::adjacent_find(s.begin(), s.end()) == s.end()) {
-                out.hexes.push_back(h);
+    // Cells in parallel chunks (each dart belongs to one cell, so only reads are shared);
+    // the chunks' hexes and polyhedra are appended in chunk order.
+    struct CellPart {
+        std::vector<std::array<int, 8>> hexes;
+        std::vector<Polyhedron> polyhedra;
+        long degenerate_faces = 0, collapsed_cells = 0;
+    };
+    const int cellChunks = std::max(1, std::min(threads, nc / 1024));
+    std::vector<CellPart> cellParts(static_cast<std::size_t>(cellChunks));
+    parallelChunks(static_cast<std::size_t>(nc), cellChunks, [&](int part, std::size_t cb, std::size_t ce) {
+        CellPart& P = cellParts[static_cast<std::size_t>(part)];
+        P.hexes.reserve(ce - cb);
+        for (int c = static_cast<int>(cb); c < static_cast<int>(ce); ++c) {
+            const int* first = cellDarts.data() + cellOff[static_cast<std::size_t>(c)];
+            const int size = cellOff[static_cast<std::size_t>(c) + 1] - cellOff[static_cast<std::size_t>(c)];
+            bool hex = size == 48;
+            int d0 = -1;
+            for (int k = 0; k < size && hex; ++k) {
+                const int d = first[k];
+                if (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
+                    ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6)
+                    hex = false;
+                if (d0 < 0 && geo.handedness[static_cast<std::size_t>(d)] > 0) d0 = d;
+            }
+            if (hex && d0 >= 0) {
+                auto up = [&](int d) { return a(a(a(d, 2), 1), 0); };
+                const int d1 = a(d0, 0), d3 = a(a(d0, 1), 0), d2 = a(a(d1, 1), 0);
+                std::array<int, 8> h = {V(d0), V(d1), V(d2), V(d3), V(up(d0)), V(up(d1)), V(up(d2)), V(up(d3))};
+                std::array<int, 8> s = h;
+                std::sort(s.begin(), s.end());
+                if (std::adjacent_find(s.begin(), s.end()) == s.end()) {
+                    P.hexes.push_back(h);
+                    continue;
+                }
+            }
+            // Not a hexahedron: write every face of the cell as a vertex loop.
+            Polyhedron poly;
+            std::vector<int> seenFaces;
+            for (int k = 0; k < size; ++k) {
+                const int f0 = first[k];
+                const int fl = flabel[static_cast<std::size_t>(f0)];
+                if (std::find(seenFaces.begin(), seenFaces.end(), fl) != seenFaces.end()) continue;
+                seenFaces.push_back(fl);
+                std::vector<int> loop;
+                int d = f0;
+                for (int step = 0; step < size; ++step) {
+                    loop.push_back(V(d));
+                    const int e = a(d, 0);
+                    const int nx = a(e, 1);
+                    if (e == d || nx == e || nx == f0) break;
+                    d = nx;
+                }
+                loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
+                if (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
+                std::vector<int> distinct = loop;
+                std::sort(distinct.begin(), distinct.end());
+                if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() < 3 || distinct.size() != loop.size()) {
+                    ++P.degenerate_faces;
+                    continue;
+                }
+                if (geo.handedness[static_cast<std::size_t>(f0)] < 0) std::reverse(loop.begin(), loop.end());
+                poly.faces.push_back(loop);
+            }
+            if (poly.faces.empty()) {
+                ++P.collapsed_cells;
                 continue;
             }
+            P.polyhedra.push_back(std::move(poly));
         }
-        // Not a hexahedron: write every face of the cell as a vertex loop.
-        Polyhedron poly;
-        std::vector<int> seenFaces;
-        for (int k = 0; k < size; ++k) {
-            const int f0 = first[k];
-            const int fl = flabel[static_cast<std::size_t>(f0)];
-            if (std::find(seenFaces.begin(), seenFaces.end(), fl) != seenFaces.end()) continue;
-            seenFaces.push_back(fl);
-            std::vector<int> loop;
-            int d = f0;
-            for (int step = 0; step < size; ++step) {
-                loop.push_back(V(d));
-                const int e = a(d, 0);
-                const int nx = a(e, 1);
-                if (e == d || nx == e || nx == f0) break;
-                d = nx;
-            }
-            loop.erase(std::unique(loop.begin(), loop.end()), loop.end());
-            if (loop.size() > 1 && loop.front() == loop.back()) loop.pop_back();
-            std::vector<int> distinct = loop;
-            std::sort(distinct.begin(), distinct.end());
-            if (std::unique(distinct.begin(), distinct.end()) - distinct.begin() < 3 || distinct.size() != loop.size()) {
-                ++stats.degenerate_faces;
-                continue;
-            }
-            if (geo.handedness[static_cast<std::size_t>(f0)] < 0) std::reverse(loop.begin(), loop.end());
-            poly.faces.push_back(loop);
-        }
-        if (poly.faces.empty()) {
-            ++stats.collapsed_cells;
-            continue;
-        }
-        out.polyhedra.push_back(std::move(poly));
+    });
+    std::size_t nHex = 0, nPoly = 0;
+    for (const CellPart& P : cellParts) {
+        nHex += P.hexes.size();
+        nPoly += P.polyhedra.size();
+    }
+    out.hexes.reserve(nHex + (implicit ? implicit->cells.size() : 0));
+    out.polyhedra.reserve(nPoly);
+    for (CellPart& P : cellParts) {
+        out.hexes.insert(out.hexes.end(), P.hexes.begin(), P.hexes.end());
+        std::move(P.polyhedra.begin(), P.polyhedra.end(), std::back_inserter(out.polyhedra));
+        stats.degenerate_faces += P.degenerate_faces;
+        stats.collapsed_cells += P.collapsed_cells;
     }
     if (implicit) {
         out.hexes.reserve(out.hexes.size() + implicit->cells.size());

@@ -1,5 +1,7 @@
 #include "VertexMerging.hh"
 
+#include "../Core/Parallel.hh"
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -38,7 +40,7 @@ Vec3d centroid(const std::vector<Vec3d>& p) {
 } // namespace
 
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts) {
+                                         const DartPlacement& darts, int threads) {
     // Group darts by class (counting sort keeps darts ascending within a class).
     const auto nc = static_cast<std::size_t>(n_classes);
     std::vector<int> off(nc + 1, 0);
@@ -60,57 +62,61 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
 
     std::vector<Vec3d> out(nc);
-    std::vector<Vec3d> all, bnd;
-    std::vector<int> planes;
-    for (std::size_t l = 0; l < nc; ++l) {
-        all.clear();
-        bnd.clear();
-        planes.clear();
-        for (int k = off[l]; k < off[l + 1]; ++k) {
-            const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
-            all.push_back(darts.position[d]);
-            if (darts.boundary_hf[d][0] >= 0) {
-                bnd.push_back(darts.position[d]);
-                for (int hf : darts.boundary_hf[d])
-                    if (hf >= 0) planes.push_back(hf);
+    // Classes are independent: parallel chunks, each with its own scratch buffers.
+    const int chunks = std::max(1, std::min(threads, n_classes / 1024));
+    parallelChunks(nc, chunks, [&](int, std::size_t lb, std::size_t le) {
+        std::vector<Vec3d> all, bnd;
+        std::vector<int> planes;
+        for (std::size_t l = lb; l < le; ++l) {
+            all.clear();
+            bnd.clear();
+            planes.clear();
+            for (int k = off[l]; k < off[l + 1]; ++k) {
+                const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
+                all.push_back(darts.position[d]);
+                if (darts.boundary_hf[d][0] >= 0) {
+                    bnd.push_back(darts.position[d]);
+                    for (int hf : darts.boundary_hf[d])
+                        if (hf >= 0) planes.push_back(hf);
+                }
             }
+            if (all.empty()) continue;
+            if (bnd.empty()) {
+                const auto dist = distinctPositions(all, tol);
+                out[l] = dist.size() == 1 ? dist[0] : centroid(dist);
+                continue;
+            }
+            const auto dist = distinctPositions(bnd, tol);
+            if (dist.size() == 1) {
+                out[l] = dist[0];
+                continue;
+            }
+            std::sort(planes.begin(), planes.end());
+            planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
+            // Least squares: sum_i (n_i . x - n_i . a_i)^2, regularized towards the centroid so
+            // that directions no plane constrains stay put.
+            const Vec3d c = centroid(dist);
+            Eigen::Matrix3d M = Eigen::Matrix3d::Identity() * 1e-8;
+            Eigen::Vector3d rhs(c[0] * 1e-8, c[1] * 1e-8, c[2] * 1e-8);
+            for (int hf : planes) {
+                const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
+                const Vec3d a = mesh.position(v[0]);
+                Vec3d n = (mesh.position(v[1]) - a) % (mesh.position(v[2]) - a);
+                const double len = n.norm();
+                if (!(len > 0)) continue;
+                n /= len;
+                const Eigen::Vector3d ne(n[0], n[1], n[2]);
+                M += ne * ne.transpose();
+                rhs += ne * (n | a);
+            }
+            const Eigen::Vector3d x = M.ldlt().solve(rhs);
+            const Vec3d target(x[0], x[1], x[2]);
+            std::size_t best = 0;
+            for (std::size_t k = 1; k < dist.size(); ++k)
+                if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
+            out[l] = dist[best];
         }
-        if (all.empty()) continue;
-        if (bnd.empty()) {
-            const auto dist = distinctPositions(all, tol);
-            out[l] = dist.size() == 1 ? dist[0] : centroid(dist);
-            continue;
-        }
-        const auto dist = distinctPositions(bnd, tol);
-        if (dist.size() == 1) {
-            out[l] = dist[0];
-            continue;
-        }
-        std::sort(planes.begin(), planes.end());
-        planes.erase(std::unique(planes.begin(), planes.end()), planes.end());
-        // Least squares: sum_i (n_i . x - n_i . a_i)^2, regularized towards the centroid so
-        // that directions no plane constrains stay put.
-        const Vec3d c = centroid(dist);
-        Eigen::Matrix3d M = Eigen::Matrix3d::Identity() * 1e-8;
-        Eigen::Vector3d rhs(c[0] * 1e-8, c[1] * 1e-8, c[2] * 1e-8);
-        for (int hf : planes) {
-            const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
-            const Vec3d a = mesh.position(v[0]);
-            Vec3d n = (mesh.position(v[1]) - a) % (mesh.position(v[2]) - a);
-            const double len = n.norm();
-            if (!(len > 0)) continue;
-            n /= len;
-            const Eigen::Vector3d ne(n[0], n[1], n[2]);
-            M += ne * ne.transpose();
-            rhs += ne * (n | a);
-        }
-        const Eigen::Vector3d x = M.ldlt().solve(rhs);
-        const Vec3d target(x[0], x[1], x[2]);
-        std::size_t best = 0;
-        for (std::size_t k = 1; k < dist.size(); ++k)
-            if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
-        out[l] = dist[best];
-    }
+    });
     return out;
 }
 

@@ -21,8 +21,9 @@ struct DartPlacement {
 /// none lies on the boundary; otherwise the point closest (least squares, Eigen) to the
 /// planes of the boundary faces incident to its boundary h-vertices, replaced by the
 /// boundary h-vertex nearest to it so the vertex stays on the input boundary.
-/// @p label gives the class of every dart (-1 for none), @p n_classes their number.
+/// @p label gives the class of every dart (-1 for none), @p n_classes their number;
+/// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts);
+                                         const DartPlacement& darts, int threads = 1);
 
 } // namespace HexEx
