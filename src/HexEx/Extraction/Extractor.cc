@@ -275,7 +275,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     geo.placement.boundary_hf.assign(static_cast<std::size_t>(n_alive), {-1, -1, -1});
     geo.handedness.resize(static_cast<std::size_t>(n_alive));
     if (opt.merge) {
-        rep.output.repaired_face_connections = completePartialFaceConnections(g);
+        rep.output.repaired_face_connections = completePartialFaceConnections(g, threads);
         if (rep.output.repaired_face_connections > 0)
             rep.warnings.push_back(std::to_string(rep.output.repaired_face_connections) +
                                    " partially connected quads were completed (alpha_3 links added)");
