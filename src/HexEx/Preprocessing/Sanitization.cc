@@ -42,7 +42,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
         if (first && !(p == *first)) return false;
         if (!first) first = &p;
         for (int j = 0; j < 4; ++j)
-            if (j != k && !tr.halfface[TetMesh::halfface(c, j).uidx()].is_identity()) return false;
+            if (j != k && !tr.halfface.is_identity(TetMesh::halfface(c, j).uidx())) return false;
     }
     Vec3d u = *first;
     quantize(u, std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])}), epsilon, snapped);

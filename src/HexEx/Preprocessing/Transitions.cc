@@ -69,6 +69,50 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
 
 } // namespace
 
+void HalffaceTransitions::reset(std::size_t n) {
+    code_.assign(n, 0);
+    sparse_.clear();
+    dense_.clear();
+}
+
+Vec3i HalffaceTransitions::translation(std::size_t h) const {
+    if (!dense_.empty()) return dense_[h];
+    const auto it = std::lower_bound(sparse_.begin(), sparse_.end(), static_cast<int>(h),
+                                     [](const std::pair<int, Vec3i>& x, int k) { return x.first < k; });
+    return it->second;
+}
+
+void HalffaceTransitions::set(std::size_t h, const GridTransform& g) {
+    const bool moved = !(g.t == Vec3i(0, 0, 0));
+    const bool had = (code_[h] & kTranslated) != 0;
+    code_[h] = static_cast<std::uint8_t>(g.R.index() | (moved ? kTranslated : 0));
+    if (!dense_.empty()) {
+        dense_[h] = g.t;
+        return;
+    }
+    const auto it = std::lower_bound(sparse_.begin(), sparse_.end(), static_cast<int>(h),
+                                     [](const std::pair<int, Vec3i>& x, int k) { return x.first < k; });
+    if (had && moved) it->second = g.t;
+    else if (had) sparse_.erase(it);
+    else if (moved) sparse_.insert(it, {static_cast<int>(h), g.t});
+}
+
+void HalffaceTransitions::add_translations(std::vector<std::pair<int, Vec3i>> list) {
+    for (const auto& e : list) code_[static_cast<std::size_t>(e.first)] |= kTranslated;
+    if (dense_.empty() && (sparse_.size() + list.size()) * 8 > code_.size()) {
+        // Many translations: a dense array is smaller than the sparse pairs and faster.
+        dense_.assign(code_.size(), Vec3i(0, 0, 0));
+        for (const auto& e : sparse_) dense_[static_cast<std::size_t>(e.first)] = e.second;
+        std::vector<std::pair<int, Vec3i>>().swap(sparse_);
+    }
+    if (!dense_.empty()) {
+        for (const auto& e : list) dense_[static_cast<std::size_t>(e.first)] = e.second;
+        return;
+    }
+    sparse_.insert(sparse_.end(), list.begin(), list.end());
+    std::sort(sparse_.begin(), sparse_.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+}
+
 HalfFaceHandle halffaceTowards(const TetMesh& mesh, CellHandle c, CellHandle next) {
     for (int j = 0; j < 4; ++j) {
         const HalfFaceHandle hf = TetMesh::halfface(c, j);
@@ -82,7 +126,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                                int threads) {
     Transitions out;
     const std::size_t nhf = mesh.n_halffaces();
-    out.halfface.assign(nhf, GridTransform());
+    out.halfface.reset(nhf);
     // Fits are kept only for the (rare) ambiguous faces, sorted by halfface.
     std::vector<std::pair<std::size_t, FaceFit>> fits;
     auto fitOf = [&](std::size_t h) -> const FaceFit& {
@@ -90,7 +134,9 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     };
     std::vector<char> decided(nhf, 1);
 
-    auto setTransition = [&](std::size_t h, int rot) {
+    // With a list, only rotations are written and non-zero translations are collected
+    // (the parallel pass); without, the transform is stored at once (the sequential pass).
+    auto setTransition = [&](std::size_t h, int rot, std::vector<std::pair<int, Vec3i>>* translations = nullptr) {
         const HalfFaceHandle hf(static_cast<int>(h));
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);
         const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
@@ -102,8 +148,18 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             acc += params[c2.uidx()][l2] - R.apply(params[c.uidx()][lc]);
         }
         const GridTransform g(R, roundVec(acc / 3.0));
-        out.halfface[h] = g;
-        out.halfface[opp.uidx()] = g.inverse();
+        const GridTransform gi = g.inverse();
+        if (translations) {
+            out.halfface.set_rotation_only(h, g.R);
+            out.halfface.set_rotation_only(opp.uidx(), gi.R);
+            if (!(g.t == Vec3i(0, 0, 0))) {
+                translations->emplace_back(static_cast<int>(h), g.t);
+                translations->emplace_back(opp.idx(), gi.t);
+            }
+        } else {
+            out.halfface.set(h, g);
+            out.halfface.set(opp.uidx(), gi);
+        }
         decided[h] = decided[opp.uidx()] = 1;
     };
 
@@ -112,13 +168,15 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     const int chunks = std::max(1, threads);
     std::vector<int> ambiguous(static_cast<std::size_t>(chunks), 0);
     std::vector<std::vector<std::pair<std::size_t, FaceFit>>> ambiguousFits(static_cast<std::size_t>(chunks));
+    std::vector<std::vector<std::pair<int, Vec3i>>> translations(static_cast<std::size_t>(chunks));
     parallelChunks(nhf, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
             const HalfFaceHandle hf(static_cast<int>(h));
             const HalfFaceHandle opp = mesh.opposite_halfface(hf);
             if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
+            auto& moved = translations[static_cast<std::size_t>(chunk)];
             if (given) {
-                setTransition(h, (*given)[h]);
+                setTransition(h, (*given)[h], &moved);
                 continue;
             }
             const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
@@ -137,10 +195,15 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                 ++ambiguous[static_cast<std::size_t>(chunk)];
                 decided[h] = decided[opp.uidx()] = 0;
             } else {
-                setTransition(h, fit.best);
+                setTransition(h, fit.best, &moved);
             }
         }
     });
+    {
+        std::vector<std::pair<int, Vec3i>> all;
+        for (auto& part : translations) all.insert(all.end(), part.begin(), part.end());
+        out.halfface.add_translations(std::move(all));
+    }
     for (int a : ambiguous) out.n_ambiguous += a;
     for (auto& part : ambiguousFits) fits.insert(fits.end(), part.begin(), part.end());  // chunks are in halfface order
     if (out.n_ambiguous == 0) return out;

@@ -5,15 +5,53 @@
 #include "../Grid/GridTransform.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
 
+#include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace HexEx {
+
+/// Compact per-halfface storage of grid transforms: one byte per halfface (the rotation
+/// index, plus a flag if the translation is not zero) and the non-zero translations apart,
+/// sparse while they are few and dense once they are many. Most faces of real maps have the
+/// identity, so this takes about 1/16 of a GridTransform per halfface.
+class HalffaceTransitions {
+public:
+    /// @p n halffaces, all with the identity.
+    void reset(std::size_t n);
+    /// Number of halffaces.
+    std::size_t size() const { return code_.size(); }
+    /// The transform of halfface @p h.
+    GridTransform operator[](std::size_t h) const {
+        const std::uint8_t c = code_[h];
+        if (c == 0) return GridTransform();
+        return GridTransform(Rotation(c & kRotationMask), (c & kTranslated) ? translation(h) : Vec3i(0, 0, 0));
+    }
+    /// True if halfface @p h has the identity.
+    bool is_identity(std::size_t h) const { return code_[h] == 0; }
+    /// Sets the transform of halfface @p h (not thread-safe; see set_rotation_only()).
+    void set(std::size_t h, const GridTransform& g);
+    /// Sets only the rotation of @p h, whose translation must be zero. Distinct halffaces
+    /// may be set from different threads.
+    void set_rotation_only(std::size_t h, Rotation r) { code_[h] = static_cast<std::uint8_t>(r.index()); }
+    /// Adds translations of halffaces whose rotation is set (@p list in any order, each
+    /// halfface once, none stored yet); used after a parallel set_rotation_only() pass.
+    void add_translations(std::vector<std::pair<int, Vec3i>> list);
+
+private:
+    static constexpr std::uint8_t kRotationMask = 0x1F;
+    static constexpr std::uint8_t kTranslated = 0x80;
+    Vec3i translation(std::size_t h) const;
+    std::vector<std::uint8_t> code_;                 // rotation index | kTranslated
+    std::vector<std::pair<int, Vec3i>> sparse_;      // sorted by halfface, while dense_ is empty
+    std::vector<Vec3i> dense_;                       // per halfface, once translations are many
+};
 
 /// Transitions of a parametrized tet mesh.
 struct Transitions {
     /// Per halfface h = 4c+i: the map from the chart of cell c to the chart of the
     /// neighbour across h (identity on boundary halffaces).
-    std::vector<GridTransform> halfface;
+    HalffaceTransitions halfface;
     /// Number of interior faces whose rotation could not be read from the parameters
     /// (degenerate face image) and was resolved from the neighbourhood.
     int n_ambiguous = 0;
