@@ -271,8 +271,6 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     g.assign_links(std::move(links));
     DartGeometry geo;
     geo.mesh = &mesh;
-    geo.placement.position.resize(static_cast<std::size_t>(n_alive));
-    geo.placement.boundary_hf.assign(static_cast<std::size_t>(n_alive), {-1, -1, -1});
     geo.handedness.resize(static_cast<std::size_t>(n_alive));
     if (opt.merge) {
         rep.output.repaired_face_connections = completePartialFaceConnections(g, threads);
@@ -325,33 +323,46 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     // Geometry of the surviving darts.
     t0 = std::chrono::steady_clock::now();
     progress("vertices", 0);
-    parallelChunks(nd, threads, [&](int, std::size_t b, std::size_t e) {
-        // Darts are sorted by (tet, grid point): a run of darts at the same point shares
-        // its position and boundary faces, computed once for the run.
-        long prev = -1;
+    // Darts are sorted by (tet, grid point): a run of alive darts at the same point shares
+    // one placed point (position and boundary faces), computed once; every dart refers to
+    // its run's point. Runs are counted per chunk, then numbered in order.
+    auto runStart = [&](std::size_t d) {
+        if (d == 0 || !alive[d - 1]) return true;
+        const Dart& P = ds.darts[d - 1];
+        const Dart& D = ds.darts[d];
+        return P.tet != D.tet || !samePoint(P.z, D.z);
+    };
+    std::vector<int> runsInChunk(static_cast<std::size_t>(threads) + 1, 0);
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        int n = 0;
+        for (std::size_t d = b; d < e; ++d)
+            if (alive[d] && runStart(d)) ++n;
+        runsInChunk[static_cast<std::size_t>(k) + 1] = n;
+    });
+    for (std::size_t k = 0; k < static_cast<std::size_t>(threads); ++k) runsInChunk[k + 1] += runsInChunk[k];
+    geo.placement.point.resize(static_cast<std::size_t>(n_alive));
+    geo.placement.position.resize(static_cast<std::size_t>(runsInChunk.back()));
+    geo.placement.boundary_hf.resize(static_cast<std::size_t>(runsInChunk.back()));
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        int run = runsInChunk[static_cast<std::size_t>(k)] - 1;  // a run continued from the previous chunk
+        int occ = -1;
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
             const Dart& D = ds.darts[d];
-            const auto k = static_cast<std::size_t>(newIndex[d]);
-            geo.handedness[k] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
-            if (prev >= 0) {
-                const Dart& P = ds.darts[static_cast<std::size_t>(prev)];
-                if (P.tet == D.tet && samePoint(P.z, D.z)) {
-                    const auto pk = static_cast<std::size_t>(newIndex[static_cast<std::size_t>(prev)]);
-                    geo.placement.position[k] = geo.placement.position[pk];
-                    geo.placement.boundary_hf[k] = geo.placement.boundary_hf[pk];
-                    continue;
-                }
+            const auto dk = static_cast<std::size_t>(newIndex[d]);
+            geo.handedness[dk] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
+            if (runStart(d)) {
+                ++run;
+                auto& bhf = geo.placement.boundary_hf[static_cast<std::size_t>(run)];
+                bhf = {-1, -1, -1};
+                geo.placement.position[static_cast<std::size_t>(run)] = gridPointPosition(D.tet, D.z, &bhf);
+                if (useImplicit) occ = static_cast<int>(ds.occurrence(D.tet, D.z));
+            } else if (useImplicit && occ < 0 && d == b) {
+                occ = static_cast<int>(ds.occurrence(D.tet, D.z));
             }
-            prev = static_cast<long>(d);
-            geo.placement.position[k] = gridPointPosition(D.tet, D.z, &geo.placement.boundary_hf[k]);
-            if (useImplicit) implicit.dart_occurrence[k] = static_cast<int>(ds.occurrence(D.tet, D.z));
+            geo.placement.point[dk] = run;
+            if (useImplicit) implicit.dart_occurrence[dk] = occ;
         }
-        if (useImplicit)  // darts of a run after the first: same occurrence
-            for (std::size_t d = b; d < e; ++d)
-                if (alive[d])
-                    implicit.dart_occurrence[static_cast<std::size_t>(newIndex[d])] =
-                        static_cast<int>(ds.occurrence(ds.darts[d].tet, ds.darts[d].z));
     });
     if (useImplicit) {
         // The implicit cells, as 8 corner occurrences in VTK order (the tet's chart is

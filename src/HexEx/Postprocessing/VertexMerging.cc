@@ -73,10 +73,11 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             planes.clear();
             for (int k = off[l]; k < off[l + 1]; ++k) {
                 const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
-                all.push_back(darts.position[d]);
-                if (darts.boundary_hf[d][0] >= 0) {
-                    bnd.push_back(darts.position[d]);
-                    for (int hf : darts.boundary_hf[d])
+                const auto q = static_cast<std::size_t>(darts.point[d]);
+                all.push_back(darts.position[q]);
+                if (darts.boundary_hf[q][0] >= 0) {
+                    bnd.push_back(darts.position[q]);
+                    for (int hf : darts.boundary_hf[q])
                         if (hf >= 0) planes.push_back(hf);
                 }
             }

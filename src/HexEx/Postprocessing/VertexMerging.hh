@@ -11,10 +11,12 @@
 
 namespace HexEx {
 
-/// Per-dart geometry the merging needs.
+/// Geometry the merging needs: the placed points (a grid point in one tet, shared by the
+/// darts extracted there) and, per dart, its placed point.
 struct DartPlacement {
-    std::vector<Vec3d> position;                   ///< 3D position of the dart's grid point in its tet
-    std::vector<std::array<int, 3>> boundary_hf;   ///< boundary halffaces of the tet containing the point (-1 = none)
+    std::vector<int> point;                        ///< per dart: index of its placed point
+    std::vector<Vec3d> position;                   ///< per placed point: 3D position of the grid point in its tet
+    std::vector<std::array<int, 3>> boundary_hf;   ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
 };
 
 /// Merged position per class: the centroid of the class's distinct h-vertex positions if
