@@ -7,6 +7,12 @@
 
 #include <gtest/gtest.h>
 
+#include <random>
+
+#include <numeric>
+
+#include <map>
+
 #include <algorithm>
 #include <string>
 
@@ -144,6 +150,64 @@ TEST(GMap, PartialFaceConnectionsRepairedWithAnyThreadCount) {
         GMap<3> h = g;
         EXPECT_EQ(completePartialFaceConnections(h, threads), (pairs + 2) / 3);
         EXPECT_EQ(h.links(), full.links());
+    }
+}
+
+// Many cells with their darts shuffled over the whole index range (as in real maps, where a
+// cell's darts come from several tets), some glued, some with broken corners: the
+// cell-by-cell labels must not depend on the thread count and must be the generic orbits.
+TEST(GMap, CellByCellLabelsIndependentOfThreads) {
+    const GMap<3> hex = makeHex();
+    const int cells = 9000;  // more than 2 * 4096: the per-cell pass runs in several chunks
+    const int n = 48 * cells;
+    std::vector<int> perm(static_cast<std::size_t>(n));
+    std::iota(perm.begin(), perm.end(), 0);
+    std::shuffle(perm.begin(), perm.end(), std::mt19937(5));
+    auto D = [&](int c, int d) { return DartHandle(perm[static_cast<std::size_t>(48 * c + d)]); };
+    GMap<3> g;
+    g.add_darts(static_cast<std::size_t>(n));
+    for (int c = 0; c < cells; ++c)
+        for (int d = 0; d < 48; ++d)
+            for (int i = 0; i < 3; ++i) g.link(D(c, d), D(c, hex.alpha(DartHandle(d), i).idx()), i);
+    for (int c = 0; c + 1 < cells; c += 2)
+        for (int d = 8; d < 16; ++d) g.sew(D(c, d), D(c + 1, d), 3);
+    int broken = 0;
+    for (int c = 0; c < cells; c += 7) {  // swap alpha_1 between two corners: still involutive
+        const DartHandle x = D(c, 0), y = D(c, 20);
+        const DartHandle ax = g.alpha(x, 1), ay = g.alpha(y, 1);
+        if (ax == y || ay == x) continue;
+        g.sew(x, ay, 1);
+        g.sew(y, ax, 1);
+        ++broken;
+    }
+    ASSERT_GT(broken, 1000);
+    HexOrbitLabels ref;
+    const GMapValidation v1 = validateHexGMap(g, &ref, 1);
+    ASSERT_FALSE(ref.cell_offset.empty());
+    EXPECT_FALSE(v1.valid()) << v1.summary();
+    // Same partitions as the generic labelling (numbering aside).
+    auto samePartition = [&](const std::vector<int>& a, const std::vector<int>& b) {
+        std::map<int, int> ab, ba;
+        for (std::size_t d = 0; d < a.size(); ++d) {
+            if (ab.emplace(a[d], b[d]).first->second != b[d]) return false;
+            if (ba.emplace(b[d], a[d]).first->second != a[d]) return false;
+        }
+        return true;
+    };
+    EXPECT_TRUE(samePartition(ref.face, labelOrbits(g, 0b0011)));
+    EXPECT_TRUE(samePartition(ref.corner, labelOrbits(g, 0b0110)));
+    EXPECT_EQ(ref.cell, labelOrbits(g, 0b0111));
+    for (int threads : {2, 3}) {
+        SCOPED_TRACE("threads = " + std::to_string(threads));
+        HexOrbitLabels l;
+        const GMapValidation v = validateHexGMap(g, &l, threads);
+        EXPECT_EQ(v.summary(), v1.summary());
+        EXPECT_EQ(l.face, ref.face);
+        EXPECT_EQ(l.corner, ref.corner);
+        EXPECT_EQ(l.cell, ref.cell);
+        EXPECT_EQ(l.face_size, ref.face_size);
+        EXPECT_EQ(l.corner_size, ref.corner_size);
+        EXPECT_EQ(l.cell_darts, ref.cell_darts);
     }
 }
 

@@ -121,20 +121,20 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
 }
 
 /// Orbit labelling for maps whose darts are all alive and whose links are all involutions:
-/// one breadth-first search per cell (<alpha_0, alpha_1, alpha_2>) whose darts, still in
-/// cache, then give the face, corner and strip orbits of that cell (they never leave it).
-/// Fills the equation 3-6 counts of @p v and, if given, @p out.
-void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out) {
+/// one breadth-first search per cell (<alpha_0, alpha_1, alpha_2>), in dart order (cells
+/// are numbered by their smallest dart); then, cells in parallel, the face, corner and
+/// strip orbits of each cell (they never leave it), numbered within the cell first and
+/// offset by the counts of the cells before it (the numbering does not depend on the
+/// thread count). Fills the equation 3-6 counts of @p v and, if given, @p out.
+void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, int threads) {
     const auto& L = g.links();
     const std::size_t n = L.size();
     std::vector<int> cell(n, -1), face(n, -1), corner(n, -1);
-    std::vector<int> csize, fsize, ksize, cdarts, coff;
+    std::vector<int> csize, cdarts, coff;
     cdarts.reserve(n);
     coff.push_back(0);
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
-    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
-    constexpr int kStripSeen = -2;
     for (std::size_t s = 0; s < n; ++s) {
         if (cell[s] >= 0) continue;
         const int c = static_cast<int>(csize.size());
@@ -152,45 +152,89 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out) {
                 }
             }
         }
-        const int size = static_cast<int>(cdarts.size() - first);
-        csize.push_back(size);
-        if (size != 48) v.eq6_hex += size;
-        int* const begin = cdarts.data() + first;
-        int* const end = begin + size;
-        for (const int* x = begin; x != end; ++x) {
-            if (corner[static_cast<std::size_t>(*x)] != -1) continue;
-            corner[static_cast<std::size_t>(*x)] = kStripSeen;
-            const int m = walkAlternating(
-                *x, [&](int d) { return a(d, 0); }, a121,
-                [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
-                [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
-            if (m != 8) v.eq5_strip += m;
-        }
-        for (const int* x = begin; x != end; ++x) {
-            if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int f = static_cast<int>(fsize.size());
-            face[static_cast<std::size_t>(*x)] = f;
-            const int m = walkAlternating(
-                *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
-                [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; },
-                [&](int d) { face[static_cast<std::size_t>(d)] = f; });
-            fsize.push_back(m);
-            if (m != 8) v.eq3_quad += m;
-        }
-        for (const int* x = begin; x != end; ++x) {
-            if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int k = static_cast<int>(ksize.size());
-            corner[static_cast<std::size_t>(*x)] = k;
-            const int m = walkAlternating(
-                *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
-                [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; },
-                [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
-            ksize.push_back(m);
-            if (m != 6) v.eq4_corner += m;
-        }
-        std::sort(begin, end);
+        csize.push_back(static_cast<int>(cdarts.size() - first));
         coff.push_back(static_cast<int>(cdarts.size()));
     }
+    const std::size_t nc = csize.size();
+    // Per cell: its face and corner orbits with local numbers (0, 1, ... within the cell)
+    // and their sizes, kept in per-chunk lists in cell order.
+    struct Part {
+        GMapValidation counts;
+        std::vector<int> fsize, ksize;     // sizes of the local orbits, cell after cell
+        std::vector<int> nf, nk;           // orbits per cell of the chunk
+    };
+    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, nc / 4096)));
+    std::vector<Part> parts(static_cast<std::size_t>(chunks));
+    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
+    constexpr int kStripSeen = -2;
+    parallelChunks(nc, chunks, [&](int k, std::size_t cb, std::size_t ce) {
+        Part& P = parts[static_cast<std::size_t>(k)];
+        for (std::size_t c = cb; c < ce; ++c) {
+            int* const begin = cdarts.data() + coff[c];
+            int* const end = cdarts.data() + coff[c + 1];
+            if (csize[c] != 48) P.counts.eq6_hex += csize[c];
+            for (const int* x = begin; x != end; ++x) {
+                if (corner[static_cast<std::size_t>(*x)] != -1) continue;
+                corner[static_cast<std::size_t>(*x)] = kStripSeen;
+                const int m = walkAlternating(
+                    *x, [&](int d) { return a(d, 0); }, a121,
+                    [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
+                    [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
+                if (m != 8) P.counts.eq5_strip += m;
+            }
+            int nf = 0, nk = 0;
+            for (const int* x = begin; x != end; ++x) {
+                if (face[static_cast<std::size_t>(*x)] >= 0) continue;
+                const int f = nf++;
+                face[static_cast<std::size_t>(*x)] = f;
+                const int m = walkAlternating(
+                    *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
+                    [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; },
+                    [&](int d) { face[static_cast<std::size_t>(d)] = f; });
+                P.fsize.push_back(m);
+                if (m != 8) P.counts.eq3_quad += m;
+            }
+            for (const int* x = begin; x != end; ++x) {
+                if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
+                const int q = nk++;
+                corner[static_cast<std::size_t>(*x)] = q;
+                const int m = walkAlternating(
+                    *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
+                    [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; },
+                    [&](int d) { corner[static_cast<std::size_t>(d)] = q; });
+                P.ksize.push_back(m);
+                if (m != 6) P.counts.eq4_corner += m;
+            }
+            P.nf.push_back(nf);
+            P.nk.push_back(nk);
+            std::sort(begin, end);
+        }
+    });
+    // Global numbers: local number + orbits of all earlier cells.
+    std::vector<int> fbase(nc + 1, 0), kbase(nc + 1, 0), fsize, ksize;
+    {
+        std::size_t c = 0;
+        for (const Part& P : parts) {
+            for (std::size_t i = 0; i < P.nf.size(); ++i, ++c) {
+                fbase[c + 1] = fbase[c] + P.nf[i];
+                kbase[c + 1] = kbase[c] + P.nk[i];
+            }
+            fsize.insert(fsize.end(), P.fsize.begin(), P.fsize.end());
+            ksize.insert(ksize.end(), P.ksize.begin(), P.ksize.end());
+            v.eq3_quad += P.counts.eq3_quad;
+            v.eq4_corner += P.counts.eq4_corner;
+            v.eq5_strip += P.counts.eq5_strip;
+            v.eq6_hex += P.counts.eq6_hex;
+        }
+    }
+    parallelChunks(nc, chunks, [&](int, std::size_t cb, std::size_t ce) {
+        for (std::size_t c = cb; c < ce; ++c)
+            for (int q = coff[c]; q < coff[c + 1]; ++q) {
+                const auto x = static_cast<std::size_t>(cdarts[static_cast<std::size_t>(q)]);
+                face[x] += fbase[c];
+                corner[x] += kbase[c];
+            }
+    });
     if (out) {
         out->cell = std::move(cell);
         out->cell_size = std::move(csize);
@@ -305,7 +349,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq2_face_connection += w.eq2_face_connection;
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
-        labelCellByCell(g, v, labels);
+        labelCellByCell(g, v, labels, threads);
         return v;
     }
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
