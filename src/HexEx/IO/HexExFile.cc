@@ -234,7 +234,7 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
 
 } // namespace
 
-ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name, ReadReport* report) {
+ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name, ReadReport* report, int threads) {
     Parser in(text, name);
 
     // Vertices.
@@ -265,8 +265,9 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     // Large files: parallel fast path; if it finds anything wrong, the sequential parser
     // below runs from the same place and reports the exact error.
     constexpr long long kParallelMinTets = 20000;
-    const bool parsed = nc >= kParallelMinTets &&
-                        parseTetsParallel(text, in.position(), in.line(), nv, nc, cells, params, lines, resolveThreadCount(0));
+    const int nThreads = resolveThreadCount(threads);
+    const bool parsed = nc >= kParallelMinTets && nThreads > 1 &&
+                        parseTetsParallel(text, in.position(), in.line(), nv, nc, cells, params, lines, nThreads);
     if (!parsed) {
         cells.clear();
         params.clear();
@@ -347,7 +348,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         warnings.push_back(name + ": " + std::to_string(nUnused) + " of " + std::to_string(positions.size()) +
                            " vertices are not used by any tet");
 
-    detail::finishTetMesh(pm, name);
+    detail::finishTetMesh(pm, name, nThreads);
 
     if (report) {
         report->reoriented = reoriented;

@@ -45,10 +45,12 @@ ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report = 
 /// @throws InputError as readHexExFile().
 ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, ReadReport* report = nullptr);
 
-/// Reads `.hexex` data held in memory; @p name is used in error messages.
+/// Reads `.hexex` data held in memory; @p name is used in error messages. Large tet
+/// sections are parsed and the adjacency built on @p threads threads (0 = all hardware
+/// threads, 1 = sequential); the result, and every error message, do not depend on it.
 /// @throws InputError as readHexExFile().
 ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name,
-                                    ReadReport* report = nullptr);
+                                    ReadReport* report = nullptr, int threads = 0);
 
 /// Writes @p pm in `.hexex` format to a stream. Doubles are written in the shortest form
 /// that reads back bit-identically.

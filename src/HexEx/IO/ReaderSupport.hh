@@ -33,11 +33,11 @@ inline std::ifstream openInputFile(const std::string& path) {
     return in;
 }
 
-/// Builds the adjacency of a freshly read mesh and checks that it is a manifold; errors
-/// are prefixed with the file @p name.
-inline void finishTetMesh(ParametrizedTetMesh& pm, const std::string& name) {
+/// Builds the adjacency of a freshly read mesh (on @p threads threads, 0 = all hardware
+/// threads) and checks that it is a manifold; errors are prefixed with the file @p name.
+inline void finishTetMesh(ParametrizedTetMesh& pm, const std::string& name, int threads = 0) {
     try {
-        pm.mesh.build_adjacency();
+        pm.mesh.build_adjacency(threads);
     } catch (const InputError& e) {
         throw InputError(name + ": " + e.what());
     }
