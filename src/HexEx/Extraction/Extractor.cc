@@ -265,8 +265,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
         }
     });
     for (long u : unconnected) rep.output.unconnected_darts += u;
-    links.resize(static_cast<std::size_t>(n_alive));
-    links.shrink_to_fit();
+    links.resize(static_cast<std::size_t>(n_alive));  // no shrink_to_fit: a copy into fresh memory costs more than the few removed darts save
     GMap<3> g;
     g.assign_links(std::move(links));
     DartGeometry geo;
