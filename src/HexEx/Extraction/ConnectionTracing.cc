@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include "../Predicates/ExactPredicates.hh"
@@ -37,9 +38,11 @@ int signOf(double x) { return (x > 0) - (x < 0); }
 /// Sign of orient3d(P, Q, a, b) for the line P = z + e^2 e2 + e^3 e3, Q = P + D:
 /// det(D, a-z, b-z) - e^2 h (b-a).e3 + e^3 h (b-a).e2 with h the handedness of (D, e2, e3).
 /// The handedness h is only needed for ties; it is computed then.
-int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b) {
+/// If @p tie is given, it is set when the sign depended on e2 or e3.
+int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b, bool* tie = nullptr) {
     const int t0 = dirSign(D) * orient2dAxis(z, a, b, dirAxis(D));
     if (t0 != 0) return t0;
+    if (tie) *tie = true;
     const int h = frameHandedness(D, e2, e3);
     const int t2 = -h * dirSign(e3) * signOf(b[dirAxis(e3)] - a[dirAxis(e3)]);
     if (t2 != 0) return t2;
@@ -72,7 +75,8 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
 }
 
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
-int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
+/// For i == 0, @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
+int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
     int cand[4], n = 0;
     if (i == 0) {
@@ -90,7 +94,7 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
         auto sign = [&](int a, int b) {
             const int lo = a < b ? a : b, hi = a < b ? b : a;
             if (!known[lo][hi]) {
-                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi]);
+                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi], tie);
                 known[lo][hi] = true;
             }
             return a < b ? edgeSign[lo][hi] : -edgeSign[lo][hi];
@@ -123,11 +127,15 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
 }
 
 /// Sign of orient2d(a, b, z + e*d1 + e^2*d2 + e^3*d3) in the projection dropping axis k.
-int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array<AxisDir, 3>& d, int k) {
+/// If @p tie is given, it is set when the sign depended on d2 or d3.
+int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array<AxisDir, 3>& d, int k,
+                bool* tie = nullptr) {
     const int o = orient2dAxis(a, b, z, k);
     if (o != 0) return o;
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    for (AxisDir x : d) {
+    for (int q = 0; q < 3; ++q) {
+        const AxisDir x = d[static_cast<std::size_t>(q)];
+        if (q > 0 && tie) *tie = true;
         const int ax = dirAxis(x);
         int s = 0;
         if (ax == i) s = -signOf(b[j] - a[j]) * dirSign(x);
@@ -141,7 +149,9 @@ int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array
 /// orientation, the faces split into two sides tiling the same region. A path entering
 /// through a face of one side leaves through the face of the other side that contains the
 /// crossing point (z, ties broken by the symbolic perturbation of the start dart).
-int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const TetMesh& mesh, int tet) {
+/// @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
+int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const TetMesh& mesh, int tet,
+                       bool* tie = nullptr) {
     const Vec3d z = toVec3d(s.z);
     Vec3d f[4][3];
     for (int j = 0; j < 4; ++j)
@@ -166,8 +176,8 @@ int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const T
             for (int k = 0; k < n; ++k) {
                 const int j = cand[k];
                 const int o = side[j];
-                if (orient2dSoS(f[j][0], f[j][1], z, s.d, axis) == o && orient2dSoS(f[j][1], f[j][2], z, s.d, axis) == o &&
-                    orient2dSoS(f[j][2], f[j][0], z, s.d, axis) == o)
+                if (orient2dSoS(f[j][0], f[j][1], z, s.d, axis, tie) == o && orient2dSoS(f[j][1], f[j][2], z, s.d, axis, tie) == o &&
+                    orient2dSoS(f[j][2], f[j][0], z, s.d, axis, tie) == o)
                     return j;
             }
             if (n > 0) return cand[0];
@@ -245,12 +255,98 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     return kUnconnected;
 }
 
+/// Most darts that share one alpha_0 walk: the 8 frames (d2, d3) that go with one d1.
+constexpr int kMaxGroup = 8;
+/// traceEdgeGroup() result for a dart whose alpha_0 needs its own traceOne().
+constexpr long kTraceAlone = std::numeric_limits<long>::min();
+
+/// alpha_0 of the darts [b, e) (at most kMaxGroup) of one tet at one grid point that share
+/// d1. As long as no predicate on the way ties (none depends on d2, d3: see the tie flags
+/// of exitFace() and exitFaceDegenerate()), their traces visit the same tets under the same
+/// transforms and swaps; they differ only in the lookups. So the edge z -> z + d1 is walked
+/// once, and each dart is looked up in every tet until found, exactly as traceOne() would.
+/// Writes out[k] for dart b + k (kTraceAlone where a tie came before its partner, all later
+/// choices could depend on the frame) and in stepsOut[k] the steps traceOne() would count.
+void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
+                    std::size_t b, std::size_t e, long* out, long* stepsOut) {
+    const int n = static_cast<int>(e - b);
+    const Dart& D0 = set.darts[b];
+    std::array<AxisDir, 2> tail[kMaxGroup];  // (d2, d3) of each dart, in the current chart
+    for (int k = 0; k < n; ++k) {
+        const auto& d = set.darts[b + static_cast<std::size_t>(k)].d;
+        tail[k] = {d[1], d[2]};
+        out[k] = kTraceAlone;
+        stepsOut[k] = 0;
+    }
+    int open = n;  // darts not yet resolved
+    auto resolveRest = [&](long link, long steps) {
+        for (int k = 0; k < n; ++k)
+            if (out[k] == kTraceAlone) {
+                out[k] = link;
+                stepsOut[k] = steps;
+            }
+    };
+    // The shared part of start and target: grid point and d1 (d2, d3 are the same in both).
+    Vec3i sz = D0.z, tz = D0.z + dirVec(D0.d[0]);
+    AxisDir sd = D0.d[0], td = dirNeg(D0.d[0]);
+    int t = D0.tet;
+    int s = tets[static_cast<std::size_t>(t)].vol;
+    int entry = -1;
+    for (int step = 0; step < kMaxSteps; ++step) {
+        const TetSoS& T = tets[static_cast<std::size_t>(t)];
+        if (T.vol != 0) {
+            for (int k = 0; k < n; ++k) {
+                if (out[k] != kTraceAlone) continue;
+                const std::array<AxisDir, 3> want{td, tail[k][0], tail[k][1]};
+                long found = set.find(t, tz, want);
+                bool done = found >= 0;
+                if (!done && set.implicitCell(t, tz, want)) {
+                    found = encodeImplicitPartner(set.occurrence(t, tz));
+                    done = true;
+                }
+                if (done) {
+                    out[k] = found;
+                    stepsOut[k] = step;
+                    --open;
+                }
+            }
+            if (open == 0) return;
+        }
+        // Any dart serves for the exit face; the first one's frame is kept up to date.
+        const Desc cur{sz, {sd, tail[0][0], tail[0][1]}};
+        bool tie = false;
+        const int f = T.vol != 0 ? exitFace(0, T, cur, entry, &tie) : exitFaceDegenerate(0, T, cur, entry, mesh, t, &tie);
+        if (tie) return;
+        if (f < 0) return resolveRest(kUnconnected, step);
+        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        if (!opp.is_valid()) return resolveRest(kUnconnected, step);
+        const GridTransform& g = tr.halfface[hf.uidx()];
+        if (!g.is_identity()) {
+            sz = g.apply(sz);
+            tz = g.apply(tz);
+            sd = g.applyDir(sd);
+            td = g.applyDir(td);
+            for (int k = 0; k < n; ++k) tail[k] = {g.applyDir(tail[k][0]), g.applyDir(tail[k][1])};
+        }
+        t = TetMesh::cell(opp).idx();
+        entry = TetMesh::opposite_corner(opp);
+        const int sv = tets[static_cast<std::size_t>(t)].vol;
+        if (sv != 0 && sv != s) {
+            std::swap(sz, tz);
+            std::swap(sd, td);
+            s = sv;
+        }
+    }
+    resolveRest(kUnconnected, kMaxSteps);
+}
+
 } // namespace
 
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats,
-                                                  const std::function<void(double)>& progress) {
+                                                  const std::function<void(double)>& progress, bool shareEdgeTraces) {
     const std::size_t n = darts.darts.size();
     if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
@@ -281,6 +377,10 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         std::array<int, kFrameCodes> run;
         run.fill(kNoDart);
         std::size_t runB = b, runE = b;
+        // The current group for shared alpha_0 walks (traceEdgeGroup()): darts [groupB, groupE).
+        std::size_t groupB = b, groupE = b;
+        long groupLink[kMaxGroup], groupSteps[kMaxGroup];
+        bool groupSharing = false;
         for (std::size_t d = b; d < e; ++d) {
             if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
             if (d >= runE) {
@@ -299,6 +399,27 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                 if (deferred(d, i)) {
                     alpha[d][i] = kPending;
                     continue;
+                }
+                if (i == 0 && shareEdgeTraces) {  // one walk for the darts of this run with this d1
+                    if (d >= groupE) {
+                        groupB = d;
+                        while (groupB > runB && D[groupB - 1].d[0] == f[0]) --groupB;
+                        groupE = d + 1;
+                        while (groupE < runE && D[groupE].d[0] == f[0]) ++groupE;
+                        groupSharing = groupE - groupB > 1 && groupE - groupB <= static_cast<std::size_t>(kMaxGroup);
+                        if (groupSharing)
+                            traceEdgeGroup(mesh, tr, tets, darts, groupB, groupE, groupLink, groupSteps);
+                        else
+                            std::fill(groupLink, groupLink + kMaxGroup, kTraceAlone);
+                    }
+                    const std::size_t g = std::min<std::size_t>(d - groupB, kMaxGroup - 1);
+                    if (groupLink[g] != kTraceAlone) {
+                        record(st, d, 0, groupLink[g]);
+                        st.steps += groupSteps[g];
+                        ++st.shared_alpha0;
+                        continue;
+                    }
+                    if (groupSharing) ++st.tied_alpha0;
                 }
                 if (i > 0) {  // partner at the same grid point: usually in this run
                     const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
@@ -346,6 +467,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         for (int i = 0; i < 4; ++i) stats.unconnected[i] += p.unconnected[i];
         stats.boundary_alpha3 += p.boundary_alpha3;
         stats.steps += p.steps;
+        stats.shared_alpha0 += p.shared_alpha0;
+        stats.tied_alpha0 += p.tied_alpha0;
     }
     return alpha;
 }
