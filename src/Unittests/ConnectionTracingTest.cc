@@ -24,7 +24,7 @@ namespace {
 struct SharedVsAlone {
     long darts = 0;         ///< number of darts
     long shared = 0;        ///< alpha_0 links from shared walks (1 thread)
-    long tied = 0;          ///< darts of shared groups traced alone after a tie (1 thread)
+    long tied = 0;          ///< darts of shared groups that left the walk at a tie (1 thread)
     long flipped = 0;       ///< flipped tets
     long degenerate = 0;    ///< degenerate tets
 };
@@ -68,7 +68,7 @@ SharedVsAlone compareSharing(ParametrizedTetMesh pm, bool implicit_cells = false
         EXPECT_EQ(st.steps, alone.steps);
         if (threads == 1) {
             out.shared = st.shared_alpha0;
-            out.tied = st.tied_alpha0;
+            out.tied = st.split_alpha0;
         }
     }
     return out;

@@ -257,88 +257,157 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
 
 /// Most darts that share one alpha_0 walk: the 8 frames (d2, d3) that go with one d1.
 constexpr int kMaxGroup = 8;
-/// traceEdgeGroup() result for a dart whose alpha_0 needs its own traceOne().
-constexpr long kTraceAlone = std::numeric_limits<long>::min();
+/// The darts of tet @p t at grid point @p z, [first, second) (empty if none), in key order:
+/// the first one with a frame is the one DartSet::find() returns for it.
+std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, int t, const Vec3i& z) {
+    const std::size_t base = set.tet_begin[static_cast<std::size_t>(t)];
+    const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
+    if (slot >= 0) {
+        const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
+        const long l = di.local(z);
+        if (l < 0) return {0, 0};
+        return {base + di.offset[static_cast<std::size_t>(l)], base + di.offset[static_cast<std::size_t>(l) + 1]};
+    }
+    const Dart* first = set.darts.data() + base;
+    const Dart* last = set.darts.data() + set.tet_begin[static_cast<std::size_t>(t) + 1];
+    const Dart* lo = std::lower_bound(first, last, z, [](const Dart& x, const Vec3i& p) {
+        for (int k = 0; k < 3; ++k)
+            if (x.z[k] != p[k]) return x.z[k] < p[k];
+        return false;
+    });
+    const Dart* hi = lo;
+    while (hi != last && samePoint(hi->z, z)) ++hi;
+    return {static_cast<std::size_t>(lo - set.darts.data()), static_cast<std::size_t>(hi - set.darts.data())};
+}
 
 /// alpha_0 of the darts [b, e) (at most kMaxGroup) of one tet at one grid point that share
 /// d1. As long as no predicate on the way ties (none depends on d2, d3: see the tie flags
 /// of exitFace() and exitFaceDegenerate()), their traces visit the same tets under the same
-/// transforms and swaps; they differ only in the lookups. So the edge z -> z + d1 is walked
-/// once, and each dart is looked up in every tet until found, exactly as traceOne() would.
-/// Writes out[k] for dart b + k (kTraceAlone where a tie came before its partner, all later
-/// choices could depend on the frame) and in stepsOut[k] the steps traceOne() would count.
+/// transforms and swaps and differ only in the lookups. So the edge z -> z + d1 is walked
+/// once for all of them, and each dart is looked up in every tet until found, exactly as
+/// traceOne() would. At a tie, the exit face is chosen per dart and the walk splits into
+/// one walk per face taken, each going on from there.
+/// Writes for dart b + k: out[k] its alpha_0, stepsOut[k] the steps traceOne() would count,
+/// split[k] = 1 if it left the first walk at a tie (else 0).
 void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-                    std::size_t b, std::size_t e, long* out, long* stepsOut) {
+                    std::size_t b, std::size_t e, long* out, long* stepsOut, unsigned char* split) {
     const int n = static_cast<int>(e - b);
-    const Dart& D0 = set.darts[b];
-    std::array<AxisDir, 2> tail[kMaxGroup];  // (d2, d3) of each dart, in the current chart
+    std::array<AxisDir, 2> tail[kMaxGroup];  // (d2, d3) of each dart, in the chart of its walk
     for (int k = 0; k < n; ++k) {
         const auto& d = set.darts[b + static_cast<std::size_t>(k)].d;
         tail[k] = {d[1], d[2]};
-        out[k] = kTraceAlone;
-        stepsOut[k] = 0;
+        split[k] = 0;
     }
-    int open = n;  // darts not yet resolved
-    auto resolveRest = [&](long link, long steps) {
+    /// The state of a walk, shared by the darts in `members` (a bit mask of group slots).
+    struct Walk {
+        unsigned members;
+        int t, s, entry, step;
+        Vec3i sz, tz;    // start and target grid point (d2, d3 are the same in both)
+        AxisDir sd, td;  // start and target d1
+    };
+    const Dart& D0 = set.darts[b];
+    Walk stack[kMaxGroup];  // a split leaves at most n - 1 walks waiting
+    int waiting = 0;
+    stack[waiting++] = Walk{(1u << n) - 1, D0.tet, tets[static_cast<std::size_t>(D0.tet)].vol, -1, 0,
+                            D0.z, D0.z + dirVec(D0.d[0]), D0.d[0], dirNeg(D0.d[0])};
+    auto resolve = [&](unsigned m, long link, int step) {
         for (int k = 0; k < n; ++k)
-            if (out[k] == kTraceAlone) {
+            if (m >> k & 1) {
                 out[k] = link;
-                stepsOut[k] = steps;
+                stepsOut[k] = step;
             }
     };
-    // The shared part of start and target: grid point and d1 (d2, d3 are the same in both).
-    Vec3i sz = D0.z, tz = D0.z + dirVec(D0.d[0]);
-    AxisDir sd = D0.d[0], td = dirNeg(D0.d[0]);
-    int t = D0.tet;
-    int s = tets[static_cast<std::size_t>(t)].vol;
-    int entry = -1;
-    for (int step = 0; step < kMaxSteps; ++step) {
-        const TetSoS& T = tets[static_cast<std::size_t>(t)];
-        if (T.vol != 0) {
-            for (int k = 0; k < n; ++k) {
-                if (out[k] != kTraceAlone) continue;
-                const std::array<AxisDir, 3> want{td, tail[k][0], tail[k][1]};
-                long found = set.find(t, tz, want);
-                bool done = found >= 0;
-                if (!done && set.implicitCell(t, tz, want)) {
-                    found = encodeImplicitPartner(set.occurrence(t, tz));
-                    done = true;
-                }
-                if (done) {
-                    out[k] = found;
-                    stepsOut[k] = step;
-                    --open;
-                }
-            }
-            if (open == 0) return;
+    // Leaves the current tet of @p w through face @p f (traceOne()'s step); false (members
+    // resolved) if there is no face or the boundary is reached.
+    auto cross = [&](Walk& w, int f) {
+        if (f < 0) {
+            resolve(w.members, kUnconnected, w.step);
+            return false;
         }
-        // Any dart serves for the exit face; the first one's frame is kept up to date.
-        const Desc cur{sz, {sd, tail[0][0], tail[0][1]}};
-        bool tie = false;
-        const int f = T.vol != 0 ? exitFace(0, T, cur, entry, &tie) : exitFaceDegenerate(0, T, cur, entry, mesh, t, &tie);
-        if (tie) return;
-        if (f < 0) return resolveRest(kUnconnected, step);
-        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
+        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(w.t), f);
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);
-        if (!opp.is_valid()) return resolveRest(kUnconnected, step);
+        if (!opp.is_valid()) {
+            resolve(w.members, kUnconnected, w.step);
+            return false;
+        }
         const GridTransform& g = tr.halfface[hf.uidx()];
         if (!g.is_identity()) {
-            sz = g.apply(sz);
-            tz = g.apply(tz);
-            sd = g.applyDir(sd);
-            td = g.applyDir(td);
-            for (int k = 0; k < n; ++k) tail[k] = {g.applyDir(tail[k][0]), g.applyDir(tail[k][1])};
+            w.sz = g.apply(w.sz);
+            w.tz = g.apply(w.tz);
+            w.sd = g.applyDir(w.sd);
+            w.td = g.applyDir(w.td);
+            for (int k = 0; k < n; ++k)
+                if (w.members >> k & 1) tail[k] = {g.applyDir(tail[k][0]), g.applyDir(tail[k][1])};
         }
-        t = TetMesh::cell(opp).idx();
-        entry = TetMesh::opposite_corner(opp);
-        const int sv = tets[static_cast<std::size_t>(t)].vol;
-        if (sv != 0 && sv != s) {
-            std::swap(sz, tz);
-            std::swap(sd, td);
-            s = sv;
+        w.t = TetMesh::cell(opp).idx();
+        w.entry = TetMesh::opposite_corner(opp);
+        ++w.step;
+        const int sv = tets[static_cast<std::size_t>(w.t)].vol;
+        if (sv != 0 && sv != w.s) {
+            std::swap(w.sz, w.tz);
+            std::swap(w.sd, w.td);
+            w.s = sv;
+        }
+        return true;
+    };
+    while (waiting > 0) {
+        Walk w = stack[--waiting];
+        for (;;) {
+            if (w.step == kMaxSteps) {
+                resolve(w.members, kUnconnected, kMaxSteps);
+                break;
+            }
+            const TetSoS& T = tets[static_cast<std::size_t>(w.t)];
+            if (T.vol != 0) {
+                const auto range = pointRange(set, w.t, w.tz);
+                for (int k = 0; k < n; ++k) {
+                    if (!(w.members >> k & 1)) continue;
+                    const std::array<AxisDir, 3> want{w.td, tail[k][0], tail[k][1]};
+                    long found = -1;  // as set.find(w.t, w.tz, want)
+                    for (std::size_t x = range.first; x < range.second && found < 0; ++x)
+                        if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
+                    if (found < 0) {
+                        if (!set.implicitCell(w.t, w.tz, want)) continue;
+                        found = encodeImplicitPartner(set.occurrence(w.t, w.tz));
+                    }
+                    resolve(1u << k, found, w.step);
+                    w.members &= ~(1u << k);
+                }
+                if (!w.members) break;
+            }
+            // Exit face: the first member's frame serves all as long as nothing ties.
+            int first = 0;
+            while (!(w.members >> first & 1)) ++first;
+            const bool alone = (w.members & (w.members - 1)) == 0;
+            auto exitOf = [&](int k, bool* tie) {
+                const Desc cur{w.sz, {w.sd, tail[k][0], tail[k][1]}};
+                return T.vol != 0 ? exitFace(0, T, cur, w.entry, tie) : exitFaceDegenerate(0, T, cur, w.entry, mesh, w.t, tie);
+            };
+            bool tie = false;
+            const int f = exitOf(first, alone ? nullptr : &tie);
+            if (tie) {  // members that leave through another face go on as walks of their own
+                unsigned other[4] = {0, 0, 0, 0}, failed = 0;
+                for (int k = first + 1; k < n; ++k) {
+                    if (!(w.members >> k & 1)) continue;
+                    const int fk = exitOf(k, nullptr);
+                    if (fk == f) continue;
+                    if (fk < 0) failed |= 1u << k;
+                    else other[fk] |= 1u << k;
+                    w.members &= ~(1u << k);
+                }
+                for (int k = first + 1; k < n; ++k)
+                    if ((failed | other[0] | other[1] | other[2] | other[3]) >> k & 1) split[k] = 1;
+                if (failed) resolve(failed, kUnconnected, w.step);
+                for (int j = 0; j < 4; ++j)
+                    if (other[j]) {
+                        Walk part = w;
+                        part.members = other[j];
+                        if (cross(part, j)) stack[waiting++] = part;
+                    }
+            }
+            if (!cross(w, f)) break;
         }
     }
-    resolveRest(kUnconnected, kMaxSteps);
 }
 
 } // namespace
@@ -380,7 +449,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         // The current group for shared alpha_0 walks (traceEdgeGroup()): darts [groupB, groupE).
         std::size_t groupB = b, groupE = b;
         long groupLink[kMaxGroup], groupSteps[kMaxGroup];
-        bool groupSharing = false;
+        unsigned char groupSplit[kMaxGroup];
         for (std::size_t d = b; d < e; ++d) {
             if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
             if (d >= runE) {
@@ -406,20 +475,17 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         while (groupB > runB && D[groupB - 1].d[0] == f[0]) --groupB;
                         groupE = d + 1;
                         while (groupE < runE && D[groupE].d[0] == f[0]) ++groupE;
-                        groupSharing = groupE - groupB > 1 && groupE - groupB <= static_cast<std::size_t>(kMaxGroup);
-                        if (groupSharing)
-                            traceEdgeGroup(mesh, tr, tets, darts, groupB, groupE, groupLink, groupSteps);
-                        else
-                            std::fill(groupLink, groupLink + kMaxGroup, kTraceAlone);
+                        if (groupE - groupB <= 1 || groupE - groupB > static_cast<std::size_t>(kMaxGroup)) groupE = groupB;
+                        else traceEdgeGroup(mesh, tr, tets, darts, groupB, groupE, groupLink, groupSteps, groupSplit);
                     }
-                    const std::size_t g = std::min<std::size_t>(d - groupB, kMaxGroup - 1);
-                    if (groupLink[g] != kTraceAlone) {
+                    if (d < groupE) {
+                        const std::size_t g = d - groupB;
                         record(st, d, 0, groupLink[g]);
                         st.steps += groupSteps[g];
                         ++st.shared_alpha0;
+                        st.split_alpha0 += groupSplit[g];
                         continue;
                     }
-                    if (groupSharing) ++st.tied_alpha0;
                 }
                 if (i > 0) {  // partner at the same grid point: usually in this run
                     const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
@@ -468,7 +534,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         stats.boundary_alpha3 += p.boundary_alpha3;
         stats.steps += p.steps;
         stats.shared_alpha0 += p.shared_alpha0;
-        stats.tied_alpha0 += p.tied_alpha0;
+        stats.split_alpha0 += p.split_alpha0;
     }
     return alpha;
 }

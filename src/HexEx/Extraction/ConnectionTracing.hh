@@ -30,7 +30,7 @@ struct TraceStats {
     long boundary_alpha3 = 0;            ///< darts whose alpha_3 runs into the boundary (boundary faces)
     long steps = 0;                      ///< total tets visited beyond the first
     long shared_alpha0 = 0;              ///< alpha_0 links taken from a walk shared by the darts of a tet at a grid point with the same d1
-    long tied_alpha0 = 0;                ///< darts of such groups traced alone (a tie-break on the shared walk came before their partner)
+    long split_alpha0 = 0;               ///< darts of such groups that left the shared walk at a tie-break depending on d2, d3
 };
 
 /// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
