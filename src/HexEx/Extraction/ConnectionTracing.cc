@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include "../Predicates/ExactPredicates.hh"
@@ -37,9 +38,11 @@ int signOf(double x) { return (x > 0) - (x < 0); }
 /// Sign of orient3d(P, Q, a, b) for the line P = z + e^2 e2 + e^3 e3, Q = P + D:
 /// det(D, a-z, b-z) - e^2 h (b-a).e3 + e^3 h (b-a).e2 with h the handedness of (D, e2, e3).
 /// The handedness h is only needed for ties; it is computed then.
-int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b) {
+/// If @p tie is given, it is set when the sign depended on e2 or e3.
+int lineEdgeSign(const Vec3d& z, AxisDir D, AxisDir e2, AxisDir e3, const Vec3d& a, const Vec3d& b, bool* tie = nullptr) {
     const int t0 = dirSign(D) * orient2dAxis(z, a, b, dirAxis(D));
     if (t0 != 0) return t0;
+    if (tie) *tie = true;
     const int h = frameHandedness(D, e2, e3);
     const int t2 = -h * dirSign(e3) * signOf(b[dirAxis(e3)] - a[dirAxis(e3)]);
     if (t2 != 0) return t2;
@@ -72,7 +75,8 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
 }
 
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
-int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
+/// For i == 0, @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
+int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
     int cand[4], n = 0;
     if (i == 0) {
@@ -90,7 +94,7 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
         auto sign = [&](int a, int b) {
             const int lo = a < b ? a : b, hi = a < b ? b : a;
             if (!known[lo][hi]) {
-                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi]);
+                edgeSign[lo][hi] = lineEdgeSign(z, d0, d1, d2, T.p[lo], T.p[hi], tie);
                 known[lo][hi] = true;
             }
             return a < b ? edgeSign[lo][hi] : -edgeSign[lo][hi];
@@ -123,11 +127,15 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry) {
 }
 
 /// Sign of orient2d(a, b, z + e*d1 + e^2*d2 + e^3*d3) in the projection dropping axis k.
-int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array<AxisDir, 3>& d, int k) {
+/// If @p tie is given, it is set when the sign depended on d2 or d3.
+int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array<AxisDir, 3>& d, int k,
+                bool* tie = nullptr) {
     const int o = orient2dAxis(a, b, z, k);
     if (o != 0) return o;
     const int i = (k + 1) % 3, j = (k + 2) % 3;
-    for (AxisDir x : d) {
+    for (int q = 0; q < 3; ++q) {
+        const AxisDir x = d[static_cast<std::size_t>(q)];
+        if (q > 0 && tie) *tie = true;
         const int ax = dirAxis(x);
         int s = 0;
         if (ax == i) s = -signOf(b[j] - a[j]) * dirSign(x);
@@ -141,7 +149,9 @@ int orient2dSoS(const Vec3d& a, const Vec3d& b, const Vec3d& z, const std::array
 /// orientation, the faces split into two sides tiling the same region. A path entering
 /// through a face of one side leaves through the face of the other side that contains the
 /// crossing point (z, ties broken by the symbolic perturbation of the start dart).
-int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const TetMesh& mesh, int tet) {
+/// @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
+int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const TetMesh& mesh, int tet,
+                       bool* tie = nullptr) {
     const Vec3d z = toVec3d(s.z);
     Vec3d f[4][3];
     for (int j = 0; j < 4; ++j)
@@ -166,8 +176,8 @@ int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const T
             for (int k = 0; k < n; ++k) {
                 const int j = cand[k];
                 const int o = side[j];
-                if (orient2dSoS(f[j][0], f[j][1], z, s.d, axis) == o && orient2dSoS(f[j][1], f[j][2], z, s.d, axis) == o &&
-                    orient2dSoS(f[j][2], f[j][0], z, s.d, axis) == o)
+                if (orient2dSoS(f[j][0], f[j][1], z, s.d, axis, tie) == o && orient2dSoS(f[j][1], f[j][2], z, s.d, axis, tie) == o &&
+                    orient2dSoS(f[j][2], f[j][0], z, s.d, axis, tie) == o)
                     return j;
             }
             if (n > 0) return cand[0];
@@ -245,12 +255,167 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     return kUnconnected;
 }
 
+/// Most darts that share one alpha_0 walk: the 8 frames (d2, d3) that go with one d1.
+constexpr int kMaxGroup = 8;
+/// The darts of tet @p t at grid point @p z, [first, second) (empty if none), in key order:
+/// the first one with a frame is the one DartSet::find() returns for it.
+std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, int t, const Vec3i& z) {
+    const std::size_t base = set.tet_begin[static_cast<std::size_t>(t)];
+    const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
+    if (slot >= 0) {
+        const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
+        const long l = di.local(z);
+        if (l < 0) return {0, 0};
+        return {base + di.offset[static_cast<std::size_t>(l)], base + di.offset[static_cast<std::size_t>(l) + 1]};
+    }
+    const Dart* first = set.darts.data() + base;
+    const Dart* last = set.darts.data() + set.tet_begin[static_cast<std::size_t>(t) + 1];
+    const Dart* lo = std::lower_bound(first, last, z, [](const Dart& x, const Vec3i& p) {
+        for (int k = 0; k < 3; ++k)
+            if (x.z[k] != p[k]) return x.z[k] < p[k];
+        return false;
+    });
+    const Dart* hi = lo;
+    while (hi != last && samePoint(hi->z, z)) ++hi;
+    return {static_cast<std::size_t>(lo - set.darts.data()), static_cast<std::size_t>(hi - set.darts.data())};
+}
+
+/// alpha_0 of the darts [b, e) (at most kMaxGroup) of one tet at one grid point that share
+/// d1. As long as no predicate on the way ties (none depends on d2, d3: see the tie flags
+/// of exitFace() and exitFaceDegenerate()), their traces visit the same tets under the same
+/// transforms and swaps and differ only in the lookups. So the edge z -> z + d1 is walked
+/// once for all of them, and each dart is looked up in every tet until found, exactly as
+/// traceOne() would. At a tie, the exit face is chosen per dart and the walk splits into
+/// one walk per face taken, each going on from there.
+/// Writes for dart b + k: out[k] its alpha_0, stepsOut[k] the steps traceOne() would count,
+/// split[k] = 1 if it left the first walk at a tie (else 0).
+void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
+                    std::size_t b, std::size_t e, long* out, long* stepsOut, unsigned char* split) {
+    const int n = static_cast<int>(e - b);
+    std::array<AxisDir, 2> tail[kMaxGroup];  // (d2, d3) of each dart, in the chart of its walk
+    for (int k = 0; k < n; ++k) {
+        const auto& d = set.darts[b + static_cast<std::size_t>(k)].d;
+        tail[k] = {d[1], d[2]};
+        split[k] = 0;
+    }
+    /// The state of a walk, shared by the darts in `members` (a bit mask of group slots).
+    struct Walk {
+        unsigned members;
+        int t, s, entry, step;
+        Vec3i sz, tz;    // start and target grid point (d2, d3 are the same in both)
+        AxisDir sd, td;  // start and target d1
+    };
+    const Dart& D0 = set.darts[b];
+    Walk stack[kMaxGroup];  // a split leaves at most n - 1 walks waiting
+    int waiting = 0;
+    stack[waiting++] = Walk{(1u << n) - 1, D0.tet, tets[static_cast<std::size_t>(D0.tet)].vol, -1, 0,
+                            D0.z, D0.z + dirVec(D0.d[0]), D0.d[0], dirNeg(D0.d[0])};
+    auto resolve = [&](unsigned m, long link, int step) {
+        for (int k = 0; k < n; ++k)
+            if (m >> k & 1) {
+                out[k] = link;
+                stepsOut[k] = step;
+            }
+    };
+    // Leaves the current tet of @p w through face @p f (traceOne()'s step); false (members
+    // resolved) if there is no face or the boundary is reached.
+    auto cross = [&](Walk& w, int f) {
+        if (f < 0) {
+            resolve(w.members, kUnconnected, w.step);
+            return false;
+        }
+        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(w.t), f);
+        const HalfFaceHandle opp = mesh.opposite_halfface(hf);
+        if (!opp.is_valid()) {
+            resolve(w.members, kUnconnected, w.step);
+            return false;
+        }
+        const GridTransform& g = tr.halfface[hf.uidx()];
+        if (!g.is_identity()) {
+            w.sz = g.apply(w.sz);
+            w.tz = g.apply(w.tz);
+            w.sd = g.applyDir(w.sd);
+            w.td = g.applyDir(w.td);
+            for (int k = 0; k < n; ++k)
+                if (w.members >> k & 1) tail[k] = {g.applyDir(tail[k][0]), g.applyDir(tail[k][1])};
+        }
+        w.t = TetMesh::cell(opp).idx();
+        w.entry = TetMesh::opposite_corner(opp);
+        ++w.step;
+        const int sv = tets[static_cast<std::size_t>(w.t)].vol;
+        if (sv != 0 && sv != w.s) {
+            std::swap(w.sz, w.tz);
+            std::swap(w.sd, w.td);
+            w.s = sv;
+        }
+        return true;
+    };
+    while (waiting > 0) {
+        Walk w = stack[--waiting];
+        for (;;) {
+            if (w.step == kMaxSteps) {
+                resolve(w.members, kUnconnected, kMaxSteps);
+                break;
+            }
+            const TetSoS& T = tets[static_cast<std::size_t>(w.t)];
+            if (T.vol != 0) {
+                const auto range = pointRange(set, w.t, w.tz);
+                for (int k = 0; k < n; ++k) {
+                    if (!(w.members >> k & 1)) continue;
+                    const std::array<AxisDir, 3> want{w.td, tail[k][0], tail[k][1]};
+                    long found = -1;  // as set.find(w.t, w.tz, want)
+                    for (std::size_t x = range.first; x < range.second && found < 0; ++x)
+                        if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
+                    if (found < 0) {
+                        if (!set.implicitCell(w.t, w.tz, want)) continue;
+                        found = encodeImplicitPartner(set.occurrence(w.t, w.tz));
+                    }
+                    resolve(1u << k, found, w.step);
+                    w.members &= ~(1u << k);
+                }
+                if (!w.members) break;
+            }
+            // Exit face: the first member's frame serves all as long as nothing ties.
+            int first = 0;
+            while (!(w.members >> first & 1)) ++first;
+            const bool alone = (w.members & (w.members - 1)) == 0;
+            auto exitOf = [&](int k, bool* tie) {
+                const Desc cur{w.sz, {w.sd, tail[k][0], tail[k][1]}};
+                return T.vol != 0 ? exitFace(0, T, cur, w.entry, tie) : exitFaceDegenerate(0, T, cur, w.entry, mesh, w.t, tie);
+            };
+            bool tie = false;
+            const int f = exitOf(first, alone ? nullptr : &tie);
+            if (tie) {  // members that leave through another face go on as walks of their own
+                unsigned other[4] = {0, 0, 0, 0}, failed = 0;
+                for (int k = first + 1; k < n; ++k) {
+                    if (!(w.members >> k & 1)) continue;
+                    const int fk = exitOf(k, nullptr);
+                    if (fk == f) continue;
+                    if (fk < 0) failed |= 1u << k;
+                    else other[fk] |= 1u << k;
+                    w.members &= ~(1u << k);
+                }
+                for (int k = first + 1; k < n; ++k)
+                    if ((failed | other[0] | other[1] | other[2] | other[3]) >> k & 1) split[k] = 1;
+                if (failed) resolve(failed, kUnconnected, w.step);
+                for (int j = 0; j < 4; ++j)
+                    if (other[j]) {
+                        Walk part = w;
+                        part.members = other[j];
+                        if (cross(part, j)) stack[waiting++] = part;
+                    }
+            }
+            if (!cross(w, f)) break;
+        }
+    }
+}
+
 } // namespace
 
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats,
-                                                  const std::function<void(double)>& progress) {
+                                                  const std::function<void(double)>& progress, bool shareEdgeTraces) {
     const std::size_t n = darts.darts.size();
     if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
@@ -281,6 +446,10 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         std::array<int, kFrameCodes> run;
         run.fill(kNoDart);
         std::size_t runB = b, runE = b;
+        // The current group for shared alpha_0 walks (traceEdgeGroup()): darts [groupB, groupE).
+        std::size_t groupB = b, groupE = b;
+        long groupLink[kMaxGroup], groupSteps[kMaxGroup];
+        unsigned char groupSplit[kMaxGroup];
         for (std::size_t d = b; d < e; ++d) {
             if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
             if (d >= runE) {
@@ -299,6 +468,24 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                 if (deferred(d, i)) {
                     alpha[d][i] = kPending;
                     continue;
+                }
+                if (i == 0 && shareEdgeTraces) {  // one walk for the darts of this run with this d1
+                    if (d >= groupE) {
+                        groupB = d;
+                        while (groupB > runB && D[groupB - 1].d[0] == f[0]) --groupB;
+                        groupE = d + 1;
+                        while (groupE < runE && D[groupE].d[0] == f[0]) ++groupE;
+                        if (groupE - groupB <= 1 || groupE - groupB > static_cast<std::size_t>(kMaxGroup)) groupE = groupB;
+                        else traceEdgeGroup(mesh, tr, tets, darts, groupB, groupE, groupLink, groupSteps, groupSplit);
+                    }
+                    if (d < groupE) {
+                        const std::size_t g = d - groupB;
+                        record(st, d, 0, groupLink[g]);
+                        st.steps += groupSteps[g];
+                        ++st.shared_alpha0;
+                        st.split_alpha0 += groupSplit[g];
+                        continue;
+                    }
                 }
                 if (i > 0) {  // partner at the same grid point: usually in this run
                     const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
@@ -346,6 +533,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         for (int i = 0; i < 4; ++i) stats.unconnected[i] += p.unconnected[i];
         stats.boundary_alpha3 += p.boundary_alpha3;
         stats.steps += p.steps;
+        stats.shared_alpha0 += p.shared_alpha0;
+        stats.split_alpha0 += p.split_alpha0;
     }
     return alpha;
 }

@@ -29,6 +29,8 @@ struct TraceStats {
     long unconnected[4] = {0, 0, 0, 0};  ///< darts without alpha_i partner, per i
     long boundary_alpha3 = 0;            ///< darts whose alpha_3 runs into the boundary (boundary faces)
     long steps = 0;                      ///< total tets visited beyond the first
+    long shared_alpha0 = 0;              ///< alpha_0 links taken from a walk shared by the darts of a tet at a grid point with the same d1
+    long split_alpha0 = 0;               ///< darts of such groups that left the shared walk at a tie-break depending on d2, d3
 };
 
 /// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
@@ -37,9 +39,13 @@ struct TraceStats {
 /// there are more darts than an int can index.
 /// @p progress, if set, is called from the calling thread with the fraction done (of the
 /// first chunk, a good estimate of the whole).
+/// @p shareEdgeTraces walks the edge of alpha_0 once for all darts of a tet at a grid point
+/// that share d1 when no tie-break on the way depends on d2, d3; the links are the same
+/// either way (off: every dart traces alone, for tests).
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats,
-                                                  const std::function<void(double)>& progress = {});
+                                                  const std::function<void(double)>& progress = {},
+                                                  bool shareEdgeTraces = true);
 
 } // namespace HexEx
