@@ -101,7 +101,10 @@ TEST(GMap, CellByCellLabelsAgreeWithGenericOrbits) {
     EXPECT_TRUE(validateHexGMap(g, &labels).valid());
     ASSERT_EQ(labels.cell_offset.size(), 2u);  // involutive map: per-cell dart lists filled
     EXPECT_EQ(labels.cell_darts.size(), 48u);
-    EXPECT_TRUE(std::is_sorted(labels.cell_darts.begin(), labels.cell_darts.end()));
+    std::vector<int> cellDarts = labels.cell_darts;
+    EXPECT_EQ(cellDarts.front(), 0);  // breadth-first from the smallest dart
+    std::sort(cellDarts.begin(), cellDarts.end());
+    for (int d = 0; d < 48; ++d) EXPECT_EQ(cellDarts[static_cast<std::size_t>(d)], d);
     EXPECT_EQ(labels.face_size, std::vector<int>(6, 8));
     EXPECT_EQ(labels.corner_size, std::vector<int>(8, 6));
     int nv = 0, nGeneric = 0;

@@ -207,7 +207,6 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
             }
             P.nf.push_back(nf);
             P.nk.push_back(nk);
-            std::sort(begin, end);
         }
     });
     // Global numbers: local number + orbits of all earlier cells.

@@ -39,7 +39,8 @@ struct HexOrbitLabels {
     std::vector<int> face_size;   ///< darts per face orbit
     std::vector<int> corner_size; ///< darts per corner orbit
     std::vector<int> cell_size;   ///< darts per cell orbit
-    /// The darts of every cell, ascending within a cell: cell c holds
+    /// The darts of every cell, in breadth-first order from the cell's smallest dart (not
+    /// sorted): cell c holds
     /// cell_darts[cell_offset[c] .. cell_offset[c + 1]). Filled (together with exact face and
     /// corner orbits) only when every dart is alive and every link is an involution;
     /// otherwise both are empty.

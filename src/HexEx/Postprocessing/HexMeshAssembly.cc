@@ -167,13 +167,13 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             const int* first = cellDarts.data() + cellOff[static_cast<std::size_t>(c)];
             const int size = cellOff[static_cast<std::size_t>(c) + 1] - cellOff[static_cast<std::size_t>(c)];
             bool hex = size == 48;
-            int d0 = -1;
+            int d0 = -1;  // the smallest right-handed dart (cell darts need not be sorted)
             for (int k = 0; k < size && hex; ++k) {
                 const int d = first[k];
                 if (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
                     ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6)
                     hex = false;
-                if (d0 < 0 && geo.handedness[static_cast<std::size_t>(d)] > 0) d0 = d;
+                if (geo.handedness[static_cast<std::size_t>(d)] > 0 && (d0 < 0 || d < d0)) d0 = d;
             }
             if (hex && d0 >= 0) {
                 auto up = [&](int d) { return a(a(a(d, 2), 1), 0); };
@@ -186,11 +186,14 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                     continue;
                 }
             }
-            // Not a hexahedron: write every face of the cell as a vertex loop.
+            // Not a hexahedron: write every face of the cell as a vertex loop, faces in the
+            // order of their smallest dart.
+            std::vector<int> sortedDarts(first, first + size);
+            std::sort(sortedDarts.begin(), sortedDarts.end());
             Polyhedron poly;
             std::vector<int> seenFaces;
             for (int k = 0; k < size; ++k) {
-                const int f0 = first[k];
+                const int f0 = sortedDarts[static_cast<std::size_t>(k)];
                 const int fl = flabel[static_cast<std::size_t>(f0)];
                 if (std::find(seenFaces.begin(), seenFaces.end(), fl) != seenFaces.end()) continue;
                 seenFaces.push_back(fl);
