@@ -126,35 +126,53 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
 /// strip orbits of each cell (they never leave it), numbered within the cell first and
 /// offset by the counts of the cells before it (the numbering does not depend on the
 /// thread count). Fills the equation 3-6 counts of @p v and, if given, @p out.
-void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, int threads) {
+/// Cells (<alpha_0, alpha_1, alpha_2> orbits) by breadth-first search in dart order: cell
+/// numbers by smallest dart, each cell's darts in search order. Safe on any map (every dart
+/// is visited once), so it may run before the involution checks are known.
+struct CellSearch {
+    std::vector<int> cell;   ///< per dart: its cell
+    std::vector<int> size;   ///< per cell: number of darts
+    std::vector<int> darts;  ///< the darts, cell after cell
+    std::vector<int> off;    ///< cell c holds darts[off[c] .. off[c + 1])
+};
+
+CellSearch findCells(const GMap<3>& g) {
     const auto& L = g.links();
     const std::size_t n = L.size();
-    std::vector<int> cell(n, -1), face(n, -1), corner(n, -1);
-    std::vector<int> csize, cdarts, coff;
-    cdarts.reserve(n);
-    coff.push_back(0);
-    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
-    auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
+    CellSearch cs;
+    cs.cell.assign(n, -1);
+    cs.darts.reserve(n);
+    cs.off.push_back(0);
     for (std::size_t s = 0; s < n; ++s) {
-        if (cell[s] >= 0) continue;
-        const int c = static_cast<int>(csize.size());
-        const std::size_t first = cdarts.size();
-        cell[s] = c;
-        cdarts.push_back(static_cast<int>(s));
-        for (std::size_t q = first; q < cdarts.size(); ++q) {
-            const auto& r = L[static_cast<std::size_t>(cdarts[q])];
+        if (cs.cell[s] >= 0) continue;
+        const int c = static_cast<int>(cs.size.size());
+        const std::size_t first = cs.darts.size();
+        cs.cell[s] = c;
+        cs.darts.push_back(static_cast<int>(s));
+        for (std::size_t q = first; q < cs.darts.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(cs.darts[q])];
             for (int i = 0; i < 3; ++i) {
-                int& l = cell[static_cast<std::size_t>(r[i])];
+                int& l = cs.cell[static_cast<std::size_t>(r[i])];
                 if (l < 0) {
                     l = c;
                     __builtin_prefetch(&L[static_cast<std::size_t>(r[i])]);
-                    cdarts.push_back(r[i]);
+                    cs.darts.push_back(r[i]);
                 }
             }
         }
-        csize.push_back(static_cast<int>(cdarts.size() - first));
-        coff.push_back(static_cast<int>(cdarts.size()));
+        cs.size.push_back(static_cast<int>(cs.darts.size() - first));
+        cs.off.push_back(static_cast<int>(cs.darts.size()));
     }
+    return cs;
+}
+
+void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, int threads, CellSearch&& cs) {
+    const auto& L = g.links();
+    const std::size_t n = L.size();
+    std::vector<int> face(n, -1), corner(n, -1);
+    std::vector<int> cell = std::move(cs.cell), csize = std::move(cs.size), cdarts = std::move(cs.darts), coff = std::move(cs.off);
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
     const std::size_t nc = csize.size();
     // Per cell: its face and corner orbits with local numbers (0, 1, ... within the cell)
     // and their sizes, kept in per-chunk lists in cell order.
@@ -313,9 +331,15 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
-    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, n / 65536)));
+    // With two or more threads the cell search (sequential) runs on one of them while the
+    // others do the per-dart checks; it is used only if the checks find an involutive map
+    // with every dart alive.
+    const bool overlap = threads >= 2 && n >= 65536;
+    CellSearch cells;
+    const int checkThreads = overlap ? threads - 1 : std::max(1, threads);
+    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(checkThreads), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+    auto checks = [&](int k, std::size_t b, std::size_t e) {
         GMapValidation& w = part[static_cast<std::size_t>(k)];
         for (std::size_t s = b; s < e; ++s) {
             const int d = static_cast<int>(s);
@@ -338,7 +362,15 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
                 ++w.eq2_face_connection;
             }
         }
-    });
+    };
+    if (overlap) {
+        parallelChunks(2, 2, [&](int job, std::size_t, std::size_t) {
+            if (job == 0) cells = findCells(g);
+            else parallelChunks(n, chunks, checks);
+        });
+    } else {
+        parallelChunks(n, chunks, checks);
+    }
     for (const auto& w : part) {
         v.darts += w.darts;
         v.not_involution += w.not_involution;
@@ -348,7 +380,8 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq2_face_connection += w.eq2_face_connection;
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
-        labelCellByCell(g, v, labels, threads);
+        if (!overlap) cells = findCells(g);
+        labelCellByCell(g, v, labels, threads, std::move(cells));
         return v;
     }
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
