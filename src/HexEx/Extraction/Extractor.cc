@@ -14,6 +14,7 @@
 #include <chrono>
 #include <limits>
 #include <cmath>
+#include <cstring>
 
 namespace HexEx {
 
@@ -234,18 +235,20 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     int n_alive = 0;
     for (std::size_t d = 0; d < nd; ++d)
         if (alive[d]) newIndex[d] = n_alive++;
-    // Compact in place (newIndex[d] <= d, so entries not yet read are never overwritten);
-    // missing or removed partners become free links.
+    // Compact in two steps, chunks in parallel: each chunk first packs its surviving darts
+    // to the start of its own range (in place: the write position never passes the read
+    // position), then the packed blocks are moved down in chunk order. Missing or removed
+    // partners become free links.
     if (useImplicit) {
         implicit.alpha3_occurrence.assign(static_cast<std::size_t>(n_alive), -1);
         implicit.dart_occurrence.assign(static_cast<std::size_t>(n_alive), -1);
     }
     std::vector<DartLinks> links;
     links.swap(alpha);
-    // With every dart alive, each dart rewrites only its own entry: parallel.
-    const bool allAlive = n_alive == static_cast<int>(nd);
     std::vector<long> unconnected(static_cast<std::size_t>(threads), 0);
-    parallelChunks(nd, allAlive ? threads : 1, [&](int k, std::size_t b, std::size_t e) {
+    std::vector<std::size_t> chunkBegin(static_cast<std::size_t>(threads), 0), chunkKept(static_cast<std::size_t>(threads), 0);
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        std::size_t w = b;
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
             DartLinks l;
@@ -261,9 +264,14 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                     if (i < 3) ++unconnected[static_cast<std::size_t>(k)];
                 }
             }
-            links[static_cast<std::size_t>(newIndex[d])] = l;
+            links[w++] = l;
         }
+        chunkBegin[static_cast<std::size_t>(k)] = b;
+        chunkKept[static_cast<std::size_t>(k)] = w - b;
     });
+    for (std::size_t k = 0, dst = 0; k < chunkBegin.size(); dst += chunkKept[k], ++k)
+        if (dst != chunkBegin[k] && chunkKept[k] > 0)
+            std::memmove(static_cast<void*>(&links[dst]), &links[chunkBegin[k]], chunkKept[k] * sizeof(DartLinks));
     for (long u : unconnected) rep.output.unconnected_darts += u;
     links.resize(static_cast<std::size_t>(n_alive));  // no shrink_to_fit: a copy into fresh memory costs more than the few removed darts save
     GMap<3> g;
