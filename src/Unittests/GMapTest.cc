@@ -1,5 +1,6 @@
 // Generalized map kernel (2D and 3D), the validator, and dart annihilation step by step.
 
+#include <HexEx/Core/UnionFind.hh>
 #include <HexEx/GMap/GMap.hh>
 #include <HexEx/GMap/GMapValidator.hh>
 #include <HexEx/Postprocessing/DartAnnihilation.hh>
@@ -256,4 +257,19 @@ TEST(DartAnnihilation, AntiDartWithoutRegularNeighbourRemains) {
     const auto st = annihilateDarts(a, sign, alive);
     EXPECT_EQ(st.pairs, 0);
     EXPECT_EQ(st.remaining_anti, 2);
+}
+
+TEST(UnionFind, ClassesAndSmallestRoot) {
+    UnionFind uf(10);
+    uf.unite(7, 3);
+    uf.unite(9, 7);
+    uf.unite(2, 5);
+    uf.unite(5, 8);
+    uf.unite(3, 9);  // already joined
+    for (int x : {3, 7, 9}) EXPECT_EQ(uf.find(x), 3);
+    for (int x : {2, 5, 8}) EXPECT_EQ(uf.find(x), 2);
+    for (int x : {0, 1, 4, 6}) EXPECT_EQ(uf.find(x), x);
+    uf.unite(8, 1);
+    for (int x : {1, 2, 5, 8}) EXPECT_EQ(uf.find(x), 1);
+    EXPECT_NE(uf.find(3), uf.find(1));
 }

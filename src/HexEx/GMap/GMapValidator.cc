@@ -1,6 +1,7 @@
 #include "GMapValidator.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/UnionFind.hh"
 
 #include <algorithm>
 #include <sstream>
@@ -70,34 +71,6 @@ std::vector<int> labelAlternating(const GMap<3>& g, A fa, B fb, std::vector<int>
     return label;
 }
 
-/// Union-find over dense ids; the smaller root survives a union.
-class DenseUnionFind {
-public:
-    /// @p n singleton sets.
-    explicit DenseUnionFind(std::size_t n) : parent_(n) {
-        for (std::size_t i = 0; i < n; ++i) parent_[i] = static_cast<int>(i);
-    }
-    /// Root of @p x (path halving).
-    int find(int x) {
-        while (parent_[static_cast<std::size_t>(x)] != x) {
-            const int p = parent_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(x)])];
-            parent_[static_cast<std::size_t>(x)] = p;
-            x = p;
-        }
-        return x;
-    }
-    /// Joins the sets of @p x and @p y.
-    void unite(int x, int y) {
-        x = find(x);
-        y = find(y);
-        if (x == y) return;
-        if (x < y) std::swap(x, y);
-        parent_[static_cast<std::size_t>(x)] = y;
-    }
-
-private:
-    std::vector<int> parent_;
-};
 
 /// Walks the orbit of @p s under two involutions a, b (a path or a cycle alternating them),
 /// once from s starting with a, then starting with b; calls visit(x) on every dart not yet
@@ -271,7 +244,7 @@ std::vector<int> labelVertexOrbits(const GMap<3>& g, const HexOrbitLabels& label
     const auto& L = g.links();
     const std::size_t n = L.size();
     const std::vector<int>& corner = labels.corner;
-    DenseUnionFind uf(labels.corner_size.size());
+    UnionFind uf(labels.corner_size.size());
     for (std::size_t d = 0; d < n; ++d) uf.unite(corner[d], corner[static_cast<std::size_t>(L[d][3])]);
     // Number the classes by first appearance in dart order: by their smallest dart.
     std::vector<int> rootLabel(labels.corner_size.size(), -1);
@@ -302,7 +275,7 @@ long countQuadOrbits(const GMap<3>& g, const HexOrbitLabels& labels, long* bound
     } else {
         const std::vector<int>& face = labels.face;
         const std::size_t nf = labels.face_size.size();
-        DenseUnionFind uf(nf);
+        UnionFind uf(nf);
         for (std::size_t d = 0; d < n; ++d) uf.unite(face[d], face[static_cast<std::size_t>(L[d][3])]);
         bq.assign(nf, 0);
         for (std::size_t d = 0; d < n; ++d)

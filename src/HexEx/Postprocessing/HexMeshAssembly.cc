@@ -1,6 +1,7 @@
 #include "HexMeshAssembly.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/UnionFind.hh"
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
@@ -22,27 +23,6 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 }
 } // namespace
 
-/// Union-find with path halving over 32-bit ids (darts plus occurrences stay below 2^31).
-struct UnionFind {
-    std::vector<int> parent;
-    explicit UnionFind(std::size_t n) : parent(n) {
-        for (std::size_t i = 0; i < n; ++i) parent[i] = static_cast<int>(i);
-    }
-    int find(int x) {
-        while (parent[static_cast<std::size_t>(x)] != x) {
-            parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-            x = parent[static_cast<std::size_t>(x)];
-        }
-        return x;
-    }
-    void unite(int x, int y) {
-        x = find(x);
-        y = find(y);
-        if (x == y) return;
-        if (x < y) std::swap(x, y);
-        parent[static_cast<std::size_t>(x)] = y;  // the smaller index becomes the root
-    }
-};
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
                         const ImplicitCells* implicit, int threads) {
