@@ -7,34 +7,28 @@ if(HEXEX_SANITIZE)
   # The installed static library carries sanitizer instrumentation; the consumer must link the runtimes.
   set(_hexex_test_flags "-fsanitize=address,undefined")
 endif()
-add_test(NAME install_and_find_package
-  COMMAND ${CMAKE_COMMAND}
-    -DHEXEX_BINARY_DIR=${PROJECT_BINARY_DIR}
-    -DEXAMPLE_SOURCE_DIR=${PROJECT_SOURCE_DIR}/Examples/minimal
-    -DWORK_DIR=${PROJECT_BINARY_DIR}/test-install
-    -DGENERATOR=${CMAKE_GENERATOR}
-    -DBUILD_TYPE=$<CONFIG>
-    -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
-    -DEXTRA_CXX_FLAGS=${_hexex_test_flags}
-    -DEXTRA_LINKER_FLAGS=${_hexex_test_flags}
-    -P ${PROJECT_SOURCE_DIR}/cmake/TestInstall.cmake)
-set_tests_properties(install_and_find_package PROPERTIES TIMEOUT 600 LABELS package)
+# One test per example: install into its own scratch prefix (so the tests may run in
+# parallel), then configure, build and run the example against find_package(HexEx).
+function(hexex_add_install_test name example_dir program)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_COMMAND}
+      -DHEXEX_BINARY_DIR=${PROJECT_BINARY_DIR}
+      -DEXAMPLE_SOURCE_DIR=${PROJECT_SOURCE_DIR}/Examples/${example_dir}
+      -DEXAMPLE_PROGRAM=${program}
+      -DWORK_DIR=${PROJECT_BINARY_DIR}/test-${name}
+      -DGENERATOR=${CMAKE_GENERATOR}
+      -DBUILD_TYPE=$<CONFIG>
+      -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+      -DEXTRA_CXX_FLAGS=${_hexex_test_flags}
+      -DEXTRA_LINKER_FLAGS=${_hexex_test_flags}
+      -P ${PROJECT_SOURCE_DIR}/cmake/TestInstall.cmake)
+  set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS package)
+endfunction()
 
-# The same for Examples/traits: a user-defined mesh kernel read and written through the
-# mesh-kernel traits (HexEx/HexExTraits.hh). Own scratch prefix, so it may run in parallel.
-add_test(NAME install_and_find_package_traits
-  COMMAND ${CMAKE_COMMAND}
-    -DHEXEX_BINARY_DIR=${PROJECT_BINARY_DIR}
-    -DEXAMPLE_SOURCE_DIR=${PROJECT_SOURCE_DIR}/Examples/traits
-    -DEXAMPLE_PROGRAM=traits
-    -DWORK_DIR=${PROJECT_BINARY_DIR}/test-install-traits
-    -DGENERATOR=${CMAKE_GENERATOR}
-    -DBUILD_TYPE=$<CONFIG>
-    -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
-    -DEXTRA_CXX_FLAGS=${_hexex_test_flags}
-    -DEXTRA_LINKER_FLAGS=${_hexex_test_flags}
-    -P ${PROJECT_SOURCE_DIR}/cmake/TestInstall.cmake)
-set_tests_properties(install_and_find_package_traits PROPERTIES TIMEOUT 600 LABELS package)
+# Examples/minimal extracts a generated cube; Examples/traits reads and writes a
+# user-defined mesh kernel through the mesh-kernel traits (HexEx/HexExTraits.hh).
+hexex_add_install_test(install_and_find_package minimal app)
+hexex_add_install_test(install_and_find_package_traits traits traits)
 
 # The API documentation must build without a single Doxygen warning.
 if(TARGET doc)

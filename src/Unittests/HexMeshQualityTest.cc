@@ -7,18 +7,15 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
+
 #include <cmath>
 
 using namespace HexEx;
 
 namespace {
 
-HexMesh extracted(ParametrizedTetMesh pm) {
-    pm.mesh.build_adjacency();
-    HexMesh hm;
-    extractHexMesh(pm, hm);
-    return hm;
-}
+using HexExTest::extracted;
 
 /// An n x n x n grid of unit hexes in VTK order.
 HexMesh gridMesh(int n) {

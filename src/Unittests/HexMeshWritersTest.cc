@@ -11,6 +11,8 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
+
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -25,12 +27,7 @@ using namespace HexEx;
 
 namespace {
 
-HexMesh extracted(ParametrizedTetMesh pm) {
-    pm.mesh.build_adjacency();
-    HexMesh hm;
-    extractHexMesh(pm, hm);
-    return hm;
-}
+using HexExTest::extracted;
 
 std::string tempPath(const std::string& file) {
     const auto dir = std::filesystem::temp_directory_path() / "hexex_writers_test";

@@ -222,16 +222,23 @@ TEST(MeshTraitsTest, UserKernelWithChartTransformsMatchesBuiltIn) {
         for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(out.hexes[h][i].id, ref.hexes[h][i]);
 }
 
-TEST(MeshTraitsTest, ArrayTraitsCube) {
-    const ParametrizedTetMesh pm = cube();
-    std::vector<Vec3d> positions;
-    std::vector<std::array<int, 4>> tets;
+namespace {
+/// The vertices and tets of @p pm as plain arrays (the input of the array traits).
+void toArrays(const ParametrizedTetMesh& pm, std::vector<Vec3d>& positions, std::vector<std::array<int, 4>>& tets) {
     for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v)
         positions.push_back(pm.mesh.position(VertexHandle(static_cast<int>(v))));
     for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c) {
         const auto& cv = pm.mesh.cell_vertices(CellHandle(static_cast<int>(c)));
         tets.push_back({cv[0].idx(), cv[1].idx(), cv[2].idx(), cv[3].idx()});
     }
+}
+} // namespace
+
+TEST(MeshTraitsTest, ArrayTraitsCube) {
+    const ParametrizedTetMesh pm = cube();
+    std::vector<Vec3d> positions;
+    std::vector<std::array<int, 4>> tets;
+    toArrays(pm, positions, tets);
     const TetArraysView view{&positions, &tets, &pm.params};
     HexArrays out;
     const ExtractionReport r = extractHexMesh(view, out, oneThread());
@@ -333,12 +340,7 @@ TEST(MeshTraitsTest, OutOfRangeVertexIndexNamesTheTet) {
     const ParametrizedTetMesh pm = cube();
     std::vector<Vec3d> positions;
     std::vector<std::array<int, 4>> tets;
-    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v)
-        positions.push_back(pm.mesh.position(VertexHandle(static_cast<int>(v))));
-    for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c) {
-        const auto& cv = pm.mesh.cell_vertices(CellHandle(static_cast<int>(c)));
-        tets.push_back({cv[0].idx(), cv[1].idx(), cv[2].idx(), cv[3].idx()});
-    }
+    toArrays(pm, positions, tets);
     auto messageOf = [](auto&& f) -> std::string {
         try {
             f();

@@ -1,6 +1,7 @@
 #pragma once
 // Mesh checks shared by the extraction tests.
 
+#include <HexEx/HexEx.hh>
 #include <HexEx/Mesh/HexMesh.hh>
 
 #include <cmath>
@@ -9,6 +10,14 @@
 #include <vector>
 
 namespace HexExTest {
+
+/// The hex mesh extracted from @p pm with default options (adjacency built here).
+inline HexEx::HexMesh extracted(HexEx::ParametrizedTetMesh pm) {
+    pm.mesh.build_adjacency();
+    HexEx::HexMesh hm;
+    HexEx::extractHexMesh(pm, hm);
+    return hm;
+}
 
 /// Number of hexes around each hex edge that lies on the cylinder axis (3D x = y = 0),
 /// one entry per such edge.
