@@ -1,0 +1,52 @@
+#pragma once
+/// @file TrianglePreprocessing.hh
+/// Preprocessing of the 2D pipeline (the analogue of Preprocessing/ for tets): transitions
+/// per halfedge (paper 4.1.1 in 2D), sanitization (4.1.2 in 2D), the orientation of every
+/// triangle's parameter image and the cones of the map.
+
+#include "../Grid/GridTransform.hh"
+#include "ParametrizedTriMesh.hh"
+
+#include <vector>
+
+namespace HexEx {
+
+/// Corner parameters of every triangle as (u, v, 0), so that the grid algebra
+/// (GridTransform with planar rotations) and the exact predicates of the 3D kernel apply.
+using TriParams = std::vector<std::array<Vec3d, 3>>;
+
+/// The transition of every halfedge into the neighbouring triangle's chart.
+struct TriTransitions {
+    std::vector<GridTransform> halfedge;  ///< per halfedge (identity on the boundary)
+    long ambiguous = 0;   ///< interior edges whose parametric length is (nearly) zero: best fit taken
+};
+
+/// Computes the transition of every interior halfedge: the planar rotation (one of 4)
+/// that maps the edge vector in one chart best onto the edge vector in the other, and the
+/// rounded mean translation; the opposite halfedge gets the exact inverse. If
+/// @p given_quarter_turns is not null it holds the rotation (0..3 counter-clockwise quarter
+/// turns) per halfedge and only translations are computed; InputError if a value is out
+/// of range or the two halfedges of an edge are not inverse.
+TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
+                                     const std::vector<int>* given_quarter_turns, int threads);
+
+/// Sanitizes @p params in place (paper 4.1.2 in 2D): per vertex, its parameter in its
+/// lowest-index triangle is quantized (quantizeParameter(), snapping coordinates within
+/// @p epsilon of an integer) and propagated through the transitions into every triangle
+/// around the vertex. Returns the number of snapped coordinates.
+long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, TriParams& params,
+                       const TriTransitions& tr, double epsilon, int threads);
+
+/// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0 degenerate.
+std::vector<signed char> classifyTriangles(const TriParams& params);
+
+/// Cone count of the map: interior vertices whose parametric angle sum (over their
+/// triangles, signed by orientation) is not a full turn. Valences (angle sum in quarter
+/// turns, rounded) are written to @p valence per vertex if given (0 for boundary vertices).
+long countCones(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
+                std::vector<int>* valence = nullptr);
+
+/// True if vertex @p v lies on the boundary of the surface (on a halfedge without opposite).
+bool isBoundaryVertex(const ParametrizedTriMesh& m, const TriAdjacency& adj, int v);
+
+} // namespace HexEx
