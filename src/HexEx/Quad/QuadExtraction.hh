@@ -43,6 +43,7 @@ struct QuadExtractionReport {
         long cones = 0;                   ///< interior vertices whose parametric angle is not a full turn
         double parametric_area = 0;       ///< sum of signed parametric triangle areas
         long ambiguous_transitions = 0;   ///< interior edges of (nearly) zero parametric length
+        long unresolved_transitions = 0;  ///< of those, not resolvable by vertex consistency
         long snapped_coordinates = 0;     ///< parameter coordinates snapped to integers
     } input;  ///< input statistics
     /// Output statistics.

@@ -57,13 +57,14 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     }
     rep.input.parametric_area = area;
     rep.input.ambiguous_transitions = tr.ambiguous;
+    rep.input.unresolved_transitions = tr.unresolved;
     rep.input.cones = countCones(in, adj, params);
     if (!(unsignedArea <= opt.max_quads))
         throw InputError("parameter map too large: unsigned parametric area " + std::to_string(unsignedArea) +
                          " exceeds the limit of " + std::to_string(opt.max_quads) + " quads");
-    if (tr.ambiguous > 0)
-        rep.warnings.push_back(std::to_string(tr.ambiguous) +
-                               " interior edges have (nearly) zero parametric length; their rotation is a best fit");
+    if (tr.unresolved > 0)
+        rep.warnings.push_back(std::to_string(tr.unresolved) +
+                               " interior edges of (nearly) zero parametric length have no determined rotation (best fit kept)");
     rep.timings_s.preprocess = since(t0);
 
     // Darts.

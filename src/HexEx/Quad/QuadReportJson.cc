@@ -15,6 +15,7 @@ std::string quadReportToJson(const QuadExtractionReport& r, const QuadReportExtr
       << ", \"degenerate_triangles\": " << r.input.degenerate_triangles << ", \"cones\": " << r.input.cones
       << ", \"parametric_area\": " << n(r.input.parametric_area)
       << ", \"ambiguous_transitions\": " << r.input.ambiguous_transitions
+      << ", \"unresolved_transitions\": " << r.input.unresolved_transitions
       << ", \"snapped_coordinates\": " << r.input.snapped_coordinates << "},\n";
     o << "  \"output\": {\"vertices\": " << r.output.vertices << ", \"quads\": " << r.output.quads
       << ", \"non_quad_faces\": " << r.output.non_quad_faces << ", \"edges\": " << r.output.edges

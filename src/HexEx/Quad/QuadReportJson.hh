@@ -3,7 +3,7 @@
 /// The 2D extraction report as JSON (the `--report` file of `hexex quad`), with the keys of
 /// the 3D report where they apply (ReportJson.hh): "input" {"vertices", "triangles",
 /// "boundary_edges", "flipped_triangles", "degenerate_triangles", "cones",
-/// "parametric_area", "ambiguous_transitions", "snapped_coordinates"}, "output" {"vertices",
+/// "parametric_area", "ambiguous_transitions", "unresolved_transitions", "snapped_coordinates"}, "output" {"vertices",
 /// "quads", "non_quad_faces", "edges", "boundary_edges", "unconnected_darts",
 /// "dropped_faces"}, "darts" {"extracted", "anti", "annihilated_pairs", "remaining_anti",
 /// "asymmetric_links"}, "valid_all_quad", "validation" (counts, "valid", "summary"),

@@ -36,6 +36,104 @@ int fitQuarterTurns(const Vec3d& e, const Vec3d& g, bool& ambiguous) {
     ambiguous = !(scale > 1e-12) || s[best] - second <= 1e-9 * scale;
     return best;
 }
+/// Transition with rotation @p R from the corners of edge halfedge @p h (exact rounding).
+GridTransform fitTranslation(const ParametrizedTriMesh& m, const TriParams& params, std::size_t h, int o, Rotation R) {
+    const int f = static_cast<int>(h / 3), i = static_cast<int>(h % 3), g = o / 3;
+    const int ka = (i + 1) % 3, kb = (i + 2) % 3;
+    const int ja = cornerOf(m, g, m.triangles[static_cast<std::size_t>(f)][ka]);
+    const int jb = cornerOf(m, g, m.triangles[static_cast<std::size_t>(f)][kb]);
+    const Vec3d r0 = R.apply(params[static_cast<std::size_t>(f)][ka]), r1 = R.apply(params[static_cast<std::size_t>(f)][kb]);
+    const Vec3d& w0 = params[static_cast<std::size_t>(g)][ja];
+    const Vec3d& w1 = params[static_cast<std::size_t>(g)][jb];
+    return GridTransform(R, Vec3i(static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0])))),
+                                  static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1])))), 0));
+}
+
+/// Resolves the rotation of ambiguous edges (zero parametric length) by consistency:
+/// around regular vertices the transitions compose to the identity, so the transition
+/// across an ambiguous edge is the composition along any other path between its two
+/// triangles that, together with the edge, encloses no cone. Such a path is searched
+/// breadth first over known transitions, among at most kResolveReach triangles and never
+/// through a triangle at a cone (an interior vertex whose parametric angle is not a full
+/// turn and that has no zero-length edge, which makes the angle unreliable). Edges are
+/// taken in halfedge order and each resolved edge helps the next; returns the number left
+/// with their best fit.
+long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
+                                TriTransitions& tr, std::vector<char>& ambiguous) {
+    constexpr std::size_t kResolveReach = 256;
+    std::vector<int> valence;
+    countCones(m, adj, params, &valence);
+    std::vector<std::size_t> open;
+    std::vector<char> touchesAmbiguous(m.points.size(), 0);
+    for (std::size_t h = 0; h < ambiguous.size(); ++h) {
+        if (!ambiguous[h]) continue;
+        ambiguous[static_cast<std::size_t>(adj.opposite[h])] = 1;  // both halfedges of the edge
+        open.push_back(h);
+        const auto& t = m.triangles[h / 3];
+        touchesAmbiguous[static_cast<std::size_t>(t[(h % 3 + 1) % 3])] = 1;
+        touchesAmbiguous[static_cast<std::size_t>(t[(h % 3 + 2) % 3])] = 1;
+    }
+    auto atCone = [&](int f) {
+        for (int v : m.triangles[static_cast<std::size_t>(f)]) {
+            const int val = valence[static_cast<std::size_t>(v)];
+            if (val != 0 && val != 4 && !touchesAmbiguous[static_cast<std::size_t>(v)]) return true;
+        }
+        return false;
+    };
+    std::vector<int> seen(m.triangles.size(), -1), queue;
+    long arbitrary = 0;
+    std::vector<GridTransform> toChart(m.triangles.size());
+    bool changed = true;
+    while (changed && !open.empty()) {
+        changed = false;
+        for (std::size_t idx = 0; idx < open.size();) {
+            const std::size_t h = open[idx];
+            const int o = adj.opposite[h];
+            const int f0 = static_cast<int>(h / 3), g0 = o / 3;
+            // Breadth first from f0 over known transitions until g0 is reached.
+            queue.assign(1, f0);
+            seen[static_cast<std::size_t>(f0)] = static_cast<int>(h);
+            toChart[static_cast<std::size_t>(f0)] = GridTransform();
+            bool found = false;
+            for (std::size_t q = 0; q < queue.size() && !found && queue.size() <= kResolveReach; ++q) {
+                const int f = queue[q];
+                for (int j = 0; j < 3 && !found; ++j) {
+                    const std::size_t he = 3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j);
+                    const int oe = adj.opposite[he];
+                    if (oe < 0 || ambiguous[he]) continue;
+                    const int g = oe / 3;
+                    if (seen[static_cast<std::size_t>(g)] == static_cast<int>(h)) continue;
+                    seen[static_cast<std::size_t>(g)] = static_cast<int>(h);
+                    toChart[static_cast<std::size_t>(g)] = tr.halfedge[he] * toChart[static_cast<std::size_t>(f)];
+                    if (g == g0) {
+                        found = true;
+                    } else if (!atCone(g)) {
+                        queue.push_back(g);
+                    }
+                }
+            }
+            if (found) {
+                tr.halfedge[h] = fitTranslation(m, params, h, o, toChart[static_cast<std::size_t>(g0)].R);
+                tr.halfedge[static_cast<std::size_t>(o)] = tr.halfedge[h].inverse();
+                ambiguous[h] = ambiguous[static_cast<std::size_t>(o)] = 0;
+                open.erase(open.begin() + static_cast<std::ptrdiff_t>(idx));
+                changed = true;
+            } else {
+                ++idx;
+            }
+        }
+        if (!changed && !open.empty()) {
+            // Stuck (e.g. a triangle collapsed to a point has no known edge): keep the best
+            // fit of the first open edge as known, which fixes such a triangle's chart, and go on.
+            const std::size_t h = open.front();
+            ambiguous[h] = ambiguous[static_cast<std::size_t>(adj.opposite[h])] = 0;
+            open.erase(open.begin());
+            ++arbitrary;
+            changed = true;
+        }
+    }
+    return arbitrary;
+}
 } // namespace
 
 TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
@@ -48,6 +146,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                          " halfedges");
     const int chunks = std::max(1, threads);
     std::vector<long> ambiguous(static_cast<std::size_t>(chunks), 0);
+    std::vector<char> isAmbiguous(given ? 0 : nh, 0);
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
     parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
@@ -75,7 +174,27 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
             } else {
                 bool amb = false;
                 k = fitQuarterTurns(u1 - u0, w1 - w0, amb);
-                if (amb) ++ambiguous[static_cast<std::size_t>(chunk)];
+                if (amb) {
+                    // The edge does not fix the rotation; the translation must still be an
+                    // integer vector: keep the rotations for which it (nearly) is.
+                    unsigned mask = 0;
+                    for (int c = 0; c < 4; ++c) {
+                        const Vec3d d = w0 - planarRotation(c).apply(u0);
+                        if (std::fabs(d[0] - std::round(d[0])) <= 1e-6 && std::fabs(d[1] - std::round(d[1])) <= 1e-6)
+                            mask |= 1u << c;
+                    }
+                    for (int c = 0; c < 4; ++c)
+                        if (mask == (1u << c)) {
+                            k = c;  // the only one: determined after all
+                            amb = false;
+                        }
+                    if (amb) {
+                        ++ambiguous[static_cast<std::size_t>(chunk)];
+                        isAmbiguous[h] = 1;
+                        for (int c = 3; c >= 0; --c)
+                            if (mask & (1u << c)) k = c;  // the smallest candidate
+                    }
+                }
             }
             const Rotation R = planarRotation(k);
             const Vec3d r0 = R.apply(u0), r1 = R.apply(u1);
@@ -89,6 +208,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
     for (const auto& e : errors)
         if (!e.empty()) throw InputError(e);
     for (long a : ambiguous) tr.ambiguous += a;
+    if (tr.ambiguous > 0) tr.unresolved = resolveByVertexConsistency(m, adj, params, tr, isAmbiguous);
     return tr;
 }
 

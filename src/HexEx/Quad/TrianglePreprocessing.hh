@@ -18,7 +18,8 @@ using TriParams = std::vector<std::array<Vec3d, 3>>;
 /// The transition of every halfedge into the neighbouring triangle's chart.
 struct TriTransitions {
     std::vector<GridTransform> halfedge;  ///< per halfedge (identity on the boundary)
-    long ambiguous = 0;   ///< interior edges whose parametric length is (nearly) zero: best fit taken
+    long ambiguous = 0;   ///< interior edges of (nearly) zero parametric length, whose rotation the edge does not determine
+    long unresolved = 0;  ///< of those, not resolvable by vertex consistency (best fit kept)
 };
 
 /// Computes the transition of every interior halfedge: the planar rotation (one of 4)
@@ -26,7 +27,9 @@ struct TriTransitions {
 /// rounded mean translation; the opposite halfedge gets the exact inverse. If
 /// @p given_quarter_turns is not null it holds the rotation (0..3 counter-clockwise quarter
 /// turns) per halfedge and only translations are computed; InputError if a value is out
-/// of range or the two halfedges of an edge are not inverse.
+/// of range or the two halfedges of an edge are not inverse. Ambiguous edges (zero
+/// parametric length) get the composition of the other transitions around a regular
+/// endpoint (vertex consistency, repeated until nothing changes).
 TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
                                      const std::vector<int>* given_quarter_turns, int threads);
 

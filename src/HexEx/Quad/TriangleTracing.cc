@@ -38,17 +38,20 @@ int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
     }
 }
 
-/// Side of point p of the perturbed line {q + e*off + s*dir}: sign(dir x (p - q - e off)).
-int lineSide(const Vec3d& p, int qx, int qy, AxisDir dir, AxisDir off) {
-    auto sgn = [](double lo, double hi) { return lo < hi ? 1 : (lo > hi ? -1 : 0); };
-    int s = 0;
-    switch (dir) {
-        case 0: s = sgn(qy, p[1]); break;   // dir x (p-q) = p_v - q_v
-        case 1: s = sgn(p[1], qy); break;
-        case 2: s = sgn(p[0], qx); break;   // = -(p_u - q_u)
-        default: s = sgn(qx, p[0]); break;
-    }
-    return s != 0 ? s : crossDirs(off, dir);
+/// Side of point p of the perturbed grid line {q + s*w} + (infinitesimal offset):
+/// sign(w x (p - q)), or @p tie if p lies on the unperturbed line. Exact (q, q + w are
+/// integer points).
+int lineSide(const Vec3d& p, const Vec3i& q, const Vec3i& w, int tie) {
+    const int s = orient2dAxis(toVec3d(q), toVec3d(q + w), p, 2);
+    return s != 0 ? s : tie;
+}
+
+/// sign((b - a) x w) for an edge (a, b) that contains the grid point q (exact): the sign of
+/// (b - q) x w, or of (q - a) x w when b == q.
+int crossEdgeThrough(const Vec3d& a, const Vec3d& b, const Vec3i& q, const Vec3i& w) {
+    const Vec3d z = toVec3d(q), zw = toVec3d(q + w);
+    if (b != z) return -orient2dAxis(z, zw, b, 2);
+    return orient2dAxis(z, zw, a, 2);
 }
 
 Desc mapDesc(const GridTransform& g, const Desc& d) {
@@ -68,21 +71,32 @@ struct Tracer {
     /// Partner or -1; @p boundary set if the trace left the surface.
     int lookup(int f, const Desc& d) const { return sign[static_cast<std::size_t>(f)] ? findTriDart(ds, f, d.x, d.y, d.d1, d.d2) : -1; }
 
-    /// alpha_0 (i = 0) or alpha_2 (i = 2): walk along the perturbed grid line.
-    int traceLine(int dart, int i, bool& boundary) const {
+    /// alpha_i: walk from the dart's perturbed point z + e d1 + e^2 d2 to the partner's along
+    /// a straight path, across triangles, and look the partner up in every triangle passed:
+    /// alpha_0 runs along the grid edge (z + e^2 d2 + s d1), alpha_1 turns about z inside the
+    /// quadrant (from z + e d1 + e^2 d2 towards z + e d2 + e^2 d1, direction d2 - d1) and
+    /// alpha_2 crosses the grid edge (z + e d1 - s d2). The exit edge is the one the
+    /// perturbed path crosses (in the start triangle the one it leaves through; afterwards
+    /// the other crossed edge, which also steps across flat triangles). Between proper and
+    /// flipped triangles the walk runs backwards (start and target swap), as in Algorithm 2.
+    int trace(int dart, int i, bool& boundary) const {
         const TriDart& s = ds.darts[static_cast<std::size_t>(dart)];
         Desc from{s.x, s.y, s.d1, s.d2}, to{};
-        int qx = s.x, qy = s.y;
-        AxisDir dir, off;
+        Vec3i q(s.x, s.y, 0), w;
+        int tie = 0;
+        const Vec3i e1 = dirVec(s.d1), e2 = dirVec(s.d2);
         if (i == 0) {
-            const Vec3i e = dirVec(s.d1);
-            to = {s.x + e[0], s.y + e[1], dirNeg(s.d1), s.d2};
-            dir = s.d1;
-            off = s.d2;
+            to = {s.x + e1[0], s.y + e1[1], dirNeg(s.d1), s.d2};
+            w = e1;
+            tie = crossDirs(s.d2, s.d1);
+        } else if (i == 1) {
+            to = {s.x, s.y, s.d2, s.d1};
+            w = e2 - e1;
+            tie = crossDirs(s.d1, s.d2);
         } else {
             to = {s.x, s.y, s.d1, dirNeg(s.d2)};
-            dir = dirNeg(s.d2);
-            off = s.d1;
+            w = -e2;
+            tie = crossDirs(s.d1, dirNeg(s.d2));
         }
         int f = s.tri, entry = -1, lastSign = s.sign;
         for (int step = 0; step < kMaxSteps; ++step) {
@@ -95,12 +109,14 @@ struct Tracer {
                 if (e == entry) continue;
                 const Vec3d& a = p[(e + 1) % 3];
                 const Vec3d& b = p[(e + 2) % 3];
-                if (lineSide(a, qx, qy, dir, off) == lineSide(b, qx, qy, dir, off)) continue;
-                if (entry < 0 && sf * crossEdgeDir(a, b, dir) >= 0) continue;  // start: the edge the line leaves through
-                // The crossing must lie on the traced segment (between the two grid points).
+                if (lineSide(a, q, w, tie) == lineSide(b, q, w, tie)) continue;
+                // The crossing must lie on the traced segment (between the two grid points;
+                // on the edge through z for alpha_1 and alpha_2).
                 const int oa = orient2dAxis(a, b, Vec3d(from.x, from.y, 0), 2);
                 const int ob = orient2dAxis(a, b, Vec3d(to.x, to.y, 0), 2);
-                if (oa * ob > 0) return -1;
+                if (oa * ob > 0 || (i > 0 && oa != 0)) continue;
+                if (entry < 0 && sf * crossEdgeThrough(a, b, Vec3i(from.x, from.y, 0), w) >= 0 && i > 0) continue;
+                if (entry < 0 && i == 0 && sf * crossEdgeDir(a, b, s.d1) >= 0) continue;
                 exit = e;
             }
             if (exit < 0) return -1;
@@ -113,67 +129,15 @@ struct Tracer {
             const GridTransform& g = tr.halfedge[h];
             from = mapDesc(g, from);
             to = mapDesc(g, to);
-            const Vec3i q = g.apply(Vec3i(qx, qy, 0));
-            qx = q[0];
-            qy = q[1];
-            dir = g.R.apply(dir);
-            off = g.R.apply(off);
+            q = g.apply(q);
+            w = g.R.apply(w);
             f = o / 3;
             entry = o % 3;
             const int sn = sign[static_cast<std::size_t>(f)];
             if (sn != 0 && sn != lastSign) {  // between proper and flipped: the walk runs backwards
                 std::swap(from, to);
-                dir = dirNeg(dir);
-                lastSign = sn;
-            }
-        }
-        return -1;
-    }
-
-    /// alpha_1: rotation about the grid point from d1 towards d2, around the fan of the mesh
-    /// vertex at the point (or across the edge it lies on).
-    int traceRotation(int dart) const {
-        const TriDart& s = ds.darts[static_cast<std::size_t>(dart)];
-        Desc from{s.x, s.y, s.d1, s.d2}, to{s.x, s.y, s.d2, s.d1};
-        const int md = crossDirs(s.d1, s.d2) * s.sign;  // mesh direction of the rotation
-        int f = s.tri, entry = -1, lastSign = s.sign, pivot = -1;
-        for (int step = 0; step < kMaxSteps; ++step) {
-            const int r = lookup(f, to);
-            if (r >= 0 && r != dart) return r;
-            const auto& p = params[static_cast<std::size_t>(f)];
-            const Vec3d z(to.x, to.y, 0);
-            int corner = -1;
-            for (int k = 0; k < 3; ++k)
-                if (p[k] == z && (corner < 0 || m.triangles[static_cast<std::size_t>(f)][k] == pivot)) corner = k;
-            int exit = -1;
-            if (corner >= 0) {
-                pivot = m.triangles[static_cast<std::size_t>(f)][corner];
-                const int e1 = (corner + 1) % 3, e2 = (corner + 2) % 3;
-                exit = entry == e1 ? e2 : entry == e2 ? e1 : (md > 0 ? e1 : e2);
-            } else {
-                for (int e = 0; e < 3 && exit < 0; ++e) {
-                    if (e == entry) continue;
-                    const Vec3d& a = p[(e + 1) % 3];
-                    const Vec3d& b = p[(e + 2) % 3];
-                    if (orient2dAxis(a, b, z, 2) != 0) continue;
-                    if (z[0] < std::min(a[0], b[0]) || z[0] > std::max(a[0], b[0]) || z[1] < std::min(a[1], b[1]) ||
-                        z[1] > std::max(a[1], b[1]))
-                        continue;
-                    exit = e;
-                }
-            }
-            if (exit < 0) return -1;
-            const std::size_t h = 3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(exit);
-            const int o = adj.opposite[h];
-            if (o < 0) return -1;
-            const GridTransform& g = tr.halfedge[h];
-            from = mapDesc(g, from);
-            to = mapDesc(g, to);
-            f = o / 3;
-            entry = o % 3;
-            const int sn = sign[static_cast<std::size_t>(f)];
-            if (sn != 0 && sn != lastSign) {
-                std::swap(from, to);
+                w = -w;
+                tie = -tie;
                 lastSign = sn;
             }
         }
@@ -194,10 +158,10 @@ std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
             const int di = static_cast<int>(d);
-            bool boundary0 = false, boundary2 = false;
-            links[d][0] = T.traceLine(di, 0, boundary0);
-            links[d][1] = T.traceRotation(di);
-            const int a2 = T.traceLine(di, 2, boundary2);
+            bool boundary0 = false, boundary1 = false, boundary2 = false;
+            links[d][0] = T.trace(di, 0, boundary0);
+            links[d][1] = T.trace(di, 1, boundary1);
+            const int a2 = T.trace(di, 2, boundary2);
             links[d][2] = a2 >= 0 ? a2 : (boundary2 ? di : -1);
             links[d][3] = di;
         }
