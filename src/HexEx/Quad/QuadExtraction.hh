@@ -40,7 +40,7 @@ struct QuadExtractionReport {
         long boundary_edges = 0;          ///< boundary edges of the surface
         long flipped_triangles = 0;       ///< triangles with negative parametric area after sanitization
         long degenerate_triangles = 0;    ///< triangles with zero parametric area after sanitization
-        long cones = 0;                   ///< interior vertices whose parametric angle is not a full turn
+        long cones = 0;                   ///< interior vertices whose transitions around them compose to a rotation (valence not 4 mod 4)
         double parametric_area = 0;       ///< sum of signed parametric triangle areas
         long ambiguous_transitions = 0;   ///< interior edges of (nearly) zero parametric length
         long unresolved_transitions = 0;  ///< of those, not resolvable by vertex consistency

@@ -58,7 +58,8 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     rep.input.parametric_area = area;
     rep.input.ambiguous_transitions = tr.ambiguous;
     rep.input.unresolved_transitions = tr.unresolved;
-    rep.input.cones = countCones(in, adj, params);
+    for (int h : vertexHolonomy(in, adj, tr))
+        if (h > 0) ++rep.input.cones;
     if (!(unsignedArea <= opt.max_quads))
         throw InputError("parameter map too large: unsigned parametric area " + std::to_string(unsignedArea) +
                          " exceeds the limit of " + std::to_string(opt.max_quads) + " quads");

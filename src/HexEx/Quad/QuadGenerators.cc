@@ -136,8 +136,7 @@ void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPe
     for (std::size_t f = 0; f < m.triangles.size(); ++f)
         for (int k = 0; k < 3; ++k) params[f][k] = Vec3d(m.params[f][k][0], m.params[f][k][1], 0);
     const TriTransitions tr = computeTriTransitions(m, adj, params, nullptr, 1);
-    std::vector<int> valence;
-    countCones(m, adj, params, &valence);
+    const std::vector<int> holonomy = vertexHolonomy(m, adj, tr);
     TriPerturbStats st;
     std::mt19937 rng(seed);
     std::vector<int> star;
@@ -181,7 +180,7 @@ void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPe
             }
         }
         if (boundary) ++st.boundary_vertices;
-        if (!boundary && valence[vi] != 4) free[0] = free[1] = false;  // cone
+        if (!boundary && holonomy[vi] > 0) free[0] = free[1] = false;  // cone
         const Vec3d d(free[0] ? dx : 0.0, free[1] ? dy : 0.0, 0.0);
         if (!free[0] && !free[1]) ++st.fixed_vertices;
         if (d[0] != 0 || d[1] != 0) ++st.moved_vertices;

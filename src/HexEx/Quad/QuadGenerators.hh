@@ -58,7 +58,7 @@ struct TriPerturbStats {
 /// chart of its lowest-index triangle and carried into every other triangle around it by
 /// the rotations of the transitions, so the map stays seamless with the same transitions
 /// (the 2D version of perturbParameters()). A coordinate in which a boundary edge at the
-/// vertex is aligned to an integer line stays fixed; cone vertices do not move. Two numbers
+/// vertex is aligned to an integer line stays fixed; cone vertices (vertexHolonomy()) do not move. Two numbers
 /// are drawn per vertex in vertex order (std::mt19937, mapped to doubles by hand).
 /// @throws std::invalid_argument if @p a is negative or not finite; InputError for a bad mesh.
 void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPerturbStats* stats = nullptr);

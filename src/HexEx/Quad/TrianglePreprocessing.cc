@@ -54,30 +54,22 @@ GridTransform fitTranslation(const ParametrizedTriMesh& m, const TriParams& para
 /// across an ambiguous edge is the composition along any other path between its two
 /// triangles that, together with the edge, encloses no cone. Such a path is searched
 /// breadth first over known transitions, among at most kResolveReach triangles and never
-/// through a triangle at a cone (an interior vertex whose parametric angle is not a full
-/// turn and that has no zero-length edge, which makes the angle unreliable). Edges are
+/// through a triangle at a known cone (vertexHolonomy() over the known edges). Edges are
 /// taken in halfedge order and each resolved edge helps the next; returns the number left
 /// with their best fit.
 long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
                                 TriTransitions& tr, std::vector<char>& ambiguous) {
     constexpr std::size_t kResolveReach = 256;
-    std::vector<int> valence;
-    countCones(m, adj, params, &valence);
     std::vector<std::size_t> open;
-    std::vector<char> touchesAmbiguous(m.points.size(), 0);
     for (std::size_t h = 0; h < ambiguous.size(); ++h) {
         if (!ambiguous[h]) continue;
         ambiguous[static_cast<std::size_t>(adj.opposite[h])] = 1;  // both halfedges of the edge
         open.push_back(h);
-        const auto& t = m.triangles[h / 3];
-        touchesAmbiguous[static_cast<std::size_t>(t[(h % 3 + 1) % 3])] = 1;
-        touchesAmbiguous[static_cast<std::size_t>(t[(h % 3 + 2) % 3])] = 1;
     }
+    const std::vector<int> hol = vertexHolonomy(m, adj, tr, &ambiguous);
     auto atCone = [&](int f) {
-        for (int v : m.triangles[static_cast<std::size_t>(f)]) {
-            const int val = valence[static_cast<std::size_t>(v)];
-            if (val != 0 && val != 4 && !touchesAmbiguous[static_cast<std::size_t>(v)]) return true;
-        }
+        for (int v : m.triangles[static_cast<std::size_t>(f)])
+            if (hol[static_cast<std::size_t>(v)] > 0) return true;
         return false;
     };
     std::vector<int> seen(m.triangles.size(), -1), queue;
@@ -289,34 +281,35 @@ std::vector<signed char> classifyTriangles(const TriParams& params) {
     return s;
 }
 
-bool isBoundaryVertex(const ParametrizedTriMesh& m, const TriAdjacency& adj, int v) {
-    for (int p = adj.vertex_offset[static_cast<std::size_t>(v)]; p < adj.vertex_offset[static_cast<std::size_t>(v) + 1]; ++p) {
-        const int f = adj.vertex_triangles[static_cast<std::size_t>(p)];
-        const int k = cornerOf(m, f, v);
-        for (int j = 0; j < 3; ++j)
-            if (j != k && adj.opposite[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j)] < 0) return true;
-    }
-    return false;
-}
-
-long countCones(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params, std::vector<int>* valence) {
+std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriTransitions& tr,
+                                const std::vector<char>* unknown) {
     const std::size_t nv = m.points.size();
-    std::vector<double> angle(nv, 0.0);
-    for (std::size_t f = 0; f < params.size(); ++f)
-        for (int k = 0; k < 3; ++k) {
-            const Vec3d a = params[f][(k + 1) % 3] - params[f][k], b = params[f][(k + 2) % 3] - params[f][k];
-            angle[static_cast<std::size_t>(m.triangles[f][k])] += std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
-        }
-    if (valence) valence->assign(nv, 0);
-    long cones = 0;
-    const double quarter = 2.0 * std::atan(1.0);
-    for (std::size_t v = 0; v < nv; ++v) {
-        if (adj.vertex_offset[v] == adj.vertex_offset[v + 1] || isBoundaryVertex(m, adj, static_cast<int>(v))) continue;
-        const int val = static_cast<int>(std::lround(angle[v] / quarter));
-        if (valence) (*valence)[v] = val;
-        if (val != 4) ++cones;
+    std::vector<int> hol(nv, -1);
+    for (std::size_t vi = 0; vi < nv; ++vi) {
+        if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
+        const int v = static_cast<int>(vi);
+        const int f0 = adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])];
+        // Around the fan: leave each triangle through the edge at v it was not entered by.
+        Rotation R;
+        int f = f0, entry = -1, steps = 0;
+        const int limit = adj.vertex_offset[vi + 1] - adj.vertex_offset[vi] + 1;
+        bool ok = true;
+        do {
+            const int k = cornerOf(m, f, v);
+            const int e = entry == (k + 1) % 3 ? (k + 2) % 3 : (k + 1) % 3;
+            const std::size_t he = 3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(e);
+            const int oe = adj.opposite[he];
+            if (oe < 0 || (unknown && (*unknown)[he]) || ++steps > limit) {
+                ok = false;
+                break;
+            }
+            R = tr.halfedge[he].R * R;
+            f = oe / 3;
+            entry = oe % 3;
+        } while (f != f0);
+        if (ok) hol[vi] = std::max(0, planarQuarterTurns(R));
     }
-    return cones;
+    return hol;
 }
 
 } // namespace HexEx

@@ -2,7 +2,7 @@
 /// @file TrianglePreprocessing.hh
 /// Preprocessing of the 2D pipeline (the analogue of Preprocessing/ for tets): transitions
 /// per halfedge (paper 4.1.1 in 2D), sanitization (4.1.2 in 2D), the orientation of every
-/// triangle's parameter image and the cones of the map.
+/// triangle's parameter image and the holonomy (cones) of the map.
 
 #include "../Grid/GridTransform.hh"
 #include "ParametrizedTriMesh.hh"
@@ -43,13 +43,11 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
 /// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0 degenerate.
 std::vector<signed char> classifyTriangles(const TriParams& params);
 
-/// Cone count of the map: interior vertices whose parametric angle sum (over their
-/// triangles, signed by orientation) is not a full turn. Valences (angle sum in quarter
-/// turns, rounded) are written to @p valence per vertex if given (0 for boundary vertices).
-long countCones(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
-                std::vector<int>* valence = nullptr);
-
-/// True if vertex @p v lies on the boundary of the surface (on a halfedge without opposite).
-bool isBoundaryVertex(const ParametrizedTriMesh& m, const TriAdjacency& adj, int v);
+/// Holonomy of every vertex: the rotation (0..3 counter-clockwise quarter turns) of the
+/// composed transitions once around its fan; non-zero marks a cone (valence 4 + k mod 4).
+/// -1 for boundary and isolated vertices and, if @p unknown is given, for vertices with an
+/// edge whose halfedge is flagged there. Exact, unlike angle sums, which folds change.
+std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriTransitions& tr,
+                                const std::vector<char>* unknown = nullptr);
 
 } // namespace HexEx
