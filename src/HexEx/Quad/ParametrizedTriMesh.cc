@@ -59,17 +59,15 @@ TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
                     const int g = adj.vertex_triangles[static_cast<std::size_t>(p)];
                     if (g == static_cast<int>(f)) continue;
                     const auto& tg = m.triangles[static_cast<std::size_t>(g)];
-                    for (int j = 0; j < 3; ++j) {
-                        const int ga = tg[(j + 1) % 3], gb = tg[(j + 2) % 3];
-                        if (ga == b && gb == a) {
-                            found = 3 * g + j;
-                            ++count;
-                        } else if (ga == a && gb == b) {
-                            errors[static_cast<std::size_t>(chunk)] =
-                                "triangle mesh: triangles " + std::to_string(f) + " and " + std::to_string(g) +
-                                " use edge (" + std::to_string(a) + ", " + std::to_string(b) +
-                                ") in the same direction (inconsistent orientation or non-manifold edge)";
-                        }
+                    const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;  // b's corner in g
+                    if (tg[(pb + 1) % 3] == a) {  // g runs b -> a: halfedge opposite corner pb + 2
+                        found = 3 * g + (pb + 2) % 3;
+                        ++count;
+                    } else if (tg[(pb + 2) % 3] == a) {
+                        errors[static_cast<std::size_t>(chunk)] =
+                            "triangle mesh: triangles " + std::to_string(f) + " and " + std::to_string(g) +
+                            " use edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                            ") in the same direction (inconsistent orientation or non-manifold edge)";
                     }
                 }
                 if (count > 1 && errors[static_cast<std::size_t>(chunk)].empty())

@@ -41,6 +41,20 @@ bool triangleOwnsDart(const std::array<Vec3d, 3>& p, int sign, int x, int y, Axi
     return true;
 }
 
+namespace {
+/// triangleOwnsDart() for a point whose edge orientations (times the sign) are known:
+/// @p dirSign[i][d] is sign * ((b - a) x d) for edge i and direction d, used where o[i] == 0.
+bool ownsFrame(const int o[3], const int dirSign[3][4], AxisDir d1, AxisDir d2) {
+    for (int i = 0; i < 3; ++i) {
+        if (o[i] > 0) continue;
+        int t = dirSign[i][d1];
+        if (t == 0) t = dirSign[i][d2];
+        if (t <= 0) return false;
+    }
+    return true;
+}
+} // namespace
+
 TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed char>& sign, double max_points, int threads) {
     const std::size_t nf = params.size();
     // Guard: bounding-box grid points of all triangles.
@@ -82,11 +96,16 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
                         if (o[i] == 0) inside = false;
                     }
                     if (outside) continue;
+                    int dirSign[3][4] = {};
+                    if (!inside)
+                        for (int i = 0; i < 3; ++i)
+                            if (o[i] == 0)
+                                for (AxisDir d = 0; d < 4; ++d) dirSign[i][d] = s * crossEdgeDir(p[(i + 1) % 3], p[(i + 2) % 3], d);
                     for (AxisDir d1 = 0; d1 < 4; ++d1) {
                         const int other = 1 - dirAxis(d1);
                         for (int side = 0; side < 2; ++side) {
                             const AxisDir d2 = static_cast<AxisDir>(2 * other + side);
-                            if (!inside && !triangleOwnsDart(p, s, x, y, d1, d2)) continue;
+                            if (!inside && !ownsFrame(o, dirSign, d1, d2)) continue;
                             TriDart d;
                             d.tri = static_cast<int>(f);
                             d.x = x;

@@ -303,7 +303,7 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                 ok = false;
                 break;
             }
-            R = tr.halfedge[he].R * R;
+            if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
             f = oe / 3;
             entry = oe % 3;
         } while (f != f0);

@@ -42,7 +42,14 @@ int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
 /// sign(w x (p - q)), or @p tie if p lies on the unperturbed line. Exact (q, q + w are
 /// integer points).
 int lineSide(const Vec3d& p, const Vec3i& q, const Vec3i& w, int tie) {
-    const int s = orient2dAxis(toVec3d(q), toVec3d(q + w), p, 2);
+    int s;
+    if (w[1] == 0) {  // along u: w x (p - q) = w_u (p_v - q_v)
+        s = p[1] > q[1] ? w[0] : (p[1] < q[1] ? -w[0] : 0);
+    } else if (w[0] == 0) {  // along v: w x (p - q) = -w_v (p_u - q_u)
+        s = p[0] > q[0] ? -w[1] : (p[0] < q[0] ? w[1] : 0);
+    } else {
+        s = orient2dAxis(toVec3d(q), toVec3d(q + w), p, 2);
+    }
     return s != 0 ? s : tie;
 }
 
@@ -113,8 +120,7 @@ struct Tracer {
                 // The crossing must lie on the traced segment (between the two grid points;
                 // on the edge through z for alpha_1 and alpha_2).
                 const int oa = orient2dAxis(a, b, Vec3d(from.x, from.y, 0), 2);
-                const int ob = orient2dAxis(a, b, Vec3d(to.x, to.y, 0), 2);
-                if (oa * ob > 0 || (i > 0 && oa != 0)) continue;
+                if (i > 0 ? oa != 0 : oa * orient2dAxis(a, b, Vec3d(to.x, to.y, 0), 2) > 0) continue;
                 if (entry < 0 && sf * crossEdgeThrough(a, b, Vec3i(from.x, from.y, 0), w) >= 0 && i > 0) continue;
                 if (entry < 0 && i == 0 && sf * crossEdgeDir(a, b, s.d1) >= 0) continue;
                 exit = e;
@@ -127,10 +133,12 @@ struct Tracer {
                 return -1;
             }
             const GridTransform& g = tr.halfedge[h];
-            from = mapDesc(g, from);
-            to = mapDesc(g, to);
-            q = g.apply(q);
-            w = g.R.apply(w);
+            if (!g.is_identity()) {
+                from = mapDesc(g, from);
+                to = mapDesc(g, to);
+                q = g.apply(q);
+                w = g.R.apply(w);
+            }
             f = o / 3;
             entry = o % 3;
             const int sn = sign[static_cast<std::size_t>(f)];
