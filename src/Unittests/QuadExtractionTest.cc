@@ -2,11 +2,13 @@
 /// End-to-end tests of the 2D pipeline (extractQuadMesh) on the 2D generators: exact quad
 /// and vertex counts, validity, cones, random charts, noise and perturbed maps.
 
+#include <HexEx/Core/Error.hh>
 #include <HexEx/Quad/QuadExtraction.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <stdexcept>
@@ -148,11 +150,102 @@ TEST(QuadExtraction, PerturbationReallyFlipsAndAnnihilates) {
     EXPECT_EQ(st.fixed_vertices, 6u);  // the cone and the 5 outer corners
     QuadMesh qm;
     const QuadExtractionReport r = run(m, qm);
-    std::printf("flipped %ld degenerate %ld darts %ld anti %ld pairs %ld asym %ld\n", r.input.flipped_triangles,
-                r.input.degenerate_triangles, r.darts.extracted, r.darts.anti, r.darts.annihilated_pairs, r.darts.asymmetric_links);
     EXPECT_GT(r.input.flipped_triangles, 5);
     EXPECT_EQ(r.darts.annihilated_pairs, r.darts.anti);
     EXPECT_EQ(r.darts.extracted - 2 * r.darts.anti, 8L * 80);
     EXPECT_EQ(r.output.quads, 80);
     EXPECT_EQ(r.output.vertices, 101);
+}
+
+TEST(QuadExtraction, HeavilyDegenerateMapsKeepExactCounts) {
+    // Perturbation rounded to multiples of 1/2 on a mesh of spacing 3/8: many triangles
+    // collapse to segments or points (zero-length edges, ambiguous transitions) and fold.
+    long degenerate = 0, ambiguous = 0;
+    for (unsigned seed = 1; seed <= 6; ++seed) {
+        ParametrizedTriMesh m = generateSquare(16, 6);
+        perturbTriParameters(m, 0.5, seed);
+        for (auto& t : m.params)
+            for (auto& p : t) p = Vec2d(std::round(2 * p[0]) / 2, std::round(2 * p[1]) / 2);
+        applyRandomTriCharts(m, seed);
+        QuadMesh qm;
+        const QuadExtractionReport r = run(m, qm);
+        degenerate += r.input.degenerate_triangles;
+        ambiguous += r.input.ambiguous_transitions;
+        EXPECT_TRUE(r.valid_all_quad) << "seed " << seed << ": " << r.validation.summary();
+        EXPECT_EQ(r.output.quads, 36) << "seed " << seed;
+        EXPECT_EQ(r.output.vertices, 49) << "seed " << seed;
+    }
+    EXPECT_GT(degenerate, 300);
+    EXPECT_GT(ambiguous, 100);
+}
+
+TEST(QuadExtraction, GivenRotationsAreUsedAndChecked) {
+    const ParametrizedTriMesh m = generateQuarterTurnSeam(4, 4);
+    const TriAdjacency adj = buildTriAdjacency(m);
+    // True rotations: the right half's chart is the left's turned by one quarter turn.
+    std::vector<int> given(adj.opposite.size(), 0);
+    auto right = [&](std::size_t f) { return static_cast<int>(f / 2) % 4 >= 2; };
+    for (std::size_t h = 0; h < given.size(); ++h) {
+        const int o = adj.opposite[h];
+        if (o < 0) continue;
+        const int from = right(h / 3), to = right(static_cast<std::size_t>(o) / 3);
+        given[h] = ((to - from) % 4 + 4) % 4;
+    }
+    QuadExtractionOptions opt;
+    opt.given_quarter_turns = &given;
+    QuadMesh qm;
+    const QuadExtractionReport r = extractQuadMesh(m, qm, opt);
+    EXPECT_TRUE(r.valid_all_quad);
+    EXPECT_EQ(r.output.quads, 16);
+    given[static_cast<std::size_t>(std::find_if(adj.opposite.begin(), adj.opposite.end(), [](int o) { return o >= 0; }) -
+                                   adj.opposite.begin())] = 1;  // no longer inverse to its opposite
+    EXPECT_THROW(extractQuadMesh(m, qm, opt), InputError);
+}
+
+TEST(QuadExtraction, UnalignedBoundaryIsReportedNotAllQuad) {
+    ParametrizedTriMesh m = generateSquare(4, 1);
+    for (auto& t : m.params)
+        for (auto& p : t) p *= 2.5;  // boundary at u, v = 2.5: partial squares along two sides
+    QuadMesh qm;
+    const QuadExtractionReport r = run(m, qm);
+    EXPECT_FALSE(r.valid_all_quad);
+    EXPECT_EQ(r.output.quads, 4);
+    EXPECT_GT(r.output.unconnected_darts, 0);
+    EXPECT_FALSE(r.validation.valid());
+    EXPECT_FALSE(r.warnings.empty());
+}
+
+TEST(QuadExtraction, BadInputThrowsWithReason) {
+    auto expectError = [](const ParametrizedTriMesh& m, const std::string& part) {
+        QuadMesh qm;
+        try {
+            extractQuadMesh(m, qm);
+            ADD_FAILURE() << "no error, expected '" << part << "'";
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+        }
+    };
+    ParametrizedTriMesh m = generateSquare(2, 2);
+    ParametrizedTriMesh bad = m;
+    bad.triangles[3][1] = 99;
+    expectError(bad, "triangle 3: vertex index 99 out of range");
+    bad = m;
+    bad.triangles[2] = {bad.triangles[2][0], bad.triangles[2][0], bad.triangles[2][2]};
+    expectError(bad, "triangle 2: repeated vertex");
+    bad = m;
+    std::swap(bad.triangles[5][1], bad.triangles[5][2]);  // flips one triangle's orientation
+    expectError(bad, "same direction");
+    bad = m;
+    bad.params[1][2][0] = std::nan("");
+    expectError(bad, "triangle 1: parameter of corner 2 is not finite");
+    bad = m;
+    bad.params[0][0][1] = 1e12;
+    expectError(bad, "larger than 2^28");
+    bad = m;
+    bad.params.pop_back();
+    expectError(bad, "parameter triples");
+    bad = m;
+    bad.triangles.push_back(m.triangles[0]);
+    bad.params.push_back(m.params[0]);
+    expectError(bad, "same direction");
 }
