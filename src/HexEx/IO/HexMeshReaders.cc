@@ -87,7 +87,12 @@ HexMesh readMedit(std::string_view text, const std::string& name) {
     if (!haveVertices) failAt(name, 0, "missing Vertices section");
     detail::VtkCellAdder adder(mesh);
     for (std::size_t e = 0; e < elems.size(); ++e) {
-        for (auto& id : elems[e].ids) id -= 1;  // 1-based
+        for (auto& id : elems[e].ids) {
+            if (id < 1 || id > static_cast<long long>(mesh.vertices.size()))
+                failAt(name, elems[e].line, "vertex index " + std::to_string(id) + " out of range [1, " +
+                                                std::to_string(mesh.vertices.size()) + "]");
+            id -= 1;  // 1-based
+        }
         const std::string err = adder.add(static_cast<long long>(e), elems[e].type, elems[e].ids.data(), elems[e].ids.size());
         if (!err.empty()) failAt(name, elems[e].line, "element " + err.substr(5));
     }

@@ -196,7 +196,7 @@ void readProperties(LineReader& in, OvmModel& m) {
             m.paramLabel = label + " (line " + std::to_string(line) + ")";
             continue;
         }
-        m.skipped.push_back(label + " (line " + std::to_string(line) + ")");
+        if (!hfParam && !cParam) m.skipped.push_back(label + " (line " + std::to_string(line) + ")");
         for (long long i = 0; i < n; ++i) in.require(valueDesc(i));
     }
 }
@@ -216,7 +216,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     m.name = name;
     in.require("header 'OVM ASCII'");
     if (in.size() == 2 && lower(in.token(0)) == "ovm" && lower(in.token(1)) == "binary")
-        in.fail(in.line(), "the old 'OVM BINARY' format is not supported (use OVM ASCII or .ovmb)");
+        in.fail(in.line(), "the old 'OVM BINARY' format is not supported (binary files must be .ovmb)");
     if (in.size() != 2 || lower(in.token(0)) != "ovm" || lower(in.token(1)) != "ascii")
         in.fail(in.line(), "not an OpenVolumeMesh ASCII file: expected header 'OVM ASCII', got " + quoteToken(in.text()));
 
@@ -261,6 +261,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     }
 
     const long long nc = in.section("Polyhedra", INT_MAX / 8);
+    if (nc == 0) in.fail(in.line(), "polyhedron count is 0: the mesh has no tets or other cells");
     m.cells.resize(static_cast<std::size_t>(nc));
     m.cellPos.resize(static_cast<std::size_t>(nc));
     for (long long c = 0; c < nc; ++c) {

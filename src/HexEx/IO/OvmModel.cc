@@ -32,6 +32,8 @@ std::vector<int> OvmModel::checkTopology() const {
             if (edges[he / 2][1 - he % 2] != edges[nx / 2][nx % 2])
                 fail(facePos[f], "face " + std::to_string(f) + ": halfedges " + std::to_string(he) + " and " +
                                      std::to_string(nx) + " are not consecutive (the loop is not closed)");
+        }
+        for (std::size_t k = 0; k < hes.size(); ++k) {
             if (std::count(loop.begin(), loop.end(), loop[k]) != 1)
                 fail(facePos[f], "face " + std::to_string(f) + " repeats vertex " + std::to_string(loop[k]));
         }

@@ -57,10 +57,6 @@ ParametrizedTetMesh tetMeshFromOvm(const OvmModel& m, ReadReport* report) {
         if (std::adjacent_find(directed.begin(), directed.end()) != directed.end())
             m.fail(m.cellPos[c], cdesc + ": halffaces are not consistently oriented (an edge is traversed twice "
                                          "in the same direction)");
-        // Start at the corner opposite the last halfface (corner a of the halffaces a b c,
-        // a c d, a d b, b d c that tet a b c d gets in OpenVolumeMesh), so that a tet
-        // written that way reads back with its corners in the original order.
-        while (std::find(loops[3].begin(), loops[3].end(), cv[0]) != loops[3].end()) std::rotate(cv.begin(), cv.begin() + 1, cv.begin() + 3);
         corners[c] = cv;
     }
 
@@ -95,7 +91,18 @@ ParametrizedTetMesh tetMeshFromOvm(const OvmModel& m, ReadReport* report) {
                 for (int k = 0; k < 3; ++k) params[c][j][k] = m.cellParams[c][static_cast<std::size_t>(3 * j + k)];
             }
 
-    // Orientation: exact sign per cell in file corner order, uniform per connected component.
+    // Start at the corner opposite the last halfface (corner a of the halffaces a b c, a c d,
+    // a d b, b d c that tet a b c d gets in OpenVolumeMesh), so that a tet written that way
+    // reads back with its corners in the original order (an even permutation).
+    for (std::size_t c = 0; c < corners.size(); ++c) {
+        const auto last = m.halffaceLoop(m.cells[c][3]);
+        while (std::find(last.begin(), last.end(), corners[c][0]) != last.end()) {
+            std::rotate(corners[c].begin(), corners[c].begin() + 1, corners[c].begin() + 3);
+            std::rotate(params[c].begin(), params[c].begin() + 1, params[c].begin() + 3);
+        }
+    }
+
+    // Orientation: exact sign per cell, uniform per connected component.
     const auto& P = m.vertices;
     std::vector<int> sign(corners.size());
     for (std::size_t c = 0; c < corners.size(); ++c) {

@@ -51,14 +51,19 @@
 /// The *file corner order* of a cell is: the three vertices of its first halfface `hf0` in
 /// that halfface's loop order (for halfface 2f: the sources of the face's halfedges in
 /// order, starting at the source of the first; for 2f+1: the same loop reversed, starting at
-/// the same vertex), followed by the remaining fourth vertex. The returned TetMesh must be
+/// the same vertex), followed by the remaining fourth vertex. CProp values are given in this
+/// order. The reader then rotates the first three corners (an even permutation, with their
+/// parameters) until corner 0 is the vertex opposite the cell's LAST halfface: a tet
+/// `a b c d` written as OpenVolumeMesh-based tools and ovmFromTetMesh() write it (halffaces
+/// `a b c`, `a c d`, `a d b`, `b d c`) reads back as `a b c d`, so `.hexex` -> `.ovmb` ->
+/// extraction gives bit-identical output. The returned TetMesh must be
 /// positively oriented in 3D, which depends on whether the file lists halffaces pointing
-/// out of their cells (as the HexEx `.ovm` writer does) or into them. The reader computes
-/// the exact 3D orientation of every cell in file corner order; within each connected
+/// out of their cells or into them (OpenVolumeMesh's convention). The reader computes
+/// the exact 3D orientation of every cell in this corner order; within each connected
 /// component (cells joined by shared faces) all cells must agree:
-/// - all positive: corners are kept in file corner order;
+/// - all positive: corners are kept;
 /// - all negative (outward halffaces): corners 1 and 2 are swapped (with their parameters),
-///   so that TetMesh halfface 3 of the cell is exactly the file's hf0 with its orientation;
+///   so that TetMesh halfface 3 of the cell lies on the file's hf0, with its orientation;
 /// - mixed: InputError naming the first cell of the minority (the mesh is folded in 3D);
 /// - a cell of zero volume: InputError.
 ///

@@ -59,9 +59,8 @@ template <class T>
 std::vector<T> readArray(const VtuFile& f, const pugi::xml_node& a, const std::string& what) {
     const std::string type = a.attribute("type").value(), format = a.attribute("format").value();
     const int size = typeSize(type);
-    if (!size) f.fail(a, "DataArray " + what + " has unsupported type '" + type + "'");
     std::vector<T> out;
-    if (format == "ascii" || format.empty()) {
+    if (format == "ascii" || (format.empty() && !a.attribute("offset"))) {
         const pugi::xml_text t = a.text();
         const std::string_view body = t.get();
         detail::Lexer lx(body, f.name, f.lineOf(a.offset_debug()));
@@ -71,6 +70,7 @@ std::vector<T> readArray(const VtuFile& f, const pugi::xml_node& a, const std::s
         }
         return out;
     }
+    if (!size) f.fail(a, "DataArray " + what + " has unsupported type '" + type + "'");
     std::string bytes;
     try {
         if (format == "binary") {
@@ -174,7 +174,7 @@ HexMesh readPiece(const VtuFile& f, const pugi::xml_node& piece) {
         } else {
             err = adder.add(c, types[c], ids, n);
         }
-        if (!err.empty()) f.fail(cells, err);
+        if (!err.empty()) f.fail(array("offsets", true), err);
     }
     return mesh;
 }
