@@ -82,9 +82,9 @@ HexMesh readMedit(std::string_view text, const std::string& name) {
             for (long long i = 0; i < n * per; ++i) lx.next("value");
         }
     }
-    if (!haveVersion) failAt(name, 0, "missing MeshVersionFormatted");
-    if (!haveDim) failAt(name, 0, "missing Dimension");
-    if (!haveVertices) failAt(name, 0, "missing Vertices section");
+    if (!haveVersion) lx.fail(lx.eofLine(), "missing MeshVersionFormatted");
+    if (!haveDim) lx.fail(lx.eofLine(), "missing Dimension");
+    if (!haveVertices) lx.fail(lx.eofLine(), "missing Vertices section");
     detail::VtkCellAdder adder(mesh);
     for (std::size_t e = 0; e < elems.size(); ++e) {
         for (auto& id : elems[e].ids) {

@@ -199,14 +199,14 @@ HexMesh detail::readLegacyVtk(std::string_view text, const std::string& name) {
             lx.fail(kw.line, "unexpected keyword " + quoteToken(kw.text));
         }
     }
-    if (!havePoints) detail::failAt(name, 0, "no POINTS section");
-    if (!cellsLine) detail::failAt(name, 0, "no CELLS section");
+    if (!havePoints) lx.fail(lx.eofLine(), "no POINTS section");
+    if (!cellsLine) lx.fail(lx.eofLine(), "no CELLS section");
     const long long ncells = static_cast<long long>(offsets.size()) - 1;
     if (static_cast<long long>(types.size()) != ncells)
         detail::failAt(name, cellsLine, "CELLS has " + std::to_string(ncells) + " cells but CELL_TYPES has " +
                                             std::to_string(types.size()));
     if (!groupIds.empty() && static_cast<long long>(groupIds.size()) != ncells)
-        detail::failAt(name, 0, "hexex_cell_id has " + std::to_string(groupIds.size()) + " values for " +
+        detail::failAt(name, cellsLine, "hexex_cell_id has " + std::to_string(groupIds.size()) + " values for " +
                                     std::to_string(ncells) + " cells");
     detail::VtkCellAdder adder(mesh);
     for (long long c = 0; c < ncells; ++c) {

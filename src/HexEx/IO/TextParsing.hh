@@ -125,6 +125,8 @@ public:
         if (!more()) fail(eofLine(), "unexpected end of file, expected " + what);
         const std::size_t b = pos_;
         while (pos_ < text_.size() && !isFormatSpace(text_[pos_]) && !(comment_ && text_[pos_] == comment_)) ++pos_;
+        tokenEnd_ = pos_;
+        tokenLine_ = line_;
         return {text_.substr(b, pos_ - b), line_};
     }
     /// The next token without consuming it (empty at the end).
@@ -167,8 +169,10 @@ public:
         const Token t = next("'" + std::string(kw) + "'");
         if (!iequals(t.text, kw)) fail(t.line, "expected '" + std::string(kw) + "', got " + quoteToken(t.text));
     }
-    /// Skips the rest of the current line and returns the next @p n raw bytes.
+    /// Skips the rest of the line of the last token read and returns the next @p n raw bytes.
     std::string_view bytes(std::size_t n, const std::string& what) {
+        pos_ = tokenEnd_;  // undo any look-ahead of peek()
+        line_ = tokenLine_;
         const std::size_t eol = text_.find('\n', pos_);
         if (eol == std::string_view::npos) fail(eofLine(), "unexpected end of file, expected " + what);
         pos_ = eol + 1;
@@ -185,8 +189,8 @@ public:
 private:
     std::string_view text_;
     const std::string& name_;
-    std::size_t pos_ = 0;
-    long long line_ = 1;
+    std::size_t pos_ = 0, tokenEnd_ = 0;
+    long long line_ = 1, tokenLine_ = 1;
     char comment_ = '\0';
 };
 

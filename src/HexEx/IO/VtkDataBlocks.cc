@@ -26,9 +26,10 @@ int sextet(char c) {
     return kTable[static_cast<unsigned char>(c)];
 }
 
-std::uint64_t readUint(const std::string& b, std::size_t at, int bytes) {
+std::uint64_t readUint(const std::string& b, std::size_t at, int bytes, bool bigEndian) {
     std::uint64_t v = 0;
-    for (int k = bytes - 1; k >= 0; --k) v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(k)]);
+    for (int i = 0; i < bytes; ++i)
+        v = (v << 8) | static_cast<unsigned char>(b[at + static_cast<std::size_t>(bigEndian ? i : bytes - 1 - i)]);
     return v;
 }
 
@@ -69,20 +70,20 @@ std::string BlockSource::take(std::uint64_t n) {
     return out;
 }
 
-std::string readVtkBlock(BlockSource& src, int hb, bool compressed) {
+std::string readVtkBlock(BlockSource& src, int hb, bool compressed, bool be) {
     if (!compressed) {
-        const std::uint64_t n = readUint(src.take(static_cast<std::uint64_t>(hb)), 0, hb);
+        const std::uint64_t n = readUint(src.take(static_cast<std::uint64_t>(hb)), 0, hb, be);
         return src.take(n);
     }
     const std::string head = src.take(3 * static_cast<std::uint64_t>(hb));
-    const std::uint64_t blocks = readUint(head, 0, hb), blockSize = readUint(head, static_cast<std::size_t>(hb), hb),
-                        lastSize = readUint(head, 2 * static_cast<std::size_t>(hb), hb);
+    const std::uint64_t blocks = readUint(head, 0, hb, be), blockSize = readUint(head, static_cast<std::size_t>(hb), hb, be),
+                        lastSize = readUint(head, 2 * static_cast<std::size_t>(hb), hb, be);
     if (blocks > src.bytesLeft() / static_cast<std::uint64_t>(hb))
         throw BlockError("compressed header declares " + std::to_string(blocks) + " blocks, more than the data can hold");
     const std::string sizes = src.take(blocks * static_cast<std::uint64_t>(hb));
     std::string out;
     for (std::uint64_t b = 0; b < blocks; ++b) {
-        const std::uint64_t csize = readUint(sizes, static_cast<std::size_t>(b * hb), hb);
+        const std::uint64_t csize = readUint(sizes, static_cast<std::size_t>(b * hb), hb, be);
         const std::uint64_t usize = (b + 1 == blocks && lastSize != 0) ? lastSize : blockSize;
         const std::string in = src.take(csize);
         if (usize > 1032 * csize + 64)  // beyond zlib's maximum compression ratio

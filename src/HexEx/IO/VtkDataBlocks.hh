@@ -38,9 +38,10 @@ private:
 };
 
 /// Reads one data block: a header of @p headerBytes (4 or 8) bytes giving the byte count
-/// and the bytes, or, if @p compressed, the zlib block table and the inflated blocks.
+/// and the bytes, or, if @p compressed, the zlib block table and the inflated blocks;
+/// header values are big-endian if @p bigEndian.
 /// @throws BlockError for truncated, oversized or corrupt data.
-std::string readVtkBlock(BlockSource& source, int headerBytes, bool compressed);
+std::string readVtkBlock(BlockSource& source, int headerBytes, bool compressed, bool bigEndian = false);
 
 /// @p data as one VTK block with a UInt64 header (zlib-compressed in 32 KiB blocks if
 /// @p compress), raw bytes.

@@ -75,7 +75,7 @@ std::vector<T> readArray(const VtuFile& f, const pugi::xml_node& a, const std::s
     try {
         if (format == "binary") {
             detail::BlockSource src(a.text().get(), true);
-            bytes = detail::readVtkBlock(src, f.headerBytes, f.compressed);
+            bytes = detail::readVtkBlock(src, f.headerBytes, f.compressed, f.bigEndian);
         } else if (format == "appended") {
             const pugi::xml_attribute off = a.attribute("offset");
             long long o = -1;
@@ -84,7 +84,7 @@ std::vector<T> readArray(const VtuFile& f, const pugi::xml_node& a, const std::s
                 f.fail(a, "DataArray " + what + ": appended offset '" + off.value() + "' is missing or outside the " +
                               std::to_string(f.appended.size()) + " bytes of appended data");
             detail::BlockSource src(f.appended.substr(static_cast<std::size_t>(o)), f.appendedBase64);
-            bytes = detail::readVtkBlock(src, f.headerBytes, f.compressed);
+            bytes = detail::readVtkBlock(src, f.headerBytes, f.compressed, f.bigEndian);
         } else {
             f.fail(a, "DataArray " + what + " has unknown format '" + format + "'");
         }
