@@ -83,96 +83,119 @@ bool hostIsLittleEndian() {
     return first == 1;
 }
 
-/// The data arrays of a `.vtu` file, written as text or as appended blocks.
+/// The data arrays of a `.vtu` file: text inside the XML (ascii), or appended blocks that
+/// point into the caller's arrays (binary) or hold their compressed bytes.
 class VtuWriter {
 public:
     VtuWriter(Out& o, VtuEncoding enc) : o_(o), enc_(enc) {}
 
-    /// Adds a DataArray element for @p values (@p type is the VTK name of T).
+    /// Adds a DataArray element for the @p count values at @p values (@p type is the VTK
+    /// name of T); binary data is not copied, so @p values must live until finish().
     template <class T>
-    void array(const char* name, const char* type, int comps, const std::vector<T>& values) {
+    void array(const char* name, const char* type, int comps, const T* values, std::size_t count) {
         o_ << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\"";
         if (comps > 1) o_ << " NumberOfComponents=\"" << comps << "\"";
         if (enc_ != VtuEncoding::Ascii) {
-            o_ << " format=\"appended\" offset=\"" << appended_.size() << "\"/>\n";
-            appended_ += detail::makeVtkBlock(std::string_view(reinterpret_cast<const char*>(values.data()),
-                                                               values.size() * sizeof(T)),
-                                              enc_ == VtuEncoding::Compressed);
+            const std::string_view bytes(reinterpret_cast<const char*>(values), count * sizeof(T));
+            o_ << " format=\"appended\" offset=\"" << offset_ << "\"/>\n";
+            if (enc_ == VtuEncoding::Compressed) blocks_.push_back({detail::makeVtkBlock(bytes, true), {}});
+            else blocks_.push_back({sizeOf(bytes.size()), bytes});
+            offset_ += blocks_.back().first.size() + blocks_.back().second.size();
             return;
         }
         o_ << " format=\"ascii\">\n";
-        for (std::size_t i = 0; i < values.size(); ++i) {
+        for (std::size_t i = 0; i < count; ++i) {
             if constexpr (std::is_floating_point_v<T>) o_.num(values[i]);
             else o_ << static_cast<long long>(values[i]);
             o_ << ((i + 1) % static_cast<std::size_t>(comps) == 0 ? '\n' : ' ');
         }
         o_ << "        </DataArray>\n";
     }
-    /// Closes the file (with the appended data, if any).
-    void finish() {
+    /// Writes the XML, the appended blocks and the closing tags to @p out.
+    void finish(std::ostream& out) {
         o_ << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
-        if (enc_ != VtuEncoding::Ascii) o_ << "  <AppendedData encoding=\"raw\">\n_" << appended_ << "\n  </AppendedData>\n";
-        o_ << "</VTKFile>\n";
+        if (enc_ != VtuEncoding::Ascii) o_ << "  <AppendedData encoding=\"raw\">\n_";
+        out.write(o_.str().data(), static_cast<std::streamsize>(o_.str().size()));
+        for (const auto& [owned, borrowed] : blocks_) {
+            out.write(owned.data(), static_cast<std::streamsize>(owned.size()));
+            out.write(borrowed.data(), static_cast<std::streamsize>(borrowed.size()));
+        }
+        out << (enc_ != VtuEncoding::Ascii ? "\n  </AppendedData>\n</VTKFile>\n" : "</VTKFile>\n");
     }
 
 private:
+    /// The UInt64 little-endian header of a block of @p n bytes.
+    static std::string sizeOf(std::size_t n) {
+        std::string h(8, '\0');
+        for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = static_cast<char>((static_cast<std::uint64_t>(n) >> (8 * k)) & 0xff);
+        return h;
+    }
+
     Out& o_;
     VtuEncoding enc_;
-    std::string appended_;
+    std::size_t offset_ = 0;
+    std::vector<std::pair<std::string, std::string_view>> blocks_;  // owned bytes, then borrowed bytes
 };
 
-/// Writes the cell index arrays as Int32 if they fit, Int64 otherwise.
+/// The cell arrays of a `.vtu` file (T = int32 or int64) and writing them.
 template <class T>
-void vtuCells(VtuWriter& w, const HexMesh& m) {
-    const char* type = sizeof(T) == 4 ? "Int32" : "Int64";
-    const std::size_t nh = m.hexes.size(), np = m.polyhedra.size();
-    std::vector<T> conn, offsets, faces, faceoffsets;
-    conn.reserve(8 * nh);
-    offsets.reserve(nh + np);
-    for (const auto& h : m.hexes) {
-        conn.insert(conn.end(), h.begin(), h.end());
-        offsets.push_back(static_cast<T>(conn.size()));
-    }
-    for (const auto& p : m.polyhedra) {
-        for (const int v : detail::polyVertices(p)) conn.push_back(v);
-        offsets.push_back(static_cast<T>(conn.size()));
-        faces.push_back(static_cast<T>(p.faces.size()));
-        for (const auto& f : p.faces) {
-            faces.push_back(static_cast<T>(f.size()));
-            faces.insert(faces.end(), f.begin(), f.end());
-        }
-        faceoffsets.push_back(static_cast<T>(faces.size()));
-    }
-    std::vector<std::uint8_t> types(nh, 12);
-    types.resize(nh + np, 42);
-    w.array("connectivity", type, 1, conn);
-    w.array("offsets", type, 1, offsets);
-    w.array("types", "UInt8", 1, types);
-    if (np > 0) {
-        faceoffsets.insert(faceoffsets.begin(), nh, T(-1));
-        w.array("faces", type, 1, faces);
-        w.array("faceoffsets", type, 1, faceoffsets);
-    }
-}
+struct VtuCells {
+    std::vector<T> conn, offsets, faces, faceoffsets;  ///< built arrays (hex connectivity may be borrowed)
+    std::vector<std::uint8_t> types;                   ///< cell types
 
-void writeVtu(Out& o, const HexMesh& m, VtuEncoding enc) {
+    /// Builds and adds the arrays of @p m to @p w.
+    void add(VtuWriter& w, const HexMesh& m) {
+        const char* type = sizeof(T) == 4 ? "Int32" : "Int64";
+        const std::size_t nh = m.hexes.size(), np = m.polyhedra.size();
+        const bool borrowHexes = sizeof(T) == sizeof(int) && np == 0;
+        if (!borrowHexes)
+            for (const auto& h : m.hexes) conn.insert(conn.end(), h.begin(), h.end());
+        offsets.reserve(nh + np);
+        for (std::size_t c = 1; c <= nh; ++c) offsets.push_back(static_cast<T>(8 * c));
+        for (const auto& p : m.polyhedra) {
+            for (const int v : detail::polyVertices(p)) conn.push_back(v);
+            offsets.push_back(static_cast<T>(conn.size()));
+            faces.push_back(static_cast<T>(p.faces.size()));
+            for (const auto& f : p.faces) {
+                faces.push_back(static_cast<T>(f.size()));
+                faces.insert(faces.end(), f.begin(), f.end());
+            }
+            faceoffsets.push_back(static_cast<T>(faces.size()));
+        }
+        types.assign(nh, 12);
+        types.resize(nh + np, 42);
+        if (borrowHexes) w.array("connectivity", type, 1, reinterpret_cast<const T*>(m.hexes.data()), 8 * nh);
+        else w.array("connectivity", type, 1, conn.data(), conn.size());
+        w.array("offsets", type, 1, offsets.data(), offsets.size());
+        w.array("types", "UInt8", 1, types.data(), types.size());
+        if (np > 0) {
+            faceoffsets.insert(faceoffsets.begin(), nh, T(-1));
+            w.array("faces", type, 1, faces.data(), faces.size());
+            w.array("faceoffsets", type, 1, faceoffsets.data(), faceoffsets.size());
+        }
+    }
+};
+
+void writeVtu(std::ostream& out, const HexMesh& m, VtuEncoding enc) {
+    static_assert(sizeof(Vec3d) == 3 * sizeof(double) && sizeof(std::array<int, 8>) == 8 * sizeof(int),
+                  "points and hexes are written from the mesh's own arrays");
+    Out o;
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
       << (hostIsLittleEndian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\""
       << (enc == VtuEncoding::Compressed ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
       << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << m.vertices.size() << "\" NumberOfCells=\""
       << (m.hexes.size() + m.polyhedra.size()) << "\">\n      <Points>\n";
     VtuWriter w(o, enc);
-    std::vector<double> xyz(3 * m.vertices.size());
-    for (std::size_t i = 0; i < m.vertices.size(); ++i)
-        for (int k = 0; k < 3; ++k) xyz[3 * i + static_cast<std::size_t>(k)] = m.vertices[i][k];
-    w.array("Points", "Float64", 3, xyz);
+    w.array("Points", "Float64", 3, m.vertices.empty() ? nullptr : m.vertices[0].data(), 3 * m.vertices.size());
     o << "      </Points>\n      <Cells>\n";
     std::size_t total = 8 * m.hexes.size();
     for (const auto& p : m.polyhedra)
         for (const auto& f : p.faces) total += 2 * f.size() + 2;
-    if (total < static_cast<std::size_t>(INT32_MAX)) vtuCells<std::int32_t>(w, m);
-    else vtuCells<std::int64_t>(w, m);
-    w.finish();
+    VtuCells<std::int32_t> small;
+    VtuCells<std::int64_t> large;
+    if (total < static_cast<std::size_t>(INT32_MAX)) small.add(w, m);
+    else large.add(w, m);
+    w.finish(out);
 }
 
 void writeVtk(Out& o, const HexMesh& m) {
@@ -229,16 +252,22 @@ std::vector<std::string> writeMedit(Out& o, const HexMesh& m) {
     return warnings;
 }
 
-std::vector<std::string> writeTo(Out& o, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc) {
+std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc) {
     detail::checkCellIndices(mesh);
-    switch (format) {
-    case HexMeshFormat::Vtu: writeVtu(o, mesh, enc); return {};
-    case HexMeshFormat::Vtk: writeVtk(o, mesh); return {};
-    case HexMeshFormat::Ovm: o << writeOvmAscii(ovmFromHexMesh(mesh)); return {};
-    case HexMeshFormat::Ovmb: o << writeOvmBinary(ovmFromHexMesh(mesh)); return {};
-    case HexMeshFormat::Medit: return writeMedit(o, mesh);
+    if (format == HexMeshFormat::Vtu) {
+        writeVtu(out, mesh, enc);
+        return {};
     }
-    return {};
+    Out o;
+    std::vector<std::string> warnings;
+    switch (format) {
+    case HexMeshFormat::Vtk: writeVtk(o, mesh); break;
+    case HexMeshFormat::Ovm: o << writeOvmAscii(ovmFromHexMesh(mesh)); break;
+    case HexMeshFormat::Ovmb: o << writeOvmBinary(ovmFromHexMesh(mesh)); break;
+    default: warnings = writeMedit(o, mesh);
+    }
+    out.write(o.str().data(), static_cast<std::streamsize>(o.str().size()));
+    return warnings;
 }
 
 } // namespace
@@ -267,17 +296,17 @@ HexMeshFormat hexMeshFormatFromPath(const std::string& path) {
 
 std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
                                             VtuEncoding encoding) {
-    Out o;
-    auto warnings = writeTo(o, mesh, format, encoding);
-    out.write(o.str().data(), static_cast<std::streamsize>(o.str().size()));
-    return warnings;
+    return writeTo(out, mesh, format, encoding);
 }
 
 std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh, VtuEncoding encoding) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
-    Out o;
-    auto warnings = writeTo(o, mesh, format, encoding);
-    detail::writeWholeFile(path, o.str());
+    detail::checkCellIndices(mesh);
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path + ": cannot open file for writing");
+    auto warnings = writeTo(out, mesh, format, encoding);
+    out.flush();
+    if (!out) throw InputError(path + ": error while writing the file");
     for (auto& w : warnings) w = path + ": " + w;
     return warnings;
 }
