@@ -1,6 +1,6 @@
 /// @file OvmAscii.cc
-/// OpenVolumeMesh ASCII (`.ovm`) into and out of an OvmModel: a line reader with comment
-/// stripping and strict number parsing, and a writer with 17 significant digits.
+/// OpenVolumeMesh ASCII (`.ovm`) into and out of an OvmModel: a line reader on top of the
+/// shared tokenizer, strict number parsing, and a writer with 17 significant digits.
 
 #include "OvmModel.hh"
 #include "TextParsing.hh"
@@ -24,119 +24,81 @@ std::string lower(std::string_view s) {
     return r;
 }
 
-/// Reads "clean" lines (comments stripped, trimmed, blank lines skipped) and parses their
-/// tokens; every failure becomes an InputError "<name>:<line>: <reason>".
+/// Reads the file line by line (blank lines and `#` comments skipped) and parses the tokens
+/// of the current line; every failure becomes an InputError "<name>:<line>: <reason>".
 class LineReader {
 public:
-    LineReader(std::string_view text, const std::string& name) : text_(text), name_(name) {}
+    LineReader(std::string_view text, const std::string& name) : lx_(text, name, 1, '#') {}
 
-    [[noreturn]] void fail(long long line, const std::string& reason) const {
-        throw InputError(name_ + ":" + std::to_string(line) + ": " + reason);
-    }
-
+    [[noreturn]] void fail(long long line, const std::string& reason) const { lx_.fail(line, reason); }
     /// Moves to the next non-blank line; false at the end of the text.
     bool next() {
-        while (pos_ < text_.size()) {
-            const std::size_t eol = std::min(text_.find('\n', pos_), text_.size());
-            std::string_view raw = text_.substr(pos_, eol - pos_);
-            pos_ = eol + 1;
-            ++lineNo_;
-            bool inQuote = false;  // a '#' outside double quotes starts a comment
-            for (std::size_t i = 0; i < raw.size(); ++i) {
-                if (raw[i] == '"') inQuote = !inQuote;
-                else if (raw[i] == '#' && !inQuote) {
-                    raw = raw.substr(0, i);
-                    break;
-                }
-            }
-            while (!raw.empty() && detail::isFormatSpace(raw.front())) raw.remove_prefix(1);
-            while (!raw.empty() && detail::isFormatSpace(raw.back())) raw.remove_suffix(1);
-            if (raw.empty()) continue;
-            line_ = raw;
-            tokens_.clear();
-            for (std::size_t i = 0; i < raw.size();) {
-                while (i < raw.size() && detail::isFormatSpace(raw[i])) ++i;
-                const std::size_t start = i;
-                while (i < raw.size() && !detail::isFormatSpace(raw[i])) ++i;
-                if (i > start) tokens_.push_back(raw.substr(start, i - start));
-            }
-            return true;
-        }
-        line_ = {};
-        tokens_.clear();
-        return false;
+        tokens_ = lx_.lineTokens();
+        return !tokens_.empty();
     }
-
     /// Moves to the next line; at the end of the text fails with "expected <what>".
     void require(const std::string& what) {
         if (!next()) fail(eofLine(), "unexpected end of file: expected " + what);
     }
-    long long line() const { return lineNo_; }
-    /// The last line of the text (for end-of-file messages).
-    long long eofLine() const {
-        long long n = std::count(text_.begin(), text_.end(), '\n');
-        if (text_.empty() || text_.back() != '\n') ++n;
-        return std::max<long long>(n, 1);
+    long long line() const { return tokens_.empty() ? eofLine() : tokens_[0].line; }
+    long long eofLine() const { return lx_.eofLine(); }
+    /// The current line from its first to its last token.
+    std::string_view text() const {
+        if (tokens_.empty()) return {};
+        const char* b = tokens_.front().text.data();
+        return {b, static_cast<std::size_t>(tokens_.back().text.data() + tokens_.back().text.size() - b)};
     }
-    std::string_view text() const { return line_; }
     std::size_t size() const { return tokens_.size(); }
-    std::string_view token(std::size_t i) const { return tokens_[i]; }
-    std::size_t remainingBytes() const { return pos_ < text_.size() ? text_.size() - pos_ : 0; }
+    std::string_view token(std::size_t i) const { return tokens_[i].text; }
+    std::size_t remainingBytes() const { return lx_.remaining(); }
 
     /// Fails unless the line has exactly @p n tokens.
     void expectTokens(std::size_t n, const std::string& what) const {
         if (tokens_.size() != n)
-            fail(lineNo_, "expected " + std::to_string(n) + (n == 1 ? " value" : " values") + " for " + what +
-                              ", got " + std::to_string(tokens_.size()) + " in " + quoteToken(line_));
+            fail(line(), "expected " + std::to_string(n) + (n == 1 ? " value" : " values") + " for " + what + ", got " +
+                             std::to_string(tokens_.size()) + " in " + quoteToken(text()));
     }
     /// Token @p i as an integer.
     long long integer(std::size_t i, const std::string& what) const {
         long long value = 0;
-        const detail::NumberParse r = detail::parseInteger(tokens_[i], value);
-        if (r == detail::NumberParse::OutOfRange)
-            fail(lineNo_, "integer " + quoteToken(tokens_[i]) + " out of range for " + what);
-        if (r != detail::NumberParse::Ok)
-            fail(lineNo_, "expected an integer for " + what + ", got " + quoteToken(tokens_[i]));
+        const detail::NumberParse r = detail::parseInteger(token(i), value);
+        if (r == detail::NumberParse::OutOfRange) fail(line(), "integer " + quoteToken(token(i)) + " out of range for " + what);
+        if (r != detail::NumberParse::Ok) fail(line(), "expected an integer for " + what + ", got " + quoteToken(token(i)));
         return value;
     }
     /// Token @p i as an index in [0, n).
     int index(std::size_t i, long long n, const std::string& what) const {
         const long long v = integer(i, what);
-        if (v < 0 || v >= n)
-            fail(lineNo_, what + " " + std::to_string(v) + " out of range [0, " + std::to_string(n) + ")");
+        if (v < 0 || v >= n) fail(line(), what + " " + std::to_string(v) + " out of range [0, " + std::to_string(n) + ")");
         return static_cast<int>(v);
     }
     /// Token @p i as a finite double.
     double finite(std::size_t i, const std::string& what) const {
         double value = 0;
-        if (detail::parseReal(tokens_[i], value) == detail::NumberParse::Malformed)
-            fail(lineNo_, "expected a number for " + what + ", got " + quoteToken(tokens_[i]));
-        if (!std::isfinite(value)) fail(lineNo_, "NaN or infinite value " + quoteToken(tokens_[i]) + " for " + what);
+        if (detail::parseReal(token(i), value) == detail::NumberParse::Malformed)
+            fail(line(), "expected a number for " + what + ", got " + quoteToken(token(i)));
+        if (!std::isfinite(value)) fail(line(), "NaN or infinite value " + quoteToken(token(i)) + " for " + what);
         return value;
     }
     /// Reads the section keyword line @p keyword and the count line after it.
     long long section(const char* keyword, long long maxCount) {
         require(std::string("section '") + keyword + "'");
-        if (tokens_.size() != 1 || lower(tokens_[0]) != lower(keyword))
-            fail(lineNo_, std::string("expected section '") + keyword + "', got " + quoteToken(line_));
+        if (size() != 1 || lower(token(0)) != lower(keyword))
+            fail(line(), std::string("expected section '") + keyword + "', got " + quoteToken(text()));
         const std::string what = lower(std::string(keyword) + " count");
         require(what);
         expectTokens(1, what);
         const long long n = integer(0, what);
-        if (n < 0) fail(lineNo_, "negative " + what + " " + std::to_string(n));
+        if (n < 0) fail(line(), "negative " + what + " " + std::to_string(n));
         // Every entity takes at least one line of two bytes.
         if (n > maxCount || n > static_cast<long long>(remainingBytes() / 2) + 1)
-            fail(lineNo_, what + " " + std::to_string(n) + " too large for the file");
+            fail(line(), what + " " + std::to_string(n) + " too large for the file");
         return n;
     }
 
 private:
-    std::string_view text_;
-    const std::string& name_;
-    std::size_t pos_ = 0;
-    long long lineNo_ = 0;
-    std::string_view line_;
-    std::vector<std::string_view> tokens_;
+    detail::Lexer lx_;
+    std::vector<detail::Token> tokens_;
 };
 
 /// Reads the property blocks after the Polyhedra section.

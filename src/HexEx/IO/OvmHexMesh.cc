@@ -7,11 +7,7 @@
 #include "VtkCells.hh"
 
 #include <algorithm>
-#include <cstdint>
-#include <map>
 #include <optional>
-#include <stdexcept>
-#include <unordered_map>
 
 namespace HexEx {
 
@@ -67,15 +63,6 @@ std::optional<std::array<int, 8>> hexFromFaces(const std::vector<std::vector<int
     return v;
 }
 
-/// Hash of a sorted, -1-padded small face key.
-struct SmallKeyHash {
-    std::size_t operator()(const std::array<int, 4>& k) const {
-        std::uint64_t h = 1469598103934665603ull;
-        for (const int v : k) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull;
-        return static_cast<std::size_t>(h);
-    }
-};
-
 } // namespace
 
 HexMesh hexMeshFromOvm(const OvmModel& m) {
@@ -106,55 +93,21 @@ OvmModel ovmFromHexMesh(const HexMesh& mesh) {
     OvmModel m;
     m.vertices = mesh.vertices;
     m.topology = mesh.polyhedra.empty() ? OvmTopology::Hexahedral : OvmTopology::Polyhedral;
-    std::vector<std::vector<int>> loops;  // vertex loops of the faces
-    std::unordered_map<std::array<int, 4>, int, SmallKeyHash> smallFace;
-    std::map<std::vector<int>, int> largeFace;
-    const auto halfface = [&](const std::vector<int>& loop) {
-        const int fresh = static_cast<int>(loops.size());
-        int f = fresh;
-        if (loop.size() <= 4) {
-            std::array<int, 4> key{{-1, -1, -1, -1}};
-            std::copy(loop.begin(), loop.end(), key.begin());
-            std::sort(key.begin(), key.end());
-            f = smallFace.emplace(key, fresh).first->second;
-        } else {
-            std::vector<int> key = loop;
-            std::sort(key.begin(), key.end());
-            f = largeFace.emplace(std::move(key), fresh).first->second;
-        }
-        if (f == fresh) {
-            loops.push_back(loop);
-            return 2 * f;
-        }
-        const auto& s = loops[static_cast<std::size_t>(f)];
-        const std::size_t k = static_cast<std::size_t>(std::find(s.begin(), s.end(), loop[0]) - s.begin());
-        return 2 * f + (k < s.size() && s[(k + 1) % s.size()] == loop[1] ? 0 : 1);
-    };
+    OvmBuilder faces(m);
     for (const auto& h : mesh.hexes) {
         int hf[6];
         for (int i = 0; i < 6; ++i) {
             const auto& lf = kOvmHexFaces[i];
-            hf[i] = halfface({h[lf[0]], h[lf[1]], h[lf[2]], h[lf[3]]});
+            hf[i] = faces.halfface({h[lf[0]], h[lf[1]], h[lf[2]], h[lf[3]]});
         }
         auto& cell = m.cells.emplace_back();
         for (const int i : kOvmHexOrder) cell.push_back(hf[i]);
     }
     for (const auto& p : mesh.polyhedra) {
         auto& cell = m.cells.emplace_back();
-        for (const auto& f : p.faces) cell.push_back(halfface(f));
+        for (const auto& f : p.faces) cell.push_back(faces.halfface(f));
     }
-    std::unordered_map<std::uint64_t, int> edgeId;  // edges numbered in face order
-    for (const auto& loop : loops) {
-        auto& hes = m.faces.emplace_back();
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const int a = loop[i], b = loop[(i + 1) % loop.size()];
-            const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, b))) << 32) |
-                                      static_cast<std::uint32_t>(std::max(a, b));
-            const int e = edgeId.emplace(key, static_cast<int>(m.edges.size())).first->second;
-            if (e == static_cast<int>(m.edges.size())) m.edges.push_back({{a, b}});
-            hes.push_back(2 * e + (m.edges[static_cast<std::size_t>(e)][0] == a ? 0 : 1));
-        }
-    }
+    faces.finish();
     return m;
 }
 

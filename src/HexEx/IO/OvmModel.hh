@@ -11,8 +11,10 @@
 #include "../Mesh/HexMesh.hh"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace HexEx {
@@ -50,6 +52,24 @@ struct OvmModel {
     /// no halfface is used twice; @return for every halfface the cell using it, or -1.
     /// @throws InputError at the face or cell at fault.
     std::vector<int> checkTopology() const;
+};
+
+/// Adds faces and edges to a model from cells given as vertex loops: a face shared by two
+/// cells is stored once, with the orientation of its first occurrence; faces and edges are
+/// numbered in order of first use (as OpenVolumeMesh numbers them when cells are added).
+class OvmBuilder {
+public:
+    /// Builds into @p model (its vertices set, its faces and edges empty).
+    explicit OvmBuilder(OvmModel& model) : m_(model) {}
+    /// The halfface with vertex loop @p loop (>= 3 distinct vertices), adding its face if new.
+    int halfface(const std::vector<int>& loop);
+    /// Numbers the edges and sets the faces' halfedges; call once after the last halfface().
+    void finish();
+
+private:
+    OvmModel& m_;
+    std::vector<std::vector<int>> loops_;
+    std::unordered_multimap<std::uint64_t, int> faceId_;  // hash of the sorted loop -> face
 };
 
 /// True if @p name (e.g. `HexHex::Parametrization`, `uvw`) names an integer-grid map: the

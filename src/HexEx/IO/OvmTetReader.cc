@@ -157,34 +157,15 @@ OvmModel ovmFromTetMesh(const ParametrizedTetMesh& pm) {
     OvmModel m;
     m.topology = OvmTopology::Tetrahedral;
     for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) m.vertices.push_back(pm.mesh.position(VertexHandle(static_cast<int>(v))));
-    std::map<std::pair<int, int>, int> edgeId;
-    std::map<std::array<int, 3>, int> faceId;  // sorted corners -> face
-    std::vector<int> faceFirst;                // first vertex of each stored loop
+    OvmBuilder faces(m);
     // Halffaces a b c, a c d, a d b, b d c of tet a b c d point into it; opposite corners d, b, c, a.
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
     for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c) {
         const auto cv = pm.mesh.cell_vertices(CellHandle(static_cast<int>(c)));
         auto& cell = m.cells.emplace_back();
-        for (const auto& lf : kFaces) {
-            const std::array<int, 3> loop{{cv[lf[0]].idx(), cv[lf[1]].idx(), cv[lf[2]].idx()}};
-            std::array<int, 3> key = loop;
-            std::sort(key.begin(), key.end());
-            const auto [it, fresh] = faceId.emplace(key, static_cast<int>(m.faces.size()));
-            int hf = 2 * it->second;
-            if (fresh) {
-                auto& hes = m.faces.emplace_back();
-                for (int i = 0; i < 3; ++i) {
-                    const int a = loop[i], b = loop[(i + 1) % 3];
-                    const auto [e, newEdge] = edgeId.emplace(std::minmax(a, b), static_cast<int>(m.edges.size()));
-                    if (newEdge) m.edges.push_back({{a, b}});
-                    hes.push_back(2 * e->second + (m.edges[static_cast<std::size_t>(e->second)][0] == a ? 0 : 1));
-                }
-            } else {
-                hf += 1;  // a manifold mesh uses the other side of an existing face
-            }
-            cell.push_back(hf);
-        }
+        for (const auto& lf : kFaces) cell.push_back(faces.halfface({cv[lf[0]].idx(), cv[lf[1]].idx(), cv[lf[2]].idx()}));
     }
+    faces.finish();
     m.halffaceParams.assign(2 * m.faces.size(), Vec3d(0, 0, 0));
     for (std::size_t c = 0; c < m.cells.size(); ++c)
         for (int k = 0; k < 4; ++k) m.halffaceParams[static_cast<std::size_t>(m.cells[c][k])] = pm.params[c][kFaces[k][3]];

@@ -13,6 +13,7 @@
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace HexEx {
 namespace detail {
@@ -128,6 +129,12 @@ public:
         tokenEnd_ = pos_;
         tokenLine_ = line_;
         return {text_.substr(b, pos_ - b), line_};
+    }
+    /// The tokens of the next non-blank line (none at the end of the text).
+    std::vector<Token> lineTokens() {
+        std::vector<Token> t;
+        for (const long long l = more() ? line_ : 0; more() && line_ == l;) t.push_back(next(""));
+        return t;
     }
     /// The next token without consuming it (empty at the end).
     std::string_view peek() {
