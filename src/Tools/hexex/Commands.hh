@@ -25,5 +25,6 @@ bool isShape2D(const std::string& name);
 /// `hexex perturb` on a 2D map (OBJ with `vt`): perturbs @p input by amplitude @p a with
 /// @p seed and writes @p output (OBJ).
 int runPerturb2D(const std::string& input, const std::string& output, double a, unsigned seed, bool quiet);
+int runConvert(const Args& args);   ///< hexex convert IN OUT [--encoding E]
 
 } // namespace HexExTool
