@@ -6,6 +6,7 @@
 #include <cstring>
 #include <exception>
 #include <iostream>
+#include <new>
 
 namespace {
 const char* kUsage =
@@ -33,6 +34,10 @@ int main(int argc, char** argv) {
         if (cmd == "generate") return HexExTool::runGenerate(args);
         if (cmd == "perturb") return HexExTool::runPerturb(args);
         if (cmd == "validate") return HexExTool::runValidate(args);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "hexex " << cmd << ": error: out of memory (std::bad_alloc) outside the extraction (reading or "
+                     "writing a mesh); free memory or use a smaller input\n";
+        return 2;
     } catch (const std::exception& e) {
         std::cerr << "hexex " << cmd << ": error: " << e.what() << "\n";
         return 2;
