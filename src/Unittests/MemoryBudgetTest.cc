@@ -84,15 +84,33 @@ TEST(MemoryBudget, EstimateIs48DartsPerCellOfSmallTets) {
     ParametrizedTetMesh pm = generateCube(2, 3);  // 48 tets of 27/48 cells each: no dense boxes
     pm.mesh.build_adjacency();
     const PreprocessOutput pre = preprocess({&pm, nullptr, 1e-6, 4e7, 1});
-    const MemoryEstimate est = estimateMemory(pre, pm.params, true, 1ull << 30);
+    const MemoryEstimate est = estimateMemory(pre, true, 1ull << 30);
     EXPECT_NEAR(est.darts, 48.0 * 27, 1e-6);
     EXPECT_NEAR(est.bytes, 48.0 * 27 * kBytesPerDart + 256.0 * 48, 1e-3);
     EXPECT_EQ(est.budget, 1ull << 30);
     ASSERT_EQ(est.largest_tets.size(), 5u);
     EXPECT_NEAR(est.largest_tets[0].second, 27.0 / 48, 1e-12);
     EXPECT_NO_THROW(checkMemoryBudget(est));
-    const MemoryEstimate tight = estimateMemory(pre, pm.params, true, 10000);
+    const MemoryEstimate tight = estimateMemory(pre, true, 10000);
     EXPECT_THROW(checkMemoryBudget(tight), ResourceError);
+    // Equal volumes: ties go to the smaller tet index.
+    EXPECT_EQ(est.largest_tets[0].first, 0);
+    EXPECT_EQ(est.largest_tets[4].first, 4);
+}
+
+TEST(MemoryBudget, EstimateDoesNotDependOnTheThreadCount) {
+    ParametrizedTetMesh pm = generateCube(24, 5);  // 82,944 tets: more than one block of 4096
+    pm.mesh.build_adjacency();
+    pm.params[70000][1][0] += 40;  // one large image, found across blocks
+    const PreprocessOutput pre1 = preprocess({&pm, nullptr, 1e-6, 4e7, 1});
+    const PreprocessOutput pre2 = preprocess({&pm, nullptr, 1e-6, 4e7, 2});
+    const MemoryEstimate one = estimateMemory(pre1, false, 1ull << 30);
+    const MemoryEstimate two = estimateMemory(pre2, false, 1ull << 30);
+    EXPECT_EQ(one.darts, two.darts);
+    EXPECT_EQ(one.bytes, two.bytes);
+    EXPECT_EQ(one.largest_tets, two.largest_tets);
+    ASSERT_FALSE(one.largest_tets.empty());
+    EXPECT_EQ(one.largest_tets[0].first, 70000);
 }
 
 TEST(MemoryBudget, RefusesTheNeedleAtOnceNamingTheTet) {
@@ -122,7 +140,7 @@ TEST(MemoryBudget, DartCapStopsTheDartStage) {
     ParametrizedTetMesh pm = generateCube(2, 3);
     pm.mesh.build_adjacency();
     const PreprocessOutput pre = preprocess({&pm, nullptr, 1e-6, 4e7, 2});
-    MemoryEstimate est = estimateMemory(pre, pm.params, false, 1ull << 20);
+    MemoryEstimate est = estimateMemory(pre, false, 1ull << 20);
     est.max_darts = 1000;  // fewer than the 1296 darts of the cube
     try {
         extractDartStage({&pm.mesh, &pre.tets, pre.abs_volume, false, 2, &est});

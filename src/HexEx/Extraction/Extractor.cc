@@ -74,7 +74,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     const PreprocessOutput pre = preprocess({&input, opt.given_rotations, opt.epsilon, opt.max_hexes, threads});
     addToReport(pre, rep);
     const bool implicit = useImplicitCells(opt.implicit_cells, pre.stats.flipped_tets);
-    state.estimate = estimateMemory(pre, input.params, implicit, opt.max_memory ? opt.max_memory : defaultMemoryBudget());
+    state.estimate = estimateMemory(pre, implicit, opt.max_memory ? opt.max_memory : defaultMemoryBudget());
     checkMemoryBudget(state.estimate);
     rep.timings_s.preprocess = clock.lap();
 

@@ -33,13 +33,12 @@ struct MemoryEstimate {
     std::vector<std::pair<int, double>> largest_tets;
 };
 
-/// Estimates the darts and bytes of the extraction of @p pre: 48 darts per grid cell of
-/// every tet's image (only a shell along the faces, 0.5 grid points per unit of face area, for tets that get implicit cells,
-/// @p implicit_cells), dense per-box-point indices of tets with large images, a fixed cost
-/// per tet. @p budget (bytes, 0 = no limit) is stored and turned into max_darts.
-/// @p input_params are the parameters as given, for largest_tets.
-MemoryEstimate estimateMemory(const PreprocessOutput& pre, const CornerParams& input_params, bool implicit_cells,
-                              std::uint64_t budget);
+/// Estimates the darts and bytes of the extraction of @p pre from its TetCostSummary: 48
+/// darts per grid cell of every tet's image (with @p implicit_cells, only a shell along the
+/// faces of large proper tets, 0.5 grid points per unit of face area), dense per-box-point
+/// indices of tets with large bounding boxes, a fixed cost per tet. @p budget (bytes, 0 =
+/// no limit) is stored and turned into max_darts. Constant time.
+MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget);
 
 /// Throws ResourceError (memoryRefusal()) if the estimate exceeds its budget.
 void checkMemoryBudget(const MemoryEstimate& est);
