@@ -26,6 +26,7 @@ struct FromHexCheck {
     std::string why;                 ///< first reason the mesh is not the expected one
     std::size_t vertices = 0;        ///< output vertices
     std::size_t off_position = 0;    ///< vertices farther than 1e-9 of the diagonal from their expected position
+    std::size_t off_boundary = 0;    ///< of the off-position vertices, those on the boundary of the expected mesh
     std::size_t not_on_preimage = 0; ///< off-position vertices not at a preimage of their grid point
     std::size_t new_inverted = 0;    ///< inverted output hexes whose expected hex is not inverted
     /// Everything the issue asks for.
@@ -37,7 +38,7 @@ struct FromHexCheck {
     std::string summary() const {
         std::ostringstream s;
         s << "valid=" << valid_all_hex << " iso=" << isomorphic << " (" << why << ") vertices=" << vertices
-          << " off=" << off_position << " not_on_preimage=" << not_on_preimage << " new_inverted=" << new_inverted;
+          << " off=" << off_position << " (boundary " << off_boundary << ")" << " not_on_preimage=" << not_on_preimage << " new_inverted=" << new_inverted;
         return s.str();
     }
 };
@@ -282,11 +283,26 @@ inline FromHexCheck checkFromHex(const HexEx::HexMesh& source, const HexEx::MapF
             }
         }
     }
+    std::vector<char> onBoundary(nv, 0);
+    {
+        std::map<std::array<int, 4>, int> quads;
+        for (const auto& h : expected.hexes)
+            for (const auto& f : kFaces) {
+                std::array<int, 4> k{};
+                for (int q = 0; q < 4; ++q) k[q] = h[f[q]];
+                std::sort(k.begin(), k.end());
+                ++quads[k];
+            }
+        for (const auto& [k, n] : quads)
+            if (n == 1)
+                for (int v : k) onBoundary[v] = 1;
+    }
     for (std::size_t v = 0; v < out.vertices.size(); ++v) {
         if (match[v] < 0) continue;
         const Vec3d want = expected.vertices[match[v]];
         if ((out.vertices[v] - want).norm() <= tol) continue;
         ++r.off_position;
+        if (onBoundary[match[v]]) ++r.off_boundary;
         // Grid point of the expected vertex.
         int hs = -1;
         HexEx::Vec3i g;

@@ -31,6 +31,7 @@ std::vector<Vec3d> distinctPositions(std::vector<Vec3d> p, double tol) {
     return out;
 }
 
+/// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
     for (const auto& x : p) c += x;
@@ -40,7 +41,7 @@ Vec3d centroid(const std::vector<Vec3d>& p) {
 } // namespace
 
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts, int threads) {
+                                         const DartPlacement& darts, int threads, VertexCandidates* candidates) {
     // Group darts by class (counting sort keeps darts ascending within a class).
     const auto nc = static_cast<std::size_t>(n_classes);
     std::vector<int> off(nc + 1, 0);
@@ -62,9 +63,12 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
 
     std::vector<Vec3d> out(nc);
-    // Classes are independent: parallel chunks, each with its own scratch buffers.
+    // Classes are independent: parallel chunks, each with its own scratch buffers and its
+    // own list of ambiguous classes (concatenated in chunk order: ascending classes).
     const int chunks = std::max(1, std::min(threads, n_classes / 1024));
-    parallelChunks(nc, chunks, [&](int, std::size_t lb, std::size_t le) {
+    std::vector<VertexCandidates> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(nc, chunks, [&](int part, std::size_t lb, std::size_t le) {
+        VertexCandidates& cand = parts[static_cast<std::size_t>(part)];
         std::vector<Vec3d> all, bnd;
         std::vector<int> planes;
         for (std::size_t l = lb; l < le; ++l) {
@@ -84,7 +88,13 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             if (all.empty()) continue;
             if (bnd.empty()) {
                 const auto dist = distinctPositions(all, tol);
-                out[l] = dist.size() == 1 ? dist[0] : centroid(dist);
+                out[l] = dist[0];
+                if (dist.size() > 1) {
+                    cand.vertex.push_back(static_cast<int>(l));
+                    cand.boundary.push_back(0);
+                    cand.offset.push_back(static_cast<int>(cand.position.size()));
+                    cand.position.insert(cand.position.end(), dist.begin(), dist.end());
+                }
                 continue;
             }
             const auto dist = distinctPositions(bnd, tol);
@@ -116,8 +126,25 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             for (std::size_t k = 1; k < dist.size(); ++k)
                 if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
             out[l] = dist[best];
+            cand.vertex.push_back(static_cast<int>(l));
+            cand.boundary.push_back(1);
+            cand.offset.push_back(static_cast<int>(cand.position.size()));
+            cand.position.push_back(dist[best]);
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (k != best) cand.position.push_back(dist[k]);
         }
     });
+    if (candidates) {
+        *candidates = VertexCandidates();
+        for (const VertexCandidates& c : parts) {
+            const int base = static_cast<int>(candidates->position.size());
+            candidates->vertex.insert(candidates->vertex.end(), c.vertex.begin(), c.vertex.end());
+            candidates->boundary.insert(candidates->boundary.end(), c.boundary.begin(), c.boundary.end());
+            for (int o : c.offset) candidates->offset.push_back(base + o);
+            candidates->position.insert(candidates->position.end(), c.position.begin(), c.position.end());
+        }
+        candidates->offset.push_back(static_cast<int>(candidates->position.size()));
+    }
     return out;
 }
 

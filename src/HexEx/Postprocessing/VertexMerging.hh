@@ -19,13 +19,28 @@ struct DartPlacement {
     std::vector<std::array<int, 3>> boundary_hf;   ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
 };
 
-/// Merged position per class: the centroid of the class's distinct h-vertex positions if
-/// none lies on the boundary; otherwise the point closest (least squares, Eigen) to the
-/// planes of the boundary faces incident to its boundary h-vertices, replaced by the
-/// boundary h-vertex nearest to it so the vertex stays on the input boundary.
+/// Classes whose h-vertices lie at several distinct positions (preimages of one grid point,
+/// e.g. a proper one and fold copies), with those positions as candidates.
+struct VertexCandidates {
+    std::vector<int> vertex;        ///< the classes that have more than one candidate, ascending
+    std::vector<char> boundary;     ///< per listed class: 1 if its first candidate comes from the boundary rule
+    std::vector<int> offset;        ///< candidates of vertex[k]: position[offset[k] .. offset[k + 1])
+    std::vector<Vec3d> position;    ///< candidate positions (distinct h-vertex positions, sorted by x, y, z; for boundary classes the boundary rule's choice first, then the other boundary h-vertices)
+};
+
+/// Merged position per class, always the position of one of its h-vertices (a true
+/// preimage of the class's grid point, never an average). Interior classes (no h-vertex
+/// on the boundary): the only distinct position if there is one; otherwise the first
+/// candidate, and the class is listed in @p candidates (if given) so that
+/// chooseVertexPreimages() can pick by the quality of the incident hexes. Boundary
+/// classes: the point closest (least squares, Eigen) to the planes of the boundary faces
+/// incident to its boundary h-vertices, replaced by the boundary h-vertex nearest to it so
+/// the vertex stays on the input boundary (paper 4.4.2); if it has several boundary
+/// h-vertices it is listed too, with the boundary rule's choice first.
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts, int threads = 1);
+                                         const DartPlacement& darts, int threads = 1,
+                                         VertexCandidates* candidates = nullptr);
 
 } // namespace HexEx
