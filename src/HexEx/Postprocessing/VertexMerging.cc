@@ -71,6 +71,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         VertexCandidates& cand = parts[static_cast<std::size_t>(part)];
         std::vector<Vec3d> all, bnd;
         std::vector<int> planes;
+        std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
             all.clear();
             bnd.clear();
@@ -91,7 +92,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 out[l] = dist[0];
                 if (dist.size() > 1) {
                     cand.vertex.push_back(static_cast<int>(l));
-                    cand.boundary.push_back(0);
+                    cand.preferred.push_back(static_cast<int>(dist.size()));
                     cand.offset.push_back(static_cast<int>(cand.position.size()));
                     cand.position.insert(cand.position.end(), dist.begin(), dist.end());
                 }
@@ -109,6 +110,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             const Vec3d c = centroid(dist);
             Eigen::Matrix3d M = Eigen::Matrix3d::Identity() * 1e-8;
             Eigen::Vector3d rhs(c[0] * 1e-8, c[1] * 1e-8, c[2] * 1e-8);
+            normals.clear();
             for (int hf : planes) {
                 const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
                 const Vec3d a = mesh.position(v[0]);
@@ -116,22 +118,41 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 const double len = n.norm();
                 if (!(len > 0)) continue;
                 n /= len;
+                normals.emplace_back(n, n | a);
                 const Eigen::Vector3d ne(n[0], n[1], n[2]);
                 M += ne * ne.transpose();
                 rhs += ne * (n | a);
             }
             const Eigen::Vector3d x = M.ldlt().solve(rhs);
             const Vec3d target(x[0], x[1], x[2]);
-            std::size_t best = 0;
-            for (std::size_t k = 1; k < dist.size(); ++k)
-                if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
+            // Candidates that lie on all the planes as well as any other (equal residual up
+            // to rounding) are equally good for the rule; the one nearest the least-squares
+            // point comes first, the others of that group next, then the rest.
+            std::vector<double> residual(dist.size(), 0.0);
+            double minRes = 0;
+            for (std::size_t k = 0; k < dist.size(); ++k) {
+                for (const auto& [n, off] : normals) residual[k] += ((n | dist[k]) - off) * ((n | dist[k]) - off);
+                minRes = k == 0 ? residual[k] : std::min(minRes, residual[k]);
+            }
+            const double resTol = minRes + 4.0 * tol * tol * static_cast<double>(normals.size() + 1);
+            std::size_t best = dist.size();
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (residual[k] <= resTol &&
+                    (best == dist.size() || (dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()))
+                    best = k;
             out[l] = dist[best];
             cand.vertex.push_back(static_cast<int>(l));
-            cand.boundary.push_back(1);
             cand.offset.push_back(static_cast<int>(cand.position.size()));
             cand.position.push_back(dist[best]);
+            int preferred = 1;
             for (std::size_t k = 0; k < dist.size(); ++k)
-                if (k != best) cand.position.push_back(dist[k]);
+                if (k != best && residual[k] <= resTol) {
+                    cand.position.push_back(dist[k]);
+                    ++preferred;
+                }
+            cand.preferred.push_back(preferred);
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (k != best && residual[k] > resTol) cand.position.push_back(dist[k]);
         }
     });
     if (candidates) {
@@ -139,7 +160,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         for (const VertexCandidates& c : parts) {
             const int base = static_cast<int>(candidates->position.size());
             candidates->vertex.insert(candidates->vertex.end(), c.vertex.begin(), c.vertex.end());
-            candidates->boundary.insert(candidates->boundary.end(), c.boundary.begin(), c.boundary.end());
+            candidates->preferred.insert(candidates->preferred.end(), c.preferred.begin(), c.preferred.end());
             for (int o : c.offset) candidates->offset.push_back(base + o);
             candidates->position.insert(candidates->position.end(), c.position.begin(), c.position.end());
         }

@@ -23,9 +23,14 @@ struct DartPlacement {
 /// e.g. a proper one and fold copies), with those positions as candidates.
 struct VertexCandidates {
     std::vector<int> vertex;        ///< the classes that have more than one candidate, ascending
-    std::vector<char> boundary;     ///< per listed class: 1 if its first candidate comes from the boundary rule
+    /// Per listed class: how many leading candidates its placement rule rates equally (all
+    /// for interior classes; for boundary classes those closest to the boundary planes).
+    std::vector<int> preferred;
     std::vector<int> offset;        ///< candidates of vertex[k]: position[offset[k] .. offset[k + 1])
-    std::vector<Vec3d> position;    ///< candidate positions (distinct h-vertex positions, sorted by x, y, z; for boundary classes the boundary rule's choice first, then the other boundary h-vertices)
+    /// Candidate positions: distinct h-vertex positions, sorted by x, y, z; for boundary
+    /// classes the boundary h-vertices, the boundary rule's choice first, then the others
+    /// closest to the planes, then the rest.
+    std::vector<Vec3d> position;
 };
 
 /// Merged position per class, always the position of one of its h-vertices (a true
@@ -35,8 +40,9 @@ struct VertexCandidates {
 /// chooseVertexPreimages() can pick by the quality of the incident hexes. Boundary
 /// classes: the point closest (least squares, Eigen) to the planes of the boundary faces
 /// incident to its boundary h-vertices, replaced by the boundary h-vertex nearest to it so
-/// the vertex stays on the input boundary (paper 4.4.2); if it has several boundary
-/// h-vertices it is listed too, with the boundary rule's choice first.
+/// the vertex stays on the input boundary (paper 4.4.2), among the boundary h-vertices
+/// closest to those planes (smallest sum of squared distances, up to rounding); if it has
+/// several boundary h-vertices it is listed too, with that choice first.
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,

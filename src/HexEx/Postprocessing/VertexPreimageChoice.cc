@@ -59,8 +59,8 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                     best = c;
                     bestQ = q;
                 }
-                // Boundary rule's choice (the first) stands unless it inverts a hex.
-                if (c == candidates.offset[k] && candidates.boundary[k] && q > 0) break;
+                // The others only if no preferred candidate keeps the hexes uninverted.
+                if (c + 1 == candidates.offset[k] + candidates.preferred[k] && bestQ > 0) break;
             }
             mesh.vertices[v] = candidates.position[static_cast<std::size_t>(best)];
         }

@@ -13,12 +13,11 @@ namespace HexEx {
 /// order. 1 for a cube, <= 0 for an inverted corner (-2 if an edge has zero length).
 double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h);
 
-/// For every vertex listed in @p candidates, sets its position to the candidate that
-/// maximizes the smallest minScaledJacobian() of its incident hexes (other vertices at
-/// their current positions); ties keep the earlier candidate (candidates are sorted by
-/// coordinates). A boundary vertex keeps the boundary rule's choice (its first candidate)
-/// unless that inverts an incident hex (smallest scaled Jacobian <= 0) and another
-/// candidate does better. Vertices are visited in ascending order, twice, so that neighbouring
+/// For every vertex listed in @p candidates, sets its position to the preferred candidate
+/// (VertexCandidates::preferred) that maximizes the smallest minScaledJacobian() of its
+/// incident hexes (other vertices at their current positions); ties keep the earlier
+/// candidate. Only if every preferred candidate inverts a hex (value <= 0) are the other
+/// candidates considered too. Vertices are visited in ascending order, twice, so that neighbouring
 /// ambiguous vertices see each other's choice. Returns the number of vertices whose
 /// position changed from the first candidate.
 long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates);
