@@ -3,10 +3,17 @@
 
 #include "VertexPreimageChoice.hh"
 
+#include "../Core/UnionFind.hh"
+
 #include <algorithm>
 #include <cmath>
 
 namespace HexEx {
+
+namespace {
+/// Clusters with at most this many candidate combinations are searched exhaustively.
+constexpr double kMaxCombinations = 4096;
+} // namespace
 
 double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h) {
     // The three neighbours of each VTK corner, in right-handed order.
@@ -36,34 +43,102 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
             if (slot[static_cast<std::size_t>(v)] >= 0) ++off[static_cast<std::size_t>(slot[static_cast<std::size_t>(v)]) + 1];
     for (std::size_t k = 0; k < nc; ++k) off[k + 1] += off[k];
     std::vector<int> inc(static_cast<std::size_t>(off.back()));
+    // Clusters: listed vertices that share a hex are chosen together.
+    UnionFind uf(nc);
     {
         std::vector<int> fill(off.begin(), off.end() - 1);
-        for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
+        for (std::size_t c = 0; c < mesh.hexes.size(); ++c) {
+            int first = -1;
             for (int v : mesh.hexes[c]) {
                 const int s = slot[static_cast<std::size_t>(v)];
-                if (s >= 0) inc[static_cast<std::size_t>(fill[static_cast<std::size_t>(s)]++)] = static_cast<int>(c);
+                if (s < 0) continue;
+                inc[static_cast<std::size_t>(fill[static_cast<std::size_t>(s)]++)] = static_cast<int>(c);
+                if (first < 0) first = s;
+                else uf.unite(first, s);
             }
-    }
-    for (int sweep = 0; sweep < 2; ++sweep)
-        for (std::size_t k = 0; k < nc; ++k) {
-            const auto v = static_cast<std::size_t>(candidates.vertex[k]);
-            if (off[k] == off[k + 1]) continue;  // no incident hex: keep the first candidate
-            int best = -1;
-            double bestQ = 0;
-            for (int c = candidates.offset[k]; c < candidates.offset[k + 1]; ++c) {
-                mesh.vertices[v] = candidates.position[static_cast<std::size_t>(c)];
-                double q = 1.0;
-                for (int j = off[k]; j < off[k + 1]; ++j)
-                    q = std::min(q, minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(inc[static_cast<std::size_t>(j)])]));
-                if (best < 0 || q > bestQ) {
-                    best = c;
-                    bestQ = q;
-                }
-                // The others only if no preferred candidate keeps the hexes uninverted.
-                if (c + 1 == candidates.offset[k] + candidates.preferred[k] && bestQ > 0) break;
-            }
-            mesh.vertices[v] = candidates.position[static_cast<std::size_t>(best)];
         }
+    }
+    std::vector<std::vector<int>> clusters;  // listed indices, ascending; clusters by smallest member
+    {
+        std::vector<int> clusterOf(nc, -1);
+        for (std::size_t k = 0; k < nc; ++k) {
+            const auto r = static_cast<std::size_t>(uf.find(static_cast<int>(k)));
+            if (clusterOf[r] < 0) {
+                clusterOf[r] = static_cast<int>(clusters.size());
+                clusters.emplace_back();
+            }
+            clusters[static_cast<std::size_t>(clusterOf[r])].push_back(static_cast<int>(k));
+        }
+    }
+    auto setPos = [&](int k, int c) {
+        mesh.vertices[static_cast<std::size_t>(candidates.vertex[static_cast<std::size_t>(k)])] =
+            candidates.position[static_cast<std::size_t>(candidates.offset[static_cast<std::size_t>(k)] + c)];
+    };
+    std::vector<int> hexes;
+    for (const auto& cl : clusters) {
+        hexes.clear();
+        for (int k : cl)
+            for (int j = off[static_cast<std::size_t>(k)]; j < off[static_cast<std::size_t>(k) + 1]; ++j)
+                hexes.push_back(inc[static_cast<std::size_t>(j)]);
+        std::sort(hexes.begin(), hexes.end());
+        hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
+        auto quality = [&]() {
+            double q = 1.0;
+            for (int h : hexes) q = std::min(q, minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(h)]));
+            return q;
+        };
+        // Candidates per member: the preferred ones first; all of them if those invert a hex.
+        for (int pass = 0; pass < 2; ++pass) {
+            std::vector<int> count(cl.size());
+            double combos = 1;
+            for (std::size_t m = 0; m < cl.size(); ++m) {
+                const auto k = static_cast<std::size_t>(cl[m]);
+                count[m] = pass == 0 ? candidates.preferred[k] : candidates.offset[k + 1] - candidates.offset[k];
+                combos *= count[m];
+            }
+            double bestQ = -10;
+            if (combos <= kMaxCombinations) {
+                // Every combination, in lexicographic order (the first best one wins).
+                std::vector<int> pick(cl.size(), 0), best(cl.size(), 0);
+                for (bool more = true; more;) {
+                    for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], pick[m]);
+                    const double q = quality();
+                    if (q > bestQ) {
+                        bestQ = q;
+                        best = pick;
+                    }
+                    more = false;
+                    for (std::size_t m = cl.size(); m-- > 0;) {
+                        if (++pick[m] < count[m]) {
+                            more = true;
+                            break;
+                        }
+                        pick[m] = 0;
+                    }
+                }
+                for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], best[m]);
+            } else {
+                // Large clusters: one member at a time, two sweeps.
+                for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], 0);
+                for (int sweep = 0; sweep < 2; ++sweep)
+                    for (std::size_t m = 0; m < cl.size(); ++m) {
+                        int best = 0;
+                        double q0 = -10;
+                        for (int c = 0; c < count[m]; ++c) {
+                            setPos(cl[m], c);
+                            const double q = quality();
+                            if (q > q0) {
+                                q0 = q;
+                                best = c;
+                            }
+                        }
+                        setPos(cl[m], best);
+                        bestQ = q0;
+                    }
+            }
+            if (bestQ > 0) break;
+        }
+    }
     long changed = 0;
     for (std::size_t k = 0; k < nc; ++k)
         if (mesh.vertices[static_cast<std::size_t>(candidates.vertex[k])] !=

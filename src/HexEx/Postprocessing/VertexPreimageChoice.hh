@@ -13,11 +13,14 @@ namespace HexEx {
 /// order. 1 for a cube, <= 0 for an inverted corner (-2 if an edge has zero length).
 double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h);
 
-/// For every vertex listed in @p candidates, sets its position to the preferred candidate
-/// (VertexCandidates::preferred) that maximizes the smallest minScaledJacobian() of its
-/// incident hexes (other vertices at their current positions); ties keep the earlier
-/// candidate. Only if every preferred candidate inverts a hex (value <= 0) are the other
-/// candidates considered too. Vertices are visited in ascending order, twice, so that neighbouring
+/// Sets the position of every vertex listed in @p candidates to one of its candidates.
+/// Listed vertices that share a hex form a cluster and are chosen together: the
+/// combination of preferred candidates (VertexCandidates::preferred) that maximizes the
+/// smallest minScaledJacobian() over the hexes incident to the cluster (ties: the first in
+/// lexicographic order); only if every such combination inverts a hex (value <= 0) are the
+/// other candidates considered too. Clusters with more than 4096 combinations are chosen
+/// one vertex at a time (two sweeps in ascending order). Clusters are independent of the
+/// order of the hexes. Vertices are visited in ascending order, twice, so that neighbouring
 /// ambiguous vertices see each other's choice. Returns the number of vertices whose
 /// position changed from the first candidate.
 long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates);
