@@ -82,9 +82,12 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                 hexes.push_back(inc[static_cast<std::size_t>(j)]);
         std::sort(hexes.begin(), hexes.end());
         hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
-        auto quality = [&]() {
-            double q = 1.0;
-            for (int h : hexes) q = std::min(q, minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(h)]));
+        // Quality of a set of hexes: their minScaledJacobian() values sorted ascending,
+        // compared lexicographically (the worst hex first, then the next worst, ...).
+        auto quality = [&](const int* hb, const int* he) {
+            std::vector<double> q;
+            for (const int* h = hb; h != he; ++h) q.push_back(minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(*h)]));
+            std::sort(q.begin(), q.end());
             return q;
         };
         // Candidates per member: the preferred ones first; all of them if those invert a hex.
@@ -96,15 +99,16 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                 count[m] = pass == 0 ? candidates.preferred[k] : candidates.offset[k + 1] - candidates.offset[k];
                 combos *= count[m];
             }
-            double bestQ = -10;
+            double worst = -10;  // smallest minScaledJacobian() of the chosen combination
             if (combos <= kMaxCombinations) {
                 // Every combination, in lexicographic order (the first best one wins).
                 std::vector<int> pick(cl.size(), 0), best(cl.size(), 0);
+                std::vector<double> bestQ;
                 for (bool more = true; more;) {
                     for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], pick[m]);
-                    const double q = quality();
-                    if (q > bestQ) {
-                        bestQ = q;
+                    std::vector<double> q = quality(hexes.data(), hexes.data() + hexes.size());
+                    if (bestQ.empty() || q > bestQ) {
+                        bestQ.swap(q);
                         best = pick;
                     }
                     more = false;
@@ -117,26 +121,31 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                     }
                 }
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], best[m]);
+                worst = bestQ.empty() ? 1.0 : bestQ.front();
             } else {
                 // Large clusters: one member at a time, two sweeps.
+                // Large clusters: one member at a time (its own hexes), two sweeps.
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], 0);
                 for (int sweep = 0; sweep < 2; ++sweep)
                     for (std::size_t m = 0; m < cl.size(); ++m) {
+                        const auto k = static_cast<std::size_t>(cl[m]);
+                        const int* hb = inc.data() + off[k];
+                        const int* he = inc.data() + off[k + 1];
                         int best = 0;
-                        double q0 = -10;
+                        std::vector<double> q0;
                         for (int c = 0; c < count[m]; ++c) {
                             setPos(cl[m], c);
-                            const double q = quality();
-                            if (q > q0) {
-                                q0 = q;
+                            std::vector<double> q = quality(hb, he);
+                            if (q0.empty() || q > q0) {
+                                q0.swap(q);
                                 best = c;
                             }
                         }
                         setPos(cl[m], best);
-                        bestQ = q0;
                     }
+                worst = quality(hexes.data(), hexes.data() + hexes.size()).front();
             }
-            if (bestQ > 0) break;
+            if (worst > 0) break;
         }
     }
     long changed = 0;
