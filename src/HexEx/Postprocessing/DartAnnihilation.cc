@@ -1,13 +1,16 @@
 #include "DartAnnihilation.hh"
 
+#include "../Core/UnionFind.hh"
+
 #include <deque>
 
 namespace HexEx {
 
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
-                                  std::vector<char>& alive) {
+                                  std::vector<char>& alive, std::vector<int>* heir) {
     AnnihilationStats st;
     const long n = static_cast<long>(alpha.size());
+    UnionFind sameVertex(heir ? alpha.size() : 0);
     std::deque<long> work;
     std::vector<char> queued(static_cast<std::size_t>(n), 0);
     for (long d = 0; d < n; ++d)
@@ -27,6 +30,12 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
             if (r >= 0 && r != anti && alive[static_cast<std::size_t>(r)] && sign[static_cast<std::size_t>(r)] > 0) reg = r;
         }
         if (reg < 0) continue;
+        if (heir)
+            for (int j = 1; j < 4; ++j) {
+                const long x = A(reg)[j];
+                if (x >= 0 && x != reg && x != anti && sign[static_cast<std::size_t>(x)] > 0)
+                    sameVertex.unite(static_cast<int>(reg), static_cast<int>(x));
+            }
         for (int j = 0; j < 4; ++j) {
             const long x = A(reg)[j], y = A(anti)[j];
             if (x == anti) continue;
@@ -55,6 +64,19 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
     }
     for (long d = 0; d < n; ++d)
         if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) ++st.remaining_anti;
+    if (heir) {
+        // Smallest surviving dart per group (darts ascending: the first one seen).
+        heir->assign(alpha.size(), -1);
+        std::vector<int> first(alpha.size(), -1);
+        for (long d = 0; d < n; ++d) {
+            if (!alive[static_cast<std::size_t>(d)]) continue;
+            const auto r = static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)));
+            if (first[r] < 0) first[r] = static_cast<int>(d);
+        }
+        for (long d = 0; d < n; ++d)
+            if (sign[static_cast<std::size_t>(d)] > 0)
+                (*heir)[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
+    }
     return st;
 }
 

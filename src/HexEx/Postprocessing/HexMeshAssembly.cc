@@ -89,6 +89,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (long o = 0; o < nocc; ++o)
             if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(nk + static_cast<int>(o));
     }
+    if (stats.violations) describeViolations(g, vlabel, *stats.violations);
     VertexCandidates candidates;
     out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads, &candidates);
     if (implicit) {
