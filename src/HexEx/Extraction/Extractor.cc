@@ -81,7 +81,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     rep.timings_s.postprocess = clock.lap();
 
     progress("vertices", 0);
-    const DartGeometry geo = placementStage({&mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads});
+    const DartGeometry geo = placementStage({&mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads, &survivors.heir});
     if (implicit) {
         cells.dart_occurrence = implicitDartOccurrences(darts.darts, survivors.alive, survivors.new_index, survivors.n_alive, threads);
         buildImplicitCells(mesh, pre.transitions, pre.tets, darts.darts, threads, cells);

@@ -27,6 +27,9 @@ struct AnnihilateOutput {
     int n_alive = 0;               ///< survivors
     long pairs = 0;                ///< annihilated regular/anti pairs
     long remaining_anti = 0;       ///< anti darts left
+    /// Per dart: the surviving dart that inherits a removed regular dart's h-vertex, or -1
+    /// (see annihilateDarts()); empty without merge.
+    std::vector<int> heir;
 };
 
 /// Annihilates (if merge) and numbers the surviving darts in order.

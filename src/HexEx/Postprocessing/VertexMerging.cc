@@ -54,6 +54,18 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         for (std::size_t d = 0; d < label.size(); ++d)
             if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
     }
+    // Extra placed points (removed regular darts) per class, in order.
+    std::vector<int> xoff(nc + 1, 0), xidx(darts.extra_dart.size());
+    for (int d : darts.extra_dart)
+        if (label[static_cast<std::size_t>(d)] >= 0) ++xoff[static_cast<std::size_t>(label[static_cast<std::size_t>(d)]) + 1];
+    for (std::size_t l = 0; l < nc; ++l) xoff[l + 1] += xoff[l];
+    {
+        std::vector<int> fill(xoff.begin(), xoff.end() - 1);
+        for (std::size_t k = 0; k < darts.extra_dart.size(); ++k) {
+            const int l = label[static_cast<std::size_t>(darts.extra_dart[k])];
+            if (l >= 0) xidx[static_cast<std::size_t>(fill[static_cast<std::size_t>(l)]++)] = darts.extra_point[k];
+        }
+    }
     // Tolerance for "same h-vertex": relative to the mesh size.
     Vec3d lo = mesh.n_vertices() ? mesh.position(VertexHandle(0)) : Vec3d(0, 0, 0), hi = lo;
     for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
@@ -76,15 +88,18 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             all.clear();
             bnd.clear();
             planes.clear();
-            for (int k = off[l]; k < off[l + 1]; ++k) {
-                const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
-                const auto q = static_cast<std::size_t>(darts.point[d]);
+            auto addPoint = [&](std::size_t q) {
                 all.push_back(darts.position[q]);
                 if (darts.boundary_hf[q][0] >= 0) {
                     bnd.push_back(darts.position[q]);
                     for (int hf : darts.boundary_hf[q])
                         if (hf >= 0) planes.push_back(hf);
                 }
+            };
+            for (int k = xoff[l]; k < xoff[l + 1]; ++k) addPoint(static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]));
+            for (int k = off[l]; k < off[l + 1]; ++k) {
+                const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
+                addPoint(static_cast<std::size_t>(darts.point[d]));
             }
             if (all.empty()) continue;
             if (bnd.empty()) {

@@ -17,6 +17,11 @@ struct DartPlacement {
     std::vector<int> point;                        ///< per dart: index of its placed point
     std::vector<Vec3d> position;                   ///< per placed point: 3D position of the grid point in its tet
     std::vector<std::array<int, 3>> boundary_hf;   ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
+    /// Extra placed points of removed regular darts (annihilation), each attached to the
+    /// surviving dart extra_dart[k] that inherited its h-vertex: another preimage of the
+    /// same grid point, used as a position candidate of that dart's vertex.
+    std::vector<int> extra_dart;
+    std::vector<int> extra_point;  ///< placed point of each extra (index into position)
 };
 
 /// Classes whose h-vertices lie at several distinct positions (preimages of one grid point,
