@@ -113,8 +113,9 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 }
                 continue;
             }
-            const auto dist = distinctPositions(bnd, tol);
-            if (dist.size() == 1) {
+            std::vector<Vec3d> dist = distinctPositions(bnd, tol);
+            const std::vector<Vec3d> allDist = distinctPositions(all, tol);
+            if (dist.size() == 1 && allDist.size() == 1) {
                 out[l] = dist[0];
                 continue;
             }
@@ -141,15 +142,29 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             const Eigen::Vector3d x = M.ldlt().solve(rhs);
             const Vec3d target(x[0], x[1], x[2]);
             // Candidates that lie on all the planes as well as any other (equal residual up
-            // to rounding) are equally good for the rule; the one nearest the least-squares
-            // point comes first, the others of that group next, then the rest.
-            std::vector<double> residual(dist.size(), 0.0);
-            double minRes = 0;
-            for (std::size_t k = 0; k < dist.size(); ++k) {
-                for (const auto& [n, off] : normals) residual[k] += ((n | dist[k]) - off) * ((n | dist[k]) - off);
-                minRes = k == 0 ? residual[k] : std::min(minRes, residual[k]);
-            }
+            // to rounding) are equally good for the rule: boundary h-vertices, and interior
+            // ones that lie on the planes too (a grid point at a boundary vertex of the tet
+            // mesh seen from a tet that touches the boundary only there). The one nearest the
+            // least-squares point comes first, the others of that group next, then the rest.
+            auto residualOf = [&](const Vec3d& p) {
+                double r = 0;
+                for (const auto& [n, off] : normals) r += ((n | p) - off) * ((n | p) - off);
+                return r;
+            };
+            double minRes = residualOf(dist[0]);
+            for (const Vec3d& p : dist) minRes = std::min(minRes, residualOf(p));
             const double resTol = minRes + 4.0 * tol * tol * static_cast<double>(normals.size() + 1);
+            for (const Vec3d& p : allDist) {
+                bool known = false;
+                for (const Vec3d& q : dist) known = known || (p - q).norm() <= tol;
+                if (!known && residualOf(p) <= resTol) dist.push_back(p);
+            }
+            if (dist.size() == 1) {
+                out[l] = dist[0];
+                continue;
+            }
+            std::vector<double> residual(dist.size(), 0.0);
+            for (std::size_t k = 0; k < dist.size(); ++k) residual[k] = residualOf(dist[k]);
             std::size_t best = dist.size();
             for (std::size_t k = 0; k < dist.size(); ++k)
                 if (residual[k] <= resTol &&
