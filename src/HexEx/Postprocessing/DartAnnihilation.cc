@@ -30,12 +30,17 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
             if (r >= 0 && r != anti && alive[static_cast<std::size_t>(r)] && sign[static_cast<std::size_t>(r)] > 0) reg = r;
         }
         if (reg < 0) continue;
-        if (heir)
-            for (int j = 1; j < 4; ++j) {
-                const long x = A(reg)[j];
-                if (x >= 0 && x != reg && x != anti && sign[static_cast<std::size_t>(x)] > 0)
-                    sameVertex.unite(static_cast<int>(reg), static_cast<int>(x));
-            }
+        if (heir) {
+            // The pair's h-vertices merge (paper 4.4.2: a pair linked by alpha_0 joins the
+            // vertices of its two darts), and each dart stays with the darts around its
+            // h-vertex (alpha_1..alpha_3 partners).
+            sameVertex.unite(static_cast<int>(reg), static_cast<int>(anti));
+            for (int j = 1; j < 4; ++j)
+                for (const long self : {reg, anti}) {
+                    const long x = A(self)[j];
+                    if (x >= 0 && x != reg && x != anti) sameVertex.unite(static_cast<int>(self), static_cast<int>(x));
+                }
+        }
         for (int j = 0; j < 4; ++j) {
             const long x = A(reg)[j], y = A(anti)[j];
             if (x == anti) continue;

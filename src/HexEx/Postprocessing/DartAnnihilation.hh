@@ -21,11 +21,12 @@ struct AnnihilationStats {
 /// by ascending dart index with a work list, so the result is deterministic.
 ///
 /// If @p heir is given, it receives per dart the surviving dart that inherits its h-vertex,
-/// or -1: a removed regular dart is joined with its alpha_1, alpha_2 and alpha_3 partners
-/// at the time of removal (darts at the same h-vertex), transitively; every surviving or
-/// removed regular dart of such a group gets the group's smallest surviving dart. Removed
-/// regular darts are then still preimages of their heir's vertex (vertex placement uses
-/// their positions as candidates). Anti darts (in the flipped part) get -1.
+/// or -1: at each removal the regular and the anti dart are joined (the paper's vertex
+/// merging joins the h-vertices of an annihilated pair) and each with its alpha_1, alpha_2
+/// and alpha_3 partners of that moment (darts at the same h-vertex), transitively; every
+/// regular dart of such a group gets the group's smallest surviving dart. The positions of
+/// removed regular darts are then candidates for their heir's vertex (VertexMerging.hh).
+/// Anti darts (in the flipped part) get -1.
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive, std::vector<int>* heir = nullptr);
 
