@@ -84,10 +84,15 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
         hexes.erase(std::unique(hexes.begin(), hexes.end()), hexes.end());
         // Quality of a set of hexes: their minScaledJacobian() values sorted ascending,
         // compared lexicographically (the worst hex first, then the next worst, ...).
+        // The first entry is minus the number of inverted hexes (value <= 0), so fewer
+        // inverted hexes always win.
         auto quality = [&](const int* hb, const int* he) {
-            std::vector<double> q;
-            for (const int* h = hb; h != he; ++h) q.push_back(minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(*h)]));
-            std::sort(q.begin(), q.end());
+            std::vector<double> q(1, 0.0);
+            for (const int* h = hb; h != he; ++h) {
+                q.push_back(minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(*h)]));
+                if (q.back() <= 0) q[0] -= 1.0;
+            }
+            std::sort(q.begin() + 1, q.end());
             return q;
         };
         // Candidates per member: the preferred ones first; all of them if those invert a hex.
@@ -121,12 +126,16 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                     }
                 }
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], best[m]);
-                worst = bestQ.empty() ? 1.0 : bestQ.front();
+                worst = bestQ.size() < 2 ? 1.0 : bestQ[1];
             } else {
                 // Large clusters: one member at a time, two sweeps.
-                // Large clusters: one member at a time (its own hexes), two sweeps.
+                // Large clusters: one member at a time (its own hexes), sweeps in ascending
+                // order until nothing changes (at most eight).
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], 0);
-                for (int sweep = 0; sweep < 2; ++sweep)
+                std::vector<int> chosen(cl.size(), 0);
+                bool moved = true;
+                for (int sweep = 0; sweep < 8 && moved; ++sweep) {
+                    moved = false;
                     for (std::size_t m = 0; m < cl.size(); ++m) {
                         const auto k = static_cast<std::size_t>(cl[m]);
                         const int* hb = inc.data() + off[k];
@@ -142,8 +151,12 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                             }
                         }
                         setPos(cl[m], best);
+                        if (best != chosen[m]) moved = true;
+                        chosen[m] = best;
                     }
-                worst = quality(hexes.data(), hexes.data() + hexes.size()).front();
+                }
+                const std::vector<double> all = quality(hexes.data(), hexes.data() + hexes.size());
+                worst = all.size() < 2 ? 1.0 : all[1];
             }
             if (worst > 0) break;
         }
