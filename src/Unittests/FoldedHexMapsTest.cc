@@ -130,6 +130,26 @@ TEST(FoldedHexMaps, SourceMeshBackUnderFolds) {
     EXPECT_GE(cases, 4 * 4 * 8 * 2);
 }
 
+// Cases where the proper preimage of a vertex survives only in removed darts: the cube at
+// a = 0.6, seed 15 (a boundary vertex whose only surviving h-vertices were fold copies
+// until the positions of annihilated anti darts became last-resort candidates), and 0.8.
+TEST(FoldedHexMaps, ProperPreimageOnlyInRemovedDarts) {
+    const HexMesh cube = sourceMesh("cube");
+    for (int threads : {1, 2}) {
+        const auto c = runCase(cube, 0.6, 15, 1, threads);
+        EXPECT_TRUE(c.ok()) << c.summary();
+        EXPECT_EQ(c.off_position, 0u);
+    }
+    for (const char* name : {"cylinder3", "cylinder5", "sphere"}) {
+        const HexMesh src = sourceMesh(name);
+        if (src.hexes.empty()) continue;
+        for (unsigned seed : {2u, 4u, 9u, 11u, 15u, 18u}) {
+            const auto c = runCase(src, 0.8, seed, 1, 1);
+            EXPECT_TRUE(c.ok()) << name << " a=0.8 seed=" << seed << ": " << c.summary();
+        }
+    }
+}
+
 // Same output for 1 and 2 threads, bit for bit, on a heavily folded map.
 TEST(FoldedHexMaps, OutputIndependentOfThreads) {
     const HexMesh src = sourceMesh("cylinder5");

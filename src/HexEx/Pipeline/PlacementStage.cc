@@ -58,6 +58,7 @@ DartGeometry placementStage(const PlacementInput& in) {
         Vec3i lastZ(0, 0, 0);
         for (std::size_t d = 0; d < nd; ++d) {
             if (alive[d] || heir[d] < 0) continue;
+            const bool flipped = ds.darts[d].sign < 0;
             const Dart& D = ds.darts[d];
             if (D.tet == lastTet && samePoint(D.z, lastZ) && heir[d] == lastHeir) continue;
             lastTet = D.tet;
@@ -68,6 +69,7 @@ DartGeometry placementStage(const PlacementInput& in) {
             geo.placement.boundary_hf.push_back(bhf);
             geo.placement.extra_dart.push_back(newIndex[static_cast<std::size_t>(heir[d])]);
             geo.placement.extra_point.push_back(static_cast<int>(geo.placement.position.size()) - 1);
+            geo.placement.extra_flipped.push_back(flipped ? 1 : 0);
         }
     }
     return geo;

@@ -26,10 +26,10 @@ struct PlacementInput {
 };
 
 /// Places the surviving darts. A run of darts at the same (tet, grid point) shares one
-/// placed point, computed once. With @p in.heir, every removed regular dart whose h-vertex a
+/// placed point, computed once. With @p in.heir, every removed dart whose h-vertex a
 /// survivor inherited adds its own placed point to that survivor
-/// (DartPlacement::extra_dart / extra_point): another preimage of the same grid point,
-/// a candidate for the vertex position. The result does not depend on the thread count.
+/// (DartPlacement::extra_dart / extra_point, extra_flipped for anti darts): another
+/// preimage of the same grid point, a candidate for the vertex position. The result does not depend on the thread count.
 DartGeometry placementStage(const PlacementInput& in);
 
 } // namespace HexEx

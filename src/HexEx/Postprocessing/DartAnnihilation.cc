@@ -79,8 +79,7 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
             if (first[r] < 0) first[r] = static_cast<int>(d);
         }
         for (long d = 0; d < n; ++d)
-            if (sign[static_cast<std::size_t>(d)] > 0)
-                (*heir)[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
+            (*heir)[static_cast<std::size_t>(d)] = first[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
     }
     return st;
 }

@@ -24,9 +24,10 @@ struct AnnihilationStats {
 /// or -1: at each removal the regular and the anti dart are joined (the paper's vertex
 /// merging joins the h-vertices of an annihilated pair) and each with its alpha_1, alpha_2
 /// and alpha_3 partners of that moment (darts at the same h-vertex), transitively; every
-/// regular dart of such a group gets the group's smallest surviving dart. The positions of
-/// removed regular darts are then candidates for their heir's vertex (VertexMerging.hh).
-/// Anti darts (in the flipped part) get -1.
+/// dart of such a group gets the group's smallest surviving dart. The positions of removed
+/// darts are then candidates for their heir's vertex (VertexMerging.hh): those of regular
+/// darts like the vertex's own, those of anti darts (in the flipped part) only as a last
+/// resort.
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive, std::vector<int>* heir = nullptr);
 

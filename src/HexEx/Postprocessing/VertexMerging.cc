@@ -56,6 +56,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     }
     // Extra placed points (removed regular darts) per class, in order.
     std::vector<int> xoff(nc + 1, 0), xidx(darts.extra_dart.size());
+    std::vector<char> xflip(darts.extra_dart.size(), 0);
     for (int d : darts.extra_dart)
         if (label[static_cast<std::size_t>(d)] >= 0) ++xoff[static_cast<std::size_t>(label[static_cast<std::size_t>(d)]) + 1];
     for (std::size_t l = 0; l < nc; ++l) xoff[l + 1] += xoff[l];
@@ -63,7 +64,10 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         std::vector<int> fill(xoff.begin(), xoff.end() - 1);
         for (std::size_t k = 0; k < darts.extra_dart.size(); ++k) {
             const int l = label[static_cast<std::size_t>(darts.extra_dart[k])];
-            if (l >= 0) xidx[static_cast<std::size_t>(fill[static_cast<std::size_t>(l)]++)] = darts.extra_point[k];
+            if (l < 0) continue;
+            const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(l)]++);
+            xidx[at] = darts.extra_point[k];
+            xflip[at] = k < darts.extra_flipped.size() ? darts.extra_flipped[k] : 0;
         }
     }
     // Tolerance for "same h-vertex": relative to the mesh size.
@@ -83,6 +87,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         VertexCandidates& cand = parts[static_cast<std::size_t>(part)];
         std::vector<Vec3d> all, bnd;
         std::vector<int> planes;
+        std::vector<Vec3d> flippedPts;  // positions of annihilated anti darts of the class
         std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
             all.clear();
@@ -96,26 +101,43 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                         if (hf >= 0) planes.push_back(hf);
                 }
             };
-            for (int k = xoff[l]; k < xoff[l + 1]; ++k) addPoint(static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]));
+            flippedPts.clear();
+            for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
+                if (xflip[static_cast<std::size_t>(k)]) flippedPts.push_back(darts.position[static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)])]);
+                else addPoint(static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]));
+            }
             for (int k = off[l]; k < off[l + 1]; ++k) {
                 const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
                 addPoint(static_cast<std::size_t>(darts.point[d]));
             }
             if (all.empty()) continue;
+            // Distinct anti-dart positions not among @p known (last-resort candidates).
+            auto flippedExtras = [&](const std::vector<Vec3d>& known) {
+                std::vector<Vec3d> extra;
+                if (flippedPts.empty()) return extra;
+                for (const Vec3d& p : distinctPositions(flippedPts, tol)) {
+                    bool dup = false;
+                    for (const Vec3d& q : known) dup = dup || (p - q).norm() <= tol;
+                    if (!dup) extra.push_back(p);
+                }
+                return extra;
+            };
             if (bnd.empty()) {
                 const auto dist = distinctPositions(all, tol);
                 out[l] = dist[0];
-                if (dist.size() > 1) {
+                const auto extra = flippedExtras(dist);
+                if (dist.size() > 1 || !extra.empty()) {
                     cand.vertex.push_back(static_cast<int>(l));
                     cand.preferred.push_back(static_cast<int>(dist.size()));
                     cand.offset.push_back(static_cast<int>(cand.position.size()));
                     cand.position.insert(cand.position.end(), dist.begin(), dist.end());
+                    cand.position.insert(cand.position.end(), extra.begin(), extra.end());
                 }
                 continue;
             }
             std::vector<Vec3d> dist = distinctPositions(bnd, tol);
             const std::vector<Vec3d> allDist = distinctPositions(all, tol);
-            if (dist.size() == 1 && allDist.size() == 1) {
+            if (dist.size() == 1 && allDist.size() == 1 && flippedPts.empty()) {
                 out[l] = dist[0];
                 continue;
             }
@@ -159,7 +181,10 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 for (const Vec3d& q : dist) known = known || (p - q).norm() <= tol;
                 if (!known && residualOf(p) <= resTol) dist.push_back(p);
             }
-            if (dist.size() == 1) {
+            std::vector<Vec3d> extra;
+            for (const Vec3d& p : flippedExtras(dist))
+                if (residualOf(p) <= resTol) extra.push_back(p);
+            if (dist.size() == 1 && extra.empty()) {
                 out[l] = dist[0];
                 continue;
             }
@@ -183,6 +208,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             cand.preferred.push_back(preferred);
             for (std::size_t k = 0; k < dist.size(); ++k)
                 if (k != best && residual[k] > resTol) cand.position.push_back(dist[k]);
+            cand.position.insert(cand.position.end(), extra.begin(), extra.end());
         }
     });
     if (candidates) {

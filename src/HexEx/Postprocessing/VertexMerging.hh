@@ -22,6 +22,9 @@ struct DartPlacement {
     /// same grid point, used as a position candidate of that dart's vertex.
     std::vector<int> extra_dart;
     std::vector<int> extra_point;  ///< placed point of each extra (index into position)
+    /// Per extra: 1 if it comes from an anti dart (a preimage in the flipped part of the
+    /// map): such positions are candidates only after all others.
+    std::vector<char> extra_flipped;
 };
 
 /// Classes whose h-vertices lie at several distinct positions (preimages of one grid point,
@@ -39,7 +42,9 @@ struct VertexCandidates {
 };
 
 /// Merged position per class, always the position of one of its h-vertices (a true
-/// preimage of the class's grid point, never an average). Interior classes (no h-vertex
+/// preimage of the class's grid point, never an average). Positions of annihilated anti
+/// darts (DartPlacement::extra_flipped) are appended to a class's candidates after all
+/// others and never preferred. Interior classes (no h-vertex
 /// on the boundary): the only distinct position if there is one; otherwise the first
 /// candidate, and the class is listed in @p candidates (if given) so that
 /// chooseVertexPreimages() can pick by the quality of the incident hexes. Boundary
