@@ -12,7 +12,7 @@ namespace HexEx {
 
 namespace {
 /// Clusters with at most this many candidate combinations are searched exhaustively.
-constexpr double kMaxCombinations = 4096;
+constexpr double kMaxCombinations = 65536;
 } // namespace
 
 double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h) {
@@ -106,29 +106,48 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
             }
             double worst = -10;  // smallest minScaledJacobian() of the chosen combination
             if (combos <= kMaxCombinations) {
-                // Every combination, in lexicographic order (the first best one wins).
+                // Every combination, in lexicographic order (the first best one wins). The
+                // per-hex values are kept and only the hexes of members that changed are
+                // evaluated again.
                 std::vector<int> pick(cl.size(), 0), best(cl.size(), 0);
-                std::vector<double> bestQ;
+                std::vector<std::vector<int>> memberHexes(cl.size());  // positions in hexes
+                for (std::size_t m = 0; m < cl.size(); ++m) {
+                    const auto k = static_cast<std::size_t>(cl[m]);
+                    for (int j = off[k]; j < off[k + 1]; ++j)
+                        memberHexes[m].push_back(static_cast<int>(
+                            std::lower_bound(hexes.begin(), hexes.end(), inc[static_cast<std::size_t>(j)]) - hexes.begin()));
+                    setPos(cl[m], 0);
+                }
+                std::vector<double> value(hexes.size());
+                for (std::size_t h = 0; h < hexes.size(); ++h) value[h] = minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(hexes[h])]);
+                std::vector<double> bestQ, q(hexes.size() + 1);
                 for (bool more = true; more;) {
-                    for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], pick[m]);
-                    std::vector<double> q = quality(hexes.data(), hexes.data() + hexes.size());
+                    q[0] = 0;
+                    for (std::size_t h = 0; h < hexes.size(); ++h) {
+                        q[h + 1] = value[h];
+                        if (value[h] <= 0) q[0] -= 1.0;
+                    }
+                    std::sort(q.begin() + 1, q.end());
                     if (bestQ.empty() || q > bestQ) {
-                        bestQ.swap(q);
+                        bestQ = q;
                         best = pick;
                     }
                     more = false;
                     for (std::size_t m = cl.size(); m-- > 0;) {
-                        if (++pick[m] < count[m]) {
+                        const bool wrapped = ++pick[m] >= count[m];
+                        if (wrapped) pick[m] = 0;
+                        setPos(cl[m], pick[m]);
+                        for (int h : memberHexes[m])
+                            value[static_cast<std::size_t>(h)] = minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(hexes[static_cast<std::size_t>(h)])]);
+                        if (!wrapped) {
                             more = true;
                             break;
                         }
-                        pick[m] = 0;
                     }
                 }
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], best[m]);
                 worst = bestQ.size() < 2 ? 1.0 : bestQ[1];
             } else {
-                // Large clusters: one member at a time, two sweeps.
                 // Large clusters: one member at a time (its own hexes), sweeps in ascending
                 // order until nothing changes (at most eight).
                 for (std::size_t m = 0; m < cl.size(); ++m) setPos(cl[m], 0);

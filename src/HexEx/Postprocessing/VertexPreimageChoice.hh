@@ -20,7 +20,7 @@ double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h);
 /// then the values compared as a list sorted ascending (the worst hex decides, then the
 /// next worst, ...; ties: the first combination in lexicographic order); only if the best
 /// such combination still inverts a hex are the other candidates considered too. Clusters
-/// with more than 4096 combinations are chosen one vertex at a time by the same measure
+/// with more than 65536 combinations are chosen one vertex at a time by the same measure
 /// over the vertex's own hexes (sweeps in ascending order until nothing changes, at most 8). Clusters are independent of the
 /// order of the hexes. Vertices are visited in ascending order, twice, so that neighbouring
 /// ambiguous vertices see each other's choice. Returns the number of vertices whose
