@@ -7,6 +7,7 @@
 #include "../Extraction/DartExtraction.hh"
 #include "../Postprocessing/HexMeshAssembly.hh"
 
+#include <utility>
 #include <vector>
 
 namespace HexEx {
@@ -20,9 +21,8 @@ struct PlacementInput {
     const std::vector<int>* new_index = nullptr;///< per dart: index among the survivors
     int n_alive = 0;                            ///< survivors
     int threads = 1;                            ///< worker threads (resolved, >= 1)
-    /// Per dart: the survivor inheriting a removed regular dart's h-vertex, or -1
-    /// (AnnihilateOutput::heir); null or empty: no extra candidates.
-    const std::vector<int>* heir = nullptr;
+    /// (removed dart, heir) pairs (AnnihilateOutput::heir); null or empty: no extra candidates.
+    const std::vector<std::pair<int, int>>* heir = nullptr;
 };
 
 /// Places the surviving darts. A run of darts at the same (tet, grid point) shares one
