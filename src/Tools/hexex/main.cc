@@ -15,6 +15,7 @@ const char* kUsage =
     "  extract IN -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
     "                                            extract the hex mesh (.vtu, .vtk, .ovm, .mesh)\n"
     "  generate cube|cylinder|ring|twisted-ring [options] -o OUT.hexex\n"
+    "  generate from-hex MESH [--perturb A] -o OUT.hexex  map whose hex mesh is MESH\n"
     "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
     "  validate MESH [--json]                    check a hex mesh file\n"
     "exit status: 0 ok, 2 bad input or usage, 3 output not all-hex\n";
