@@ -17,6 +17,7 @@ const char* kUsage =
     "                                            extract the hex mesh (.vtu, .vtk, .ovm, .ovmb, .mesh)\n"
     "  convert IN OUT [--encoding E]             convert a map (.hexex .ovm .ovmb) or a hex mesh\n"
     "  generate cube|cylinder|ring|twisted-ring [options] -o OUT.hexex\n"
+    "  generate from-hex MESH [--perturb A] -o OUT.hexex  map whose hex mesh is MESH\n"
     "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
     "  validate MESH [--json]                    check a hex mesh file\n"
     "exit status: 0 ok, 2 bad input or usage, 3 output not all-hex\n";
