@@ -1,0 +1,76 @@
+#include "AnnihilateStage.hh"
+
+#include "../Core/Parallel.hh"
+#include "../Postprocessing/DartAnnihilation.hh"
+#include "../Postprocessing/FaceConnectionRepair.hh"
+
+#include <cstring>
+
+namespace HexEx {
+
+AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
+    AnnihilateOutput out;
+    const std::size_t nd = in.alpha->size();
+    out.alive.assign(nd, 1);
+    if (in.merge) {
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive);
+        out.pairs = as.pairs;
+        out.remaining_anti = as.remaining_anti;
+    } else {
+        out.remaining_anti = in.anti;
+    }
+    out.new_index.assign(nd, -1);
+    for (std::size_t d = 0; d < nd; ++d)
+        if (out.alive[d]) out.new_index[d] = out.n_alive++;
+    return out;
+}
+
+MapOutput buildMapStage(MapInput&& in) {
+    MapOutput out;
+    const std::vector<char>& alive = in.survivors->alive;
+    const std::vector<int>& newIndex = in.survivors->new_index;
+    const int threads = in.threads;
+    std::vector<DartLinks> links;
+    links.swap(in.alpha);
+    const std::size_t nd = links.size();
+    // Compact in two steps, chunks in parallel: each chunk first packs its surviving darts
+    // to the start of its own range (in place: the write position never passes the read
+    // position), then the packed blocks are moved down in chunk order. Missing or removed
+    // partners (and implicit-cell partners, see implicitAlpha3Occurrences()) become free links.
+    std::vector<long> unconnected(static_cast<std::size_t>(threads), 0);
+    std::vector<std::size_t> chunkBegin(static_cast<std::size_t>(threads), 0), chunkKept(static_cast<std::size_t>(threads), 0);
+    parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
+        std::size_t w = b;
+        for (std::size_t d = b; d < e; ++d) {
+            if (!alive[d]) continue;
+            DartLinks l;
+            for (int i = 0; i < 4; ++i) {
+                const int p = links[d][i];
+                if (p >= 0 && alive[static_cast<std::size_t>(p)]) {
+                    l[i] = newIndex[static_cast<std::size_t>(p)];
+                } else {
+                    l[i] = newIndex[d];
+                    if (i < 3) ++unconnected[static_cast<std::size_t>(k)];
+                }
+            }
+            links[w++] = l;
+        }
+        chunkBegin[static_cast<std::size_t>(k)] = b;
+        chunkKept[static_cast<std::size_t>(k)] = w - b;
+    });
+    for (std::size_t k = 0, dst = 0; k < chunkBegin.size(); dst += chunkKept[k], ++k)
+        if (dst != chunkBegin[k] && chunkKept[k] > 0)
+            std::memmove(static_cast<void*>(&links[dst]), &links[chunkBegin[k]], chunkKept[k] * sizeof(DartLinks));
+    for (long u : unconnected) out.unconnected_darts += u;
+    links.resize(static_cast<std::size_t>(in.survivors->n_alive));  // no shrink_to_fit: a copy into fresh memory costs more than the few removed darts save
+    out.map.assign_links(std::move(links));
+    if (in.repair_faces) {
+        out.repaired_face_connections = completePartialFaceConnections(out.map, threads);
+        if (out.repaired_face_connections > 0)
+            out.warnings.push_back(std::to_string(out.repaired_face_connections) +
+                                   " partially connected quads were completed (alpha_3 links added)");
+    }
+    return out;
+}
+
+} // namespace HexEx

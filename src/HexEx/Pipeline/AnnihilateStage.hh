@@ -1,0 +1,55 @@
+#pragma once
+/// @file AnnihilateStage.hh
+/// Pipeline stage "annihilate/merge" (paper 4.4.1): cancels regular/anti dart pairs,
+/// numbers the survivors and compacts them into a generalized map (missing partners
+/// become free links), then completes partially connected quads.
+
+#include "../Extraction/ConnectionTracing.hh"
+#include "../GMap/GMap.hh"
+
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// Input of annihilateStage().
+struct AnnihilateInput {
+    std::vector<DartLinks>* alpha = nullptr;           ///< traced links, updated in place
+    const std::vector<signed char>* sign = nullptr;    ///< +1 / -1 per dart
+    bool merge = true;                                 ///< annihilate (ExtractionOptions::merge)
+    long anti = 0;                                     ///< anti darts extracted (remaining if no merge)
+};
+
+/// Output of annihilateStage().
+struct AnnihilateOutput {
+    std::vector<char> alive;       ///< per dart: survived
+    std::vector<int> new_index;    ///< per dart: index among the survivors, or -1
+    int n_alive = 0;               ///< survivors
+    long pairs = 0;                ///< annihilated regular/anti pairs
+    long remaining_anti = 0;       ///< anti darts left
+};
+
+/// Annihilates (if merge) and numbers the surviving darts in order.
+AnnihilateOutput annihilateStage(const AnnihilateInput& in);
+
+/// Input of buildMapStage().
+struct MapInput {
+    std::vector<DartLinks> alpha;                ///< links after annihilation (consumed)
+    const AnnihilateOutput* survivors = nullptr; ///< which darts survived, and their new indices
+    bool repair_faces = true;                    ///< complete partially connected quads (with merge)
+    int threads = 1;                             ///< worker threads (resolved, >= 1)
+};
+
+/// Output of buildMapStage().
+struct MapOutput {
+    GMap<3> map;                          ///< the surviving darts and their links
+    long unconnected_darts = 0;           ///< missing alpha_0..alpha_2 links
+    long repaired_face_connections = 0;   ///< alpha_3 links added by the face repair
+    std::vector<std::string> warnings;    ///< warnings of this stage
+};
+
+/// Compacts the survivors into a generalized map (chunks in parallel; the result does not
+/// depend on the thread count) and repairs partial face connections.
+MapOutput buildMapStage(MapInput&& in);
+
+} // namespace HexEx

@@ -1,0 +1,32 @@
+#pragma once
+/// @file AssembleStage.hh
+/// Pipeline stage "assemble": validates the final generalized map (paper 3.1) and builds
+/// the hex mesh (vertex merging 4.4.2, hexes, polyhedra for other cells).
+
+#include "../Postprocessing/HexMeshAssembly.hh"
+
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// Input of assembleStage().
+struct AssembleInput {
+    const GMap<3>* map = nullptr;              ///< the final map
+    const DartGeometry* geometry = nullptr;    ///< placement of its darts
+    const ImplicitCells* implicit = nullptr;   ///< implicit cells, or null when the fast path is off
+    int threads = 1;                           ///< worker threads (resolved, >= 1)
+};
+
+/// Output of assembleStage().
+struct AssembleOutput {
+    HexMesh mesh;                       ///< the extracted mesh
+    GMapValidation validation;          ///< validator result on the map
+    AssemblyStats stats;                ///< counts of the assembly
+    std::vector<std::string> warnings;  ///< warnings of this stage
+};
+
+/// Runs the stage. The result does not depend on the thread count.
+AssembleOutput assembleStage(const AssembleInput& in);
+
+} // namespace HexEx

@@ -1,0 +1,33 @@
+#include "DartStage.hh"
+
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+#include "ImplicitCellPath.hh"
+
+#include <limits>
+
+namespace HexEx {
+
+DartStageOutput extractDartStage(const DartStageInput& in) {
+    DartStageOutput out;
+    out.implicit_cells = in.implicit_cells;
+    std::vector<FaceMask> usableFaces;
+    if (in.implicit_cells) usableFaces = implicitCellFaces(*in.mesh, *in.tets);
+    out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
+                             in.abs_volume);
+    if (out.darts.n_occurrences >= std::numeric_limits<int>::max() / 2)
+        throw InputError("too many grid points in large tets for 32-bit indices");
+    const std::size_t nd = out.darts.darts.size();
+    out.sign.resize(nd);
+    std::vector<long> antiPerChunk(static_cast<std::size_t>(in.threads), 0);
+    parallelChunks(nd, in.threads, [&](int k, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            out.sign[d] = out.darts.darts[d].sign;
+            if (out.sign[d] < 0) ++antiPerChunk[static_cast<std::size_t>(k)];
+        }
+    });
+    for (long a : antiPerChunk) out.anti += a;
+    return out;
+}
+
+} // namespace HexEx

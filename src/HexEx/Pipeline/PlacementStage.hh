@@ -1,0 +1,29 @@
+#pragma once
+/// @file PlacementStage.hh
+/// Pipeline stage "vertices": the 3D geometry of the surviving darts (position of each
+/// dart's grid point in its tet, its boundary faces, the frame's handedness), input of the
+/// vertex merging (paper 4.4.2) in the assembly.
+
+#include "../Extraction/DartExtraction.hh"
+#include "../Postprocessing/HexMeshAssembly.hh"
+
+#include <vector>
+
+namespace HexEx {
+
+/// Input of placementStage().
+struct PlacementInput {
+    const TetMesh* mesh = nullptr;              ///< the tet mesh
+    const std::vector<TetSoS>* tets = nullptr;  ///< per-tet predicates
+    const DartSet* darts = nullptr;             ///< the extracted darts
+    const std::vector<char>* alive = nullptr;   ///< per dart: survived annihilation
+    const std::vector<int>* new_index = nullptr;///< per dart: index among the survivors
+    int n_alive = 0;                            ///< survivors
+    int threads = 1;                            ///< worker threads (resolved, >= 1)
+};
+
+/// Places the surviving darts. A run of darts at the same (tet, grid point) shares one
+/// placed point, computed once. The result does not depend on the thread count.
+DartGeometry placementStage(const PlacementInput& in);
+
+} // namespace HexEx

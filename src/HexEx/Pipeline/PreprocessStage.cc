@@ -1,0 +1,123 @@
+#include "PreprocessStage.hh"
+
+#include "../Core/CompensatedSum.hh"
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+#include "../Extraction/DartExtraction.hh"
+#include "../Preprocessing/Sanitization.hh"
+
+#include <algorithm>
+#include <cmath>
+
+namespace HexEx {
+
+namespace {
+/// Tets per block of the deterministic parallel sums.
+constexpr std::size_t kSumBlock = 4096;
+
+/// Checks every parameter and returns the unsigned parametric volume. Sums go per fixed
+/// block of tets, then over the blocks in order: the same result for any thread count.
+/// An error names the first bad tet (chunks are rethrown in order).
+double checkedAbsVolume(const CornerParams& params, int threads) {
+    const std::size_t nBlocks = (params.size() + kSumBlock - 1) / kSumBlock;
+    std::vector<double> blockSum(nBlocks, 0.0);
+    parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
+        for (std::size_t blk = bb; blk < be; ++blk)
+            for (std::size_t c = blk * kSumBlock; c < std::min(params.size(), (blk + 1) * kSumBlock); ++c) {
+                const auto& q = params[c];
+                for (const auto& p : q)
+                    for (int k = 0; k < 3; ++k) {
+                        if (!std::isfinite(p[k])) throw InputError("tet " + std::to_string(c) + ": parameter is not finite");
+                        if (std::fabs(p[k]) > 1e9)
+                            throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
+                                             " is out of range (|u| <= 1e9)");
+                    }
+                blockSum[blk] += std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
+            }
+    });
+    double absVolume = 0;
+    for (double v : blockSum) absVolume += v;
+    return absVolume;
+}
+
+/// Checks that given rotations are one per halfface, in range and inverse across faces.
+void checkGivenRotations(const TetMesh& mesh, const std::vector<int>& given) {
+    if (given.size() != mesh.n_halffaces()) throw InputError("given rotations: one per halfface required");
+    for (std::size_t h = 0; h < given.size(); ++h) {
+        const int r = given[h];
+        const HalfFaceHandle o = mesh.opposite_halfface(HalfFaceHandle(static_cast<int>(h)));
+        if (!o.is_valid()) continue;
+        if (r < 0 || r >= Rotation::kCount)
+            throw InputError("given rotations: halfface " + std::to_string(h) + " has rotation index " + std::to_string(r) + " (must be 0..23)");
+        if (Rotation(given[o.uidx()]) != Rotation(r).inverse())
+            throw InputError("given rotations: halfface " + std::to_string(h) + " and its opposite " + std::to_string(o.idx()) +
+                             " are not inverse to each other");
+    }
+}
+
+/// Counts flipped and degenerate tets and sums the signed volume (deterministic blocks).
+void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::Input& stats) {
+    struct BlockCounts {
+        CompensatedSum volume6;
+        long flipped = 0, degenerate = 0;
+    };
+    const std::size_t nBlocks = (tets.size() + kSumBlock - 1) / kSumBlock;
+    std::vector<BlockCounts> blocks(nBlocks);
+    parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
+        for (std::size_t blk = bb; blk < be; ++blk)
+            for (std::size_t c = blk * kSumBlock; c < std::min(tets.size(), (blk + 1) * kSumBlock); ++c) {
+                const TetSoS& T = tets[c];
+                if (T.vol < 0) ++blocks[blk].flipped;
+                if (T.vol == 0) ++blocks[blk].degenerate;
+                const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
+                blocks[blk].volume6.add((e1 % e2) | e3);
+            }
+    });
+    CompensatedSum volume6;
+    for (const auto& b : blocks) {
+        stats.flipped_tets += b.flipped;
+        stats.degenerate_tets += b.degenerate;
+        volume6.add(b.volume6.value());
+    }
+    stats.parametric_volume = volume6.value() / 6.0;
+}
+} // namespace
+
+PreprocessOutput preprocess(const PreprocessInput& in) {
+    const ParametrizedTetMesh& input = *in.input;
+    const TetMesh& mesh = input.mesh;
+    if (!mesh.has_adjacency()) throw InputError("extractHexMesh: call build_adjacency() on the tet mesh first");
+    if (input.params.size() != mesh.n_cells()) throw InputError("extractHexMesh: one parameter set per tet required");
+    PreprocessOutput out;
+    out.stats.vertices = static_cast<long>(mesh.n_vertices());
+    out.stats.tets = static_cast<long>(mesh.n_cells());
+    out.stats.boundary_faces = static_cast<long>(mesh.n_boundary_faces());
+    out.params = input.params;  // the working copy: sanitization changes it
+    // Unusable maps are refused up front with a clear message rather than exhausting memory.
+    out.abs_volume = checkedAbsVolume(out.params, in.threads);
+    if (out.abs_volume > in.max_hexes)
+        throw InputError("the map covers a parametric volume of " + std::to_string(out.abs_volume) +
+                         " grid cells, more than the limit of " + std::to_string(in.max_hexes) +
+                         " hexes (ExtractionOptions::max_hexes); is the parameter scale right?");
+    const std::vector<int>* given = in.given_rotations;
+    if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
+    if (given) checkGivenRotations(mesh, *given);
+    out.transitions = computeTransitions(mesh, out.params, given, in.threads);
+    out.stats.ambiguous_transitions = out.transitions.n_ambiguous;
+    out.stats.unresolved_transitions = out.transitions.n_unresolved;
+    SanitizeOptions so;
+    so.epsilon = in.epsilon;
+    so.threads = in.threads;
+    out.stats.snapped_coordinates = sanitizeParameters(mesh, out.params, out.transitions, so).snapped_coordinates;
+    const Singularities sing = findSingularities(mesh, out.params, out.transitions, in.threads);
+    out.stats.singular_edges = static_cast<long>(sing.edges.size());
+    out.stats.singular_vertices = static_cast<long>(sing.vertices.size());
+    out.tets = buildTetSoS(out.params, in.threads);
+    classify(out.tets, in.threads, out.stats);
+    if (out.transitions.n_unresolved > 0)
+        out.warnings.push_back(std::to_string(out.transitions.n_unresolved) +
+                               " transitions on degenerate faces could not be resolved from their neighbours");
+    return out;
+}
+
+} // namespace HexEx

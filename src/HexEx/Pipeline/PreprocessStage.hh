@@ -1,0 +1,52 @@
+#pragma once
+/// @file PreprocessStage.hh
+/// Pipeline stage "preprocess" (paper 4.1): refuses unusable parameters, computes the
+/// halfface transitions, sanitizes the parameters and classifies the tets.
+
+#include "../Extraction/ExtractionReport.hh"
+#include "../Extraction/TetSoS.hh"
+#include "../Mesh/ParametrizedTetMesh.hh"
+#include "../Preprocessing/Transitions.hh"
+
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// Input of preprocess().
+struct PreprocessInput {
+    const ParametrizedTetMesh* input = nullptr;         ///< the map (adjacency built)
+    const std::vector<int>* given_rotations = nullptr;  ///< ExtractionOptions::given_rotations
+    double epsilon = 1e-6;                              ///< sanitization tolerance
+    double max_hexes = 4e7;                             ///< limit on the unsigned parametric volume
+    int threads = 1;                                    ///< worker threads (resolved, >= 1)
+};
+
+/// Output of preprocess(). Move-only: @ref tets points into @ref params (a move keeps
+/// the vector's storage, a copy would not).
+struct PreprocessOutput {
+    CornerParams params;                ///< sanitized corner parameters
+    Transitions transitions;            ///< transition per halfface
+    std::vector<TetSoS> tets;           ///< symbolic-perturbation data per tet (points into params)
+    double abs_volume = 0;              ///< unsigned parametric volume (before sanitization)
+    ExtractionReport::Input stats;      ///< the report's input statistics
+    std::vector<std::string> warnings;  ///< warnings of this stage
+
+    /// Empty output.
+    PreprocessOutput() = default;
+    /// Move (keeps the storage tets point into).
+    PreprocessOutput(PreprocessOutput&&) = default;
+    /// Move assignment (keeps the storage tets point into).
+    PreprocessOutput& operator=(PreprocessOutput&&) = default;
+    /// No copies: the copy's tets would point into the original's parameters.
+    PreprocessOutput(const PreprocessOutput&) = delete;
+    /// No copies (see the copy constructor).
+    PreprocessOutput& operator=(const PreprocessOutput&) = delete;
+};
+
+/// Runs the stage. Throws InputError for unusable input: missing adjacency, wrong
+/// parameter count, non-finite or out-of-range parameters, a parametric volume above
+/// max_hexes, inconsistent given rotations. Deterministic for any thread count.
+PreprocessOutput preprocess(const PreprocessInput& in);
+
+} // namespace HexEx

@@ -1,0 +1,144 @@
+// The pipeline stages of src/HexEx/Pipeline run one by one give the same mesh and report
+// counts as extractHexMesh(), and each stage's output has the expected sizes.
+
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/Generators/Perturbation.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexExFile.hh>
+#include <HexEx/Pipeline/AnnihilateStage.hh>
+#include <HexEx/Pipeline/AssembleStage.hh>
+#include <HexEx/Pipeline/ConnectStage.hh>
+#include <HexEx/Pipeline/DartStage.hh>
+#include <HexEx/Pipeline/ImplicitCellPath.hh>
+#include <HexEx/Pipeline/PlacementStage.hh>
+#include <HexEx/Pipeline/PreprocessStage.hh>
+#include <HexEx/Pipeline/ReportStage.hh>
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+
+using namespace HexEx;
+
+namespace {
+
+/// Result of running the stages by hand.
+struct ManualRun {
+    HexMesh mesh;
+    ExtractionReport report;
+    long preprocess_tets = 0, darts = 0, anti = 0, survivors = 0, map_darts = 0, placed_points = 0;
+};
+
+/// Runs every stage in pipeline order, as extractHexMesh() does (without timing or freeing).
+ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitRequested = true) {
+    ManualRun r;
+    r.report.threads = threads;
+    const PreprocessOutput pre = preprocess({&pm, nullptr, 1e-6, 4e7, threads});
+    addToReport(pre, r.report);
+    r.preprocess_tets = static_cast<long>(pre.tets.size());
+    const bool implicit = useImplicitCells(implicitRequested, pre.stats.flipped_tets);
+    DartStageOutput darts = extractDartStage({&pm.mesh, &pre.tets, pre.abs_volume, implicit, threads});
+    addToReport(darts, r.report);
+    r.darts = static_cast<long>(darts.darts.darts.size());
+    r.anti = darts.anti;
+    ConnectOutput links = connectStage({&pm.mesh, &pre.transitions, &pre.tets, &darts.darts, threads, {}});
+    addToReport(links, r.report);
+    const AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, true, darts.anti});
+    addToReport(survivors, r.report);
+    r.survivors = survivors.n_alive;
+    ImplicitCells cells;
+    if (implicit)
+        cells.alpha3_occurrence = implicitAlpha3Occurrences(links.alpha, survivors.alive, survivors.new_index, survivors.n_alive, threads);
+    const MapOutput map = buildMapStage({std::move(links.alpha), &survivors, true, threads});
+    addToReport(map, r.report);
+    r.map_darts = static_cast<long>(map.map.n_darts());
+    const DartGeometry geo =
+        placementStage({&pm.mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads});
+    r.placed_points = static_cast<long>(geo.placement.position.size());
+    if (implicit) {
+        cells.dart_occurrence = implicitDartOccurrences(darts.darts, survivors.alive, survivors.new_index, survivors.n_alive, threads);
+        buildImplicitCells(pm.mesh, pre.transitions, pre.tets, darts.darts, threads, cells);
+        addToReport(cells, r.report);
+    }
+    AssembleOutput out = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads});
+    addToReport(out, r.report);
+    r.mesh = std::move(out.mesh);
+    return r;
+}
+
+/// Bitwise equality of two meshes (positions compared as bytes).
+void expectSameMesh(const HexMesh& a, const HexMesh& b) {
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t v = 0; v < a.vertices.size(); ++v)
+        EXPECT_EQ(std::memcmp(a.vertices[v].data(), b.vertices[v].data(), 3 * sizeof(double)), 0) << "vertex " << v;
+    EXPECT_EQ(a.hexes, b.hexes);
+    ASSERT_EQ(a.polyhedra.size(), b.polyhedra.size());
+    for (std::size_t c = 0; c < a.polyhedra.size(); ++c) EXPECT_EQ(a.polyhedra[c].faces, b.polyhedra[c].faces) << "polyhedron " << c;
+}
+
+/// The manual run equals extractHexMesh() in mesh and report counts; returns the manual run.
+ManualRun expectSameAsExtractor(ParametrizedTetMesh pm, int threads) {
+    pm.mesh.build_adjacency();
+    ExtractionOptions opt;
+    opt.threads = threads;
+    HexMesh expected;
+    const ExtractionReport rep = extractHexMesh(pm, expected, opt);
+    ManualRun r = runStages(pm, threads);
+    expectSameMesh(r.mesh, expected);
+    EXPECT_EQ(r.report.output.vertices, rep.output.vertices);
+    EXPECT_EQ(r.report.output.hexes, rep.output.hexes);
+    EXPECT_EQ(r.report.output.quads, rep.output.quads);
+    EXPECT_EQ(r.report.output.boundary_quads, rep.output.boundary_quads);
+    EXPECT_EQ(r.report.output.unconnected_darts, rep.output.unconnected_darts);
+    EXPECT_EQ(r.report.darts.extracted, rep.darts.extracted);
+    EXPECT_EQ(r.report.darts.anti, rep.darts.anti);
+    EXPECT_EQ(r.report.darts.annihilated_pairs, rep.darts.annihilated_pairs);
+    EXPECT_EQ(r.report.darts.implicit_cells, rep.darts.implicit_cells);
+    EXPECT_EQ(r.report.input.flipped_tets, rep.input.flipped_tets);
+    EXPECT_EQ(r.report.warnings, rep.warnings);
+    EXPECT_EQ(r.report.valid_all_hex, rep.valid_all_hex);
+    return r;
+}
+
+} // namespace
+
+TEST(PipelineStages, CubeWithoutImplicitCellsHas48DartsPerHex) {
+    ParametrizedTetMesh pm = generateCube(2, 3);
+    pm.mesh.build_adjacency();
+    const ManualRun r = runStages(pm, 1, false);
+    EXPECT_EQ(r.preprocess_tets, 48);  // 6 * 2^3
+    EXPECT_EQ(r.darts, 48 * 27);
+    EXPECT_EQ(r.anti, 0);
+    EXPECT_EQ(r.survivors, 48 * 27);
+    EXPECT_EQ(r.map_darts, 48 * 27);
+    EXPECT_EQ(r.mesh.hexes.size(), 27u);
+    EXPECT_EQ(r.mesh.vertices.size(), 64u);
+    EXPECT_TRUE(r.report.valid_all_hex);
+}
+
+TEST(PipelineStages, SameAsExtractorOnCylinderWithImplicitCells) {
+    for (int threads : {1, 2}) {
+        const ManualRun r = expectSameAsExtractor(generateCylinder(5, 6, 4, 1, 1), threads);
+        EXPECT_EQ(r.mesh.hexes.size(), 5u * 6 * 6 * 4);
+        EXPECT_GT(r.report.darts.implicit_cells, 0);
+        EXPECT_TRUE(r.report.valid_all_hex);
+    }
+}
+
+TEST(PipelineStages, SameAsExtractorOnPerturbedCubeWithFolds) {
+    ParametrizedTetMesh pm = generateCube(6, 3);
+    perturbParameters(pm, 1.0, 1);
+    for (int threads : {1, 2}) {
+        const ManualRun r = expectSameAsExtractor(pm, threads);
+        EXPECT_GT(r.report.input.flipped_tets, 0);
+        EXPECT_GT(r.report.darts.annihilated_pairs, 0);
+        EXPECT_EQ(r.survivors, r.darts - 2 * r.report.darts.annihilated_pairs);
+    }
+}
+
+TEST(PipelineStages, SameAsExtractorOnSphere) {
+    const std::string path = "../shared/data/sphere.hexex";
+    if (!std::ifstream(path)) GTEST_SKIP() << path << " not present";
+    expectSameAsExtractor(readHexExFile(path), 2);
+}
