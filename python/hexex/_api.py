@@ -88,8 +88,8 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
 
 
 def read_map(path) -> TetMap:
-    """Reads a tet mesh with its map from ``.hexex`` or OpenVolumeMesh ASCII ``.ovm``
-    (chosen by extension). Repairs the reader made (e.g. a mirrored mesh reoriented) are
+    """Reads a tet mesh with its map from ``.hexex`` or OpenVolumeMesh ``.ovm`` (ASCII) /
+    ``.ovmb`` (binary), chosen by extension. Repairs the reader made (e.g. a mirrored mesh reoriented) are
     issued as :class:`HexExWarning`. Raises ValueError "<file>:<line>: <reason>" for
     malformed files and "<file>: <reason>" for missing ones."""
     points, tets, params, messages = _core.read_map(as_path(path))
@@ -124,15 +124,19 @@ def _as_hex_mesh(mesh) -> tuple:
 
 
 def read_hex_mesh(path) -> HexMesh:
-    """Reads a hex mesh (``.vtu``, ``.vtk``, ``.ovm``, ``.mesh``, by extension)."""
+    """Reads a hex mesh (``.vtu``, ``.vtk``, ``.ovm``, ``.ovmb``, ``.mesh``, by extension)."""
     return HexMesh(*_core.read_hex_mesh(as_path(path)))
 
 
-def write_hex_mesh(path, mesh: HexMesh) -> None:
-    """Writes ``mesh`` (a HexMesh or ExtractionResult) as ``.vtu``, ``.vtk``, ``.ovm`` or
-    ``.mesh`` (by extension), byte for byte as ``hexex extract`` writes it. Cells a format
-    cannot store (polyhedra in ``.mesh``) are reported as :class:`HexExWarning`."""
-    _warn(_core.write_hex_mesh(as_path(path), *_as_hex_mesh(mesh)))
+def write_hex_mesh(path, mesh: HexMesh, *, encoding: str = "binary") -> None:
+    """Writes ``mesh`` (a HexMesh or ExtractionResult) as ``.vtu``, ``.vtk``, ``.ovm``,
+    ``.ovmb`` or ``.mesh`` (by extension), byte for byte as ``hexex extract`` writes it.
+    ``encoding`` is the ``.vtu`` data encoding as ``hexex extract --encoding``: "binary"
+    (raw appended data), "compressed" (zlib) or "ascii". Cells a format cannot store
+    (polyhedra in ``.mesh``) are reported as :class:`HexExWarning`."""
+    if not isinstance(encoding, str):
+        raise TypeError(f"encoding must be a str, got {type(encoding).__name__}")
+    _warn(_core.write_hex_mesh(as_path(path), *_as_hex_mesh(mesh), encoding))
 
 
 def validate(mesh: Union[HexMesh, str, "os.PathLike"]) -> dict:

@@ -29,12 +29,13 @@ nb::tuple readHexMeshFile(const std::string& path) {
     return hexMeshToArrays(std::move(hm));
 }
 
-/// Writes a hex mesh; returns the writer's warnings.
+/// Writes a hex mesh (`.vtu` data in the encoding named @p encoding); returns the writer's warnings.
 std::vector<std::string> writeHexMeshFile(const std::string& path, const DoubleArray& points, const Int32Array& hexes,
-                                          const nb::handle& polyhedra) {
+                                          const nb::handle& polyhedra, const std::string& encoding) {
+    const HexEx::VtuEncoding enc = HexEx::vtuEncodingFromName(encoding);
     const HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
     nb::gil_scoped_release release;
-    return HexEx::writeHexMesh(path, hm);
+    return HexEx::writeHexMesh(path, hm, enc);
 }
 
 /// Validates a hex mesh; returns HexMeshCheckResult as a dict.
@@ -73,9 +74,9 @@ nb::dict validateHexMesh(const DoubleArray& points, const Int32Array& hexes, con
 
 void bindHexMeshFunctions(nb::module_& m) {
     m.def("read_hex_mesh", &readHexMeshFile, nb::arg("path"),
-          "Reads .vtu/.vtk/.ovm/.mesh; returns (points, hexes, polyhedra).");
+          "Reads .vtu/.vtk/.ovm/.ovmb/.mesh; returns (points, hexes, polyhedra).");
     m.def("write_hex_mesh", &writeHexMeshFile, nb::arg("path"), nb::arg("points"), nb::arg("hexes"),
-          nb::arg("polyhedra"), "Writes a hex mesh (format by extension); returns warnings.");
+          nb::arg("polyhedra"), nb::arg("encoding"), "Writes a hex mesh (format by extension); returns warnings.");
     m.def("validate", &validateHexMesh, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
           "Checks a hex mesh (HexMeshCheck); returns a dict of counts.");
 }

@@ -77,13 +77,13 @@ def test_input_arrays_are_not_modified():
 
 def test_hex_mesh_round_trip(tmp_path):
     r = hexex.extract(*hexex.generate_twisted_ring(8, 2, 8, 2))
-    for ext in (".vtu", ".vtk", ".ovm", ".mesh"):
+    for ext in (".vtu", ".vtk", ".ovm", ".ovmb", ".mesh"):
         path = tmp_path / f"t{ext}"
         hexex.write_hex_mesh(path, r)
         back = hexex.read_hex_mesh(path)
         assert isinstance(back, hexex.HexMesh)
         assert np.array_equal(back.points, r.points), ext
-        if ext != ".ovm":  # .ovm stores faces; the reader rebuilds VTK order from them
+        if ext not in (".ovm", ".ovmb"):  # .ovm stores faces; the reader rebuilds VTK order from them
             assert np.array_equal(back.hexes, r.hexes), ext
         assert hexex.validate(back)["valid_all_hex"], ext
 

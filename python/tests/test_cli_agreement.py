@@ -26,7 +26,7 @@ CASES = {
 
 
 @pytest.mark.parametrize("case", sorted(CASES))
-@pytest.mark.parametrize("ext", [".vtu", ".vtk", ".ovm", ".mesh"])
+@pytest.mark.parametrize("ext", [".vtu", ".vtk", ".ovm", ".ovmb", ".mesh"])
 def test_same_files_as_cli(cli, tmp_path, case, ext):
     src = tmp_path / "in.hexex"
     hexex.write_map(src, CASES[case]())
@@ -35,6 +35,17 @@ def test_same_files_as_cli(cli, tmp_path, case, ext):
     r = hexex.extract(*hexex.read_map(src), threads=2)
     hexex.write_hex_mesh(py_out, r)
     assert py_out.read_bytes() == cli_out.read_bytes()
+
+
+@pytest.mark.parametrize("encoding", ["binary", "compressed", "ascii"])
+def test_same_vtu_encodings_as_cli(cli, tmp_path, encoding):
+    src = tmp_path / "in.hexex"
+    hexex.write_map(src, CASES["cylinder5"]())
+    cli_out, py_out = tmp_path / "cli.vtu", tmp_path / "py.vtu"
+    cli("extract", src, "-o", cli_out, "--encoding", encoding, "--quiet")
+    hexex.write_hex_mesh(py_out, hexex.extract(*hexex.read_map(src)), encoding=encoding)
+    assert py_out.read_bytes() == cli_out.read_bytes()
+    assert (b'format="ascii"' in py_out.read_bytes()) == (encoding == "ascii")
 
 
 def test_same_report_as_cli(cli, tmp_path):

@@ -116,6 +116,8 @@ def test_write_errors(tmp_path, cube):
     bad = hexex.HexMesh(r.points, np.full((1, 8), 1000, dtype=np.int32))
     with pytest.raises(ValueError):
         hexex.write_hex_mesh(tmp_path / "bad.vtu", bad)
+    with pytest.raises(ValueError, match=r"binary|compressed|ascii"):
+        hexex.write_hex_mesh(tmp_path / "z.vtu", r, encoding="gzip")
     with pytest.raises(TypeError, match=r"expected a HexMesh"):
         hexex.write_hex_mesh(tmp_path / "y.vtu", cube)
 
