@@ -90,14 +90,6 @@ private:
 const char* const kAxisName[3] = {"x", "y", "z"};
 const char* const kParamName[3] = {"u", "v", "w"};
 
-/// Swaps corners 2 and 3 of every tet and of its parameters.
-void reorientAll(std::vector<std::array<int, 4>>& cells, CornerParams& params) {
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        std::swap(cells[c][2], cells[c][3]);
-        std::swap(params[c][2], params[c][3]);
-    }
-}
-
 /// Appends "tet K (line L), ..." for up to five tets of @p list.
 std::string listTets(const std::vector<std::size_t>& list, const std::vector<int>& lines) {
     std::string s;
@@ -274,7 +266,10 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     std::vector<std::string> warnings;
     bool reoriented = false;
     if (positive.empty()) {
-        reorientAll(cells, params);
+        for (std::size_t c = 0; c < cells.size(); ++c) {  // swap corners 2 and 3 (and their parameters)
+            std::swap(cells[c][2], cells[c][3]);
+            std::swap(params[c][2], params[c][3]);
+        }
         reoriented = true;
         warnings.push_back(name + ": mesh is mirrored: all " + std::to_string(cells.size()) +
                            " tets were negatively oriented and have been reoriented");
