@@ -103,7 +103,11 @@ def test_to_meshio(tmp_path):
         assert np.array_equal(back.cells_dict["hexahedron"], r.hexes)
         # And our reader reads what meshio wrote.
         mine = hexex.read_hex_mesh(path)
-        assert np.array_equal(mine.hexes, r.hexes) and np.array_equal(mine.points, r.points)
+        assert np.array_equal(mine.hexes, r.hexes)
+        if binary:
+            assert np.array_equal(mine.points, r.points)
+        else:  # meshio's ASCII writer rounds the coordinates
+            assert np.allclose(mine.points, r.points, rtol=0, atol=1e-12)
 
 
 def test_polyhedra_in_meshio_and_validation():
