@@ -80,8 +80,9 @@ public:
         if (!std::isfinite(value)) fail(line(), "NaN or infinite value " + quoteToken(token(i)) + " for " + what);
         return value;
     }
-    /// Reads the section keyword line @p keyword and the count line after it.
-    long long section(const char* keyword, long long maxCount) {
+    /// Reads the section keyword line @p keyword and the count line after it; the count must
+    /// fit the rest of the file with at least @p minBytes bytes per entity.
+    long long section(const char* keyword, long long maxCount, std::size_t minBytes) {
         require(std::string("section '") + keyword + "'");
         if (size() != 1 || lower(token(0)) != lower(keyword))
             fail(line(), std::string("expected section '") + keyword + "', got " + quoteToken(text()));
@@ -90,8 +91,7 @@ public:
         expectTokens(1, what);
         const long long n = integer(0, what);
         if (n < 0) fail(line(), "negative " + what + " " + std::to_string(n));
-        // Every entity takes at least one line of two bytes.
-        if (n > maxCount || n > static_cast<long long>(remainingBytes() / 2) + 1)
+        if (n > maxCount || n > static_cast<long long>(remainingBytes() / minBytes) + 1)
             fail(line(), what + " " + std::to_string(n) + " too large for the file");
         return n;
     }
@@ -182,7 +182,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     if (in.size() != 2 || lower(in.token(0)) != "ovm" || lower(in.token(1)) != "ascii")
         in.fail(in.line(), "not an OpenVolumeMesh ASCII file: expected header 'OVM ASCII', got " + quoteToken(in.text()));
 
-    const long long nv = in.section("Vertices", INT_MAX);
+    const long long nv = in.section("Vertices", INT_MAX, 6);
     if (nv == 0) in.fail(in.line(), "mesh has no vertices (vertex count is 0)");
     m.vertices.resize(static_cast<std::size_t>(nv));
     for (long long v = 0; v < nv; ++v) {
@@ -193,7 +193,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
                                          std::string(1, "xyz"[k]) + " coordinate of vertex " + std::to_string(v));
     }
 
-    const long long ne = in.section("Edges", INT_MAX / 2);
+    const long long ne = in.section("Edges", INT_MAX / 2, 4);
     m.edges.resize(static_cast<std::size_t>(ne));
     for (long long e = 0; e < ne; ++e) {
         in.require("edge " + std::to_string(e) + " (file declares " + std::to_string(ne) + ")");
@@ -206,7 +206,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
                                    " to itself");
     }
 
-    const long long nf = in.section("Faces", INT_MAX / 2);
+    const long long nf = in.section("Faces", INT_MAX / 2, 8);
     m.faces.resize(static_cast<std::size_t>(nf));
     m.facePos.resize(static_cast<std::size_t>(nf));
     for (long long f = 0; f < nf; ++f) {
@@ -222,7 +222,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
         m.facePos[f] = in.line();
     }
 
-    const long long nc = in.section("Polyhedra", INT_MAX / 8);
+    const long long nc = in.section("Polyhedra", INT_MAX / 8, 4);
     if (nc == 0) in.fail(in.line(), "polyhedron count is 0: the mesh has no tets or other cells");
     m.cells.resize(static_cast<std::size_t>(nc));
     m.cellPos.resize(static_cast<std::size_t>(nc));
