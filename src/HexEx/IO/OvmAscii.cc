@@ -206,38 +206,29 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
                                    " to itself");
     }
 
+    // Faces (closed loops of >= 3 halfedges) and polyhedra (>= 1 halfface): valence, then items.
+    const auto readLists = [&in](const std::string& what, long long n, long long minValence, const std::string& item,
+                                 long long nItems, std::vector<std::vector<int>>& lists, std::vector<long long>& pos) {
+        lists.resize(static_cast<std::size_t>(n));
+        pos.resize(static_cast<std::size_t>(n));
+        for (long long i = 0; i < n; ++i) {
+            const std::string desc = what + " " + std::to_string(i);
+            in.require(desc + " (file declares " + std::to_string(n) + ")");
+            const long long valence = in.integer(0, "valence of " + desc);
+            if (valence < minValence || valence + 1 != static_cast<long long>(in.size()))
+                in.expectTokens(static_cast<std::size_t>(std::max(valence, minValence) + 1),
+                                desc + " (valence and " + std::to_string(valence) + " " + item + "s)");
+            for (long long k = 0; k < valence; ++k)
+                lists[i].push_back(in.index(static_cast<std::size_t>(k + 1), nItems,
+                                            item + " " + std::to_string(k) + " of " + desc));
+            pos[i] = in.line();
+        }
+    };
     const long long nf = in.section("Faces", INT_MAX / 2, 8);
-    m.faces.resize(static_cast<std::size_t>(nf));
-    m.facePos.resize(static_cast<std::size_t>(nf));
-    for (long long f = 0; f < nf; ++f) {
-        const std::string fdesc = "face " + std::to_string(f);
-        in.require(fdesc + " (file declares " + std::to_string(nf) + ")");
-        const long long valence = in.integer(0, "valence of " + fdesc);
-        if (valence < 3 || valence + 1 != static_cast<long long>(in.size()))
-            in.expectTokens(static_cast<std::size_t>(std::max<long long>(valence, 3) + 1),
-                            fdesc + " (valence and " + std::to_string(valence) + " halfedges)");
-        for (long long k = 0; k < valence; ++k)
-            m.faces[f].push_back(in.index(static_cast<std::size_t>(k + 1), 2 * ne,
-                                          "halfedge " + std::to_string(k) + " of " + fdesc));
-        m.facePos[f] = in.line();
-    }
-
+    readLists("face", nf, 3, "halfedge", 2 * ne, m.faces, m.facePos);
     const long long nc = in.section("Polyhedra", INT_MAX / 8, 4);
     if (nc == 0) in.fail(in.line(), "polyhedron count is 0: the mesh has no tets or other cells");
-    m.cells.resize(static_cast<std::size_t>(nc));
-    m.cellPos.resize(static_cast<std::size_t>(nc));
-    for (long long c = 0; c < nc; ++c) {
-        const std::string cdesc = "polyhedron " + std::to_string(c);
-        in.require(cdesc + " (file declares " + std::to_string(nc) + ")");
-        const long long valence = in.integer(0, "valence of " + cdesc);
-        if (valence < 1 || valence + 1 != static_cast<long long>(in.size()))
-            in.expectTokens(static_cast<std::size_t>(std::max<long long>(valence, 1) + 1),
-                            cdesc + " (valence and " + std::to_string(valence) + " halffaces)");
-        for (long long k = 0; k < valence; ++k)
-            m.cells[c].push_back(in.index(static_cast<std::size_t>(k + 1), 2 * nf,
-                                          "halfface " + std::to_string(k) + " of " + cdesc));
-        m.cellPos[c] = in.line();
-    }
+    readLists("polyhedron", nc, 1, "halfface", 2 * nf, m.cells, m.cellPos);
     readProperties(in, m);
     m.endPos = in.eofLine();
     return m;
