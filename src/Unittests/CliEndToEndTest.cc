@@ -307,7 +307,7 @@ TEST_F(CliEndToEndTest, DestroyedMapStillWritesBestMesh) {
 }
 
 TEST_F(CliEndToEndTest, MaxMemoryRefusesANeedleWithExitTwo) {
-    const std::string sphere = "../shared/data/sphere.hexex";
+    const std::string sphere = "Examples/data/sphere.hexex";
     if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
     HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
     pm.params[10][2][1] = 1e6;  // one corrupted number: a needle tet
