@@ -100,7 +100,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.postprocess = clock.lap();
 
     enter("vertices");
-    const DartGeometry geo = placementStage({&mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads});
+    const DartGeometry geo = placementStage({&mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads, &survivors.heir});
     if (implicit) {
         cells.dart_occurrence = implicitDartOccurrences(darts.darts, survivors.alive, survivors.new_index, survivors.n_alive, threads);
         buildImplicitCells(mesh, pre.transitions, pre.tets, darts.darts, threads, cells);
