@@ -168,3 +168,19 @@ TEST(MemoryBudget, BadAllocBecomesAResourceErrorNamingTheStage) {
     EXPECT_NE(msg.find("largest parametric images in the input: tet "), std::string::npos) << msg;
     EXPECT_NE(msg.find("--max-memory"), std::string::npos) << msg;
 }
+
+TEST(MemoryBudget, VolumeLimitNamesTheLargestImagesToo) {
+    ParametrizedTetMesh pm;
+    if (!sphereWithBadParameter(1e8, pm)) GTEST_SKIP() << "../shared/data/sphere.hexex not present";
+    HexMesh hm;
+    try {
+        extractHexMesh(pm, hm);
+        FAIL() << "no refusal";
+    } catch (const InputError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("(ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
+                           "parametric images: tet 10 ("),
+                  std::string::npos)
+            << msg;
+    }
+}
