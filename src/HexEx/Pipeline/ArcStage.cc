@@ -1,0 +1,266 @@
+#include "ArcStage.hh"
+
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <unordered_map>
+
+namespace HexEx {
+
+namespace {
+
+/// A patch whose signed parametric area differs from 1 by more than this is incomplete.
+constexpr double kAreaTolerance = 1e-9;
+
+/// Local cube coordinates of the 8 hex corners (VTK order).
+constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+
+int cornerAt(const int c[3]) {
+    for (int k = 0; k < 8; ++k)
+        if (kCorner[k][0] == c[0] && kCorner[k][1] == c[1] && kCorner[k][2] == c[2]) return k;
+    return -1;
+}
+
+/// The corner reached from corner @p c along local direction @p d (-1 outside the cube).
+int cornerAlong(int c, AxisDir d) {
+    int x[3] = {kCorner[c][0], kCorner[c][1], kCorner[c][2]};
+    x[dirAxis(d)] += dirSign(d);
+    return cornerAt(x);
+}
+
+/// Local direction from corner @p a to the adjacent corner @p b.
+AxisDir localDir(int a, int b) {
+    for (int k = 0; k < 3; ++k)
+        if (kCorner[a][k] != kCorner[b][k]) return makeDir(k, kCorner[b][k] - kCorner[a][k]);
+    return 0;
+}
+
+/// Local direction into the cube along axis @p k at corner @p c.
+AxisDir inward(int c, int k) { return makeDir(k, kCorner[c][k] == 0 ? 1 : -1); }
+
+/// Where walks start in one hex: from the darts of an explicit hex, or from the one tet of
+/// an implicit cell.
+class HexStarts {
+public:
+    HexStarts(const ArcInput& in, std::size_t h) {
+        const std::size_t nExplicit = in.hex_darts ? in.hex_darts->size() : 0;
+        if (h < nExplicit) {
+            explicit_ = true;
+            std::fill(&table_[0][0][0], &table_[0][0][0] + 8 * 6 * 6, -1);
+            // Local (corner, frame) of every dart of the cell, by a walk over alpha_0..alpha_2
+            // from the hex's dart at corner 0 with frame (+x, +y, +z).
+            struct State {
+                int dart, corner;
+                std::array<AxisDir, 3> d;
+            };
+            const auto& L = in.map->links();
+            std::vector<State> todo{{(*in.hex_darts)[h], 0, {makeDir(0, 1), makeDir(1, 1), makeDir(2, 1)}}};
+            std::vector<int> seen{todo[0].dart};
+            for (std::size_t k = 0; k < todo.size() && k < 48; ++k) {
+                const State s = todo[k];
+                int& slot = table_[s.corner][s.d[0]][s.d[1]];
+                if (slot < 0) slot = s.dart;
+                for (int i = 0; i < 3; ++i) {
+                    State n = s;
+                    n.dart = L[static_cast<std::size_t>(s.dart)][i];
+                    if (n.dart < 0 || std::find(seen.begin(), seen.end(), n.dart) != seen.end()) continue;
+                    if (i == 0) {
+                        n.corner = cornerAlong(s.corner, s.d[0]);
+                        if (n.corner < 0) continue;
+                        n.d[0] = dirNeg(s.d[0]);
+                    } else {
+                        std::swap(n.d[i - 1], n.d[i]);
+                    }
+                    seen.push_back(n.dart);
+                    todo.push_back(n);
+                }
+            }
+            in_ = &in;
+            return;
+        }
+        // Implicit cell: all corners are occurrences in one tet, whose chart gives the frame.
+        const auto& cell = in.implicit->cells[h - nExplicit];
+        for (int c = 0; c < 8; ++c) occurrence(in, cell[static_cast<std::size_t>(c)], tet_, z_[c]);
+        for (int k = 0; k < 3; ++k) {
+            const Vec3i step = z_[k == 0 ? 1 : k == 1 ? 3 : 4] - z_[0];
+            for (int a = 0; a < 3; ++a)
+                if (step[a] != 0) axis_[k] = makeDir(a, step[a]);
+        }
+    }
+
+    /// The start at corner @p c with frame (d0, d1, d2) (local directions); tet -1 if the hex
+    /// has no such dart.
+    ArcStart at(int c, AxisDir d0, AxisDir d1, AxisDir d2) const {
+        ArcStart s;
+        if (explicit_) {
+            const int md = table_[c][d0][d1];
+            if (md < 0) return s;
+            const Dart& D = in_->darts->darts[static_cast<std::size_t>((*in_->map_dart_origin)[static_cast<std::size_t>(md)])];
+            s.tet = D.tet;
+            s.z = D.z;
+            s.d = D.d;
+            return s;
+        }
+        auto img = [&](AxisDir d) { return dirSign(d) > 0 ? axis_[dirAxis(d)] : dirNeg(axis_[dirAxis(d)]); };
+        s.tet = tet_;
+        s.z = z_[c];
+        s.d = {img(d0), img(d1), img(d2)};
+        return s;
+    }
+
+private:
+    /// Tet and grid point of an occurrence id (the dense index holding it).
+    static void occurrence(const ArcInput& in, long occ, int& tet, Vec3i& z) {
+        const auto& dense = in.darts->dense;
+        auto it = std::upper_bound(dense.begin(), dense.end(), occ,
+                                   [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; });
+        const DartSet::DenseIndex& di = *(it - 1);
+        long l = occ - di.occ_base;
+        z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
+        l /= di.dims[2];
+        z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
+        z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
+        tet = di.tet;
+    }
+
+    bool explicit_ = false;
+    const ArcInput* in_ = nullptr;
+    int table_[8][6][6];
+    int tet_ = -1;
+    Vec3i z_[8];
+    AxisDir axis_[3] = {0, 2, 4};
+};
+
+/// Results of one chunk of hexes, in order.
+struct ChunkResult {
+    std::vector<std::size_t> arc_size;  ///< points per owned edge (0 = failed)
+    std::vector<Vec3d> arc_points;
+    std::vector<std::size_t> patch_size;  ///< triangles per owned face (0 = failed)
+    std::vector<std::array<int, 3>> triangles;  ///< indices local to the chunk's points
+    std::vector<Vec3d> patch_points;
+};
+
+} // namespace
+
+std::vector<int> mapDartOrigins(const std::vector<int>& new_index, int n_alive) {
+    std::vector<int> origin(static_cast<std::size_t>(n_alive), -1);
+    for (std::size_t d = 0; d < new_index.size(); ++d)
+        if (new_index[d] >= 0) origin[static_cast<std::size_t>(new_index[d])] = static_cast<int>(d);
+    return origin;
+}
+
+HexArcs arcStage(const ArcInput& in) {
+    HexArcs out;
+    const auto& hexes = in.hexes->hexes;
+    const std::size_t nh = hexes.size();
+    out.hex_edges.resize(nh);
+    out.hex_faces.resize(nh);
+    out.hex_face_sign.resize(nh);
+    // Edge and face ids by first appearance; the first hex that has one traces it.
+    std::vector<std::pair<int, int>> edgeOwner, faceOwner;  // (hex, local index)
+    {
+        std::unordered_map<std::uint64_t, int> edgeId;
+        std::map<std::array<int, 4>, int> faceId;
+        edgeId.reserve(3 * nh + 16);
+        for (std::size_t h = 0; h < nh; ++h) {
+            const auto& v = hexes[h];
+            for (int k = 0; k < 12; ++k) {
+                const int a = v[static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = v[static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
+                const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, b))) << 32) |
+                                          static_cast<std::uint32_t>(std::max(a, b));
+                auto it = edgeId.emplace(key, static_cast<int>(out.edges.size()));
+                if (it.second) {
+                    out.edges.push_back({a, b});
+                    edgeOwner.emplace_back(static_cast<int>(h), k);
+                }
+                out.hex_edges[h][static_cast<std::size_t>(k)] = it.first->second;
+            }
+            for (int k = 0; k < 6; ++k) {
+                std::array<int, 4> loop, sorted;
+                for (int q = 0; q < 4; ++q) loop[static_cast<std::size_t>(q)] = v[static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
+                sorted = loop;
+                std::sort(sorted.begin(), sorted.end());
+                auto it = faceId.emplace(sorted, static_cast<int>(out.faces.size()));
+                if (it.second) {
+                    out.faces.push_back(loop);
+                    faceOwner.emplace_back(static_cast<int>(h), k);
+                }
+                out.hex_faces[h][static_cast<std::size_t>(k)] = it.first->second;
+                out.hex_face_sign[h][static_cast<std::size_t>(k)] = it.second ? 1 : -1;
+            }
+        }
+    }
+
+    // Trace in parallel chunks of hexes; the edges and faces a chunk owns are consecutive ids.
+    const int chunks = std::max(1, std::min(in.threads, static_cast<int>(nh / 64) + 1));
+    std::vector<ChunkResult> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(nh, chunks, [&](int part, std::size_t hb, std::size_t he) {
+        ChunkResult& R = parts[static_cast<std::size_t>(part)];
+        const std::size_t e0 = std::lower_bound(edgeOwner.begin(), edgeOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - edgeOwner.begin();
+        const std::size_t f0 = std::lower_bound(faceOwner.begin(), faceOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - faceOwner.begin();
+        std::size_t e = e0, f = f0;
+        for (std::size_t h = hb; h < he; ++h) {
+            if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
+                (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
+                continue;
+            const HexStarts starts(in, h);
+            for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
+                const int k = edgeOwner[e].second;
+                const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
+                const AxisDir d0 = localDir(ca, cb);
+                const int a1 = (dirAxis(d0) + 1) % 3, a2 = (dirAxis(d0) + 2) % 3;
+                ArcStart s = starts.at(ca, d0, inward(ca, a1), inward(ca, a2));
+                if (s.tet < 0) s = starts.at(ca, d0, inward(ca, a2), inward(ca, a1));
+                const std::size_t before = R.arc_points.size();
+                if (s.tet >= 0) traceEdgeArc(*in.mesh, *in.transitions, *in.tets, s, R.arc_points);
+                R.arc_size.push_back(R.arc_points.size() - before);
+            }
+            for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
+                const int k = faceOwner[f].second;
+                const int* q = HexArcs::kHexFaces[k];
+                const AxisDir d0 = localDir(q[0], q[1]), d1 = localDir(q[0], q[3]);
+                const int a2 = 3 - dirAxis(d0) - dirAxis(d1);
+                const ArcStart s = starts.at(q[0], d0, d1, inward(q[0], a2));
+                const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
+                double area = 0;
+                bool ok = s.tet >= 0;
+                if (ok) {
+                    std::vector<std::array<int, 3>> tris;
+                    const int base = static_cast<int>(pointsBefore);
+                    std::vector<Vec3d> pts;
+                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, s, pts, tris, area) &&
+                         std::abs(area - 1) <= kAreaTolerance;
+                    if (ok) {
+                        R.patch_points.insert(R.patch_points.end(), pts.begin(), pts.end());
+                        for (auto t : tris) R.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+                    }
+                }
+                R.patch_size.push_back(R.triangles.size() - trisBefore);
+            }
+        }
+    });
+
+    // Concatenate in chunk order.
+    out.arc_offset.assign(1, 0);
+    out.patch_offset.assign(1, 0);
+    for (const ChunkResult& R : parts) {
+        for (std::size_t k = 0; k < R.arc_size.size(); ++k) {
+            if (R.arc_size[k] == 0) out.failed_edges.push_back(static_cast<int>(out.arc_offset.size() - 1));
+            out.arc_offset.push_back(out.arc_offset.back() + R.arc_size[k]);
+        }
+        out.arc_points.insert(out.arc_points.end(), R.arc_points.begin(), R.arc_points.end());
+        const int base = static_cast<int>(out.patch_points.size());
+        for (std::size_t k = 0; k < R.patch_size.size(); ++k) {
+            if (R.patch_size[k] == 0) out.failed_faces.push_back(static_cast<int>(out.patch_offset.size() - 1));
+            out.patch_offset.push_back(out.patch_offset.back() + R.patch_size[k]);
+        }
+        for (auto t : R.triangles) out.patch_triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+        out.patch_points.insert(out.patch_points.end(), R.patch_points.begin(), R.patch_points.end());
+    }
+    return out;
+}
+
+} // namespace HexEx
