@@ -252,6 +252,25 @@ TEST(Arcs, DefectiveMapsReportFailuresAndNeverCrash) {
     EXPECT_GT(flippedSeen, 0);  // the perturbation did produce folds
 }
 
+TEST(Arcs, ExtremeFoldsListTheFacesWithoutCompletePatch) {
+    // Amplitude 3 on a valence-3 cylinder: the hex mesh is still valid, but some faces'
+    // preimages fall apart into pieces no corner dart reaches; they must be reported.
+    ParametrizedTetMesh pm = generateCylinder(3, 3, 2, 3, 2);
+    perturbParameters(pm, 3.0, 1);
+    const Extracted e = extractWithArcs(pm);
+    ASSERT_TRUE(e.rep.valid_all_hex);
+    ASSERT_GT(e.rep.arcs.failed_faces, 0);
+    EXPECT_EQ(e.rep.arcs.failed_face_ids, e.arcs.failed_faces);  // fewer than kMaxListed here
+    const std::string w = std::to_string(e.rep.arcs.failed_faces) + " of " + std::to_string(e.arcs.faces.size()) + " hex faces have no complete patch";
+    bool found = false;
+    for (const auto& s : e.rep.warnings) found = found || s.find(w) != std::string::npos;
+    EXPECT_TRUE(found);
+    // Every other face's patch has signed parametric area 1, so in 3D it is non-empty.
+    for (std::size_t f = 0; f < e.arcs.faces.size(); ++f)
+        if (!std::binary_search(e.arcs.failed_faces.begin(), e.arcs.failed_faces.end(), static_cast<int>(f)))
+            EXPECT_GT(patchArea(e.arcs, f), 0);
+}
+
 TEST(Arcs, OffByDefaultAndSameMeshWhenOn) {
     ParametrizedTetMesh pm = generateCylinder(5, 2, 2, 2, 1);
     pm.mesh.build_adjacency();

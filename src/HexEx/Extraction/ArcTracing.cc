@@ -253,15 +253,27 @@ bool traceEdgeArc(const TetMesh& mesh, const Transitions& tr, const std::vector<
     return false;
 }
 
-bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const ArcStart& start,
-                    std::vector<Vec3d>& points, std::vector<std::array<int, 3>>& triangles, double& signed_area) {
+bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
+                    const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
+                    std::vector<std::array<int, 3>>& triangles, double& signed_area) {
     signed_area = 0;
-    if (start.tet < 0 || static_cast<std::size_t>(start.tet) >= tets.size()) return false;
+    // A visited (tet, square) is keyed by the square's smallest corner, its two axes and the
+    // perturbation direction, so that starts at different corners of one square agree.
     using Key = std::array<int, 7>;
-    auto key = [](int t, const Chart& c) { return Key{t, c.z[0], c.z[1], c.z[2], c.d[0], c.d[1], c.d[2]}; };
+    auto key = [](int t, const Chart& c) {
+        Vec3i lo = c.z;
+        for (int k = 0; k < 2; ++k)
+            if (dirSign(c.d[static_cast<std::size_t>(k)]) < 0) --lo[dirAxis(c.d[static_cast<std::size_t>(k)])];
+        const int a0 = dirAxis(c.d[0]), a1 = dirAxis(c.d[1]);
+        return Key{t, lo[0], lo[1], lo[2], std::min(a0, a1), std::max(a0, a1), c.d[2]};
+    };
     std::set<Key> seen;
-    std::vector<std::pair<int, Chart>> queue{{start.tet, Chart{start.z, start.d}}};
-    seen.insert(key(start.tet, queue[0].second));
+    std::vector<std::pair<int, Chart>> queue;
+    for (const ArcStart& st : starts) {
+        if (st.tet < 0 || static_cast<std::size_t>(st.tet) >= tets.size()) continue;
+        const Chart c{st.z, st.d};
+        if (seen.insert(key(st.tet, c)).second) queue.emplace_back(st.tet, c);
+    }
     for (std::size_t head = 0; head < queue.size(); ++head) {
         if (queue.size() > kMaxPatchTets) return false;
         const int t = queue[head].first;

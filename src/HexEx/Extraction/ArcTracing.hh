@@ -43,7 +43,13 @@ bool traceEdgeArc(const TetMesh& mesh, const Transitions& tr, const std::vector<
 /// Appends points and triangles (indices into @p points); @p signed_area receives the sum
 /// of the pieces' parametric areas, each with its tet's orientation sign (1 for a complete
 /// patch of a valid map). Returns false if the flood hit its size limit.
-bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const ArcStart& start,
-                    std::vector<Vec3d>& points, std::vector<std::array<int, 3>>& triangles, double& signed_area);
+///
+/// The flood starts from every entry of @p starts (starts at different corners of the same
+/// square, with d[0] x d[1] the same normal, share the visited tets): under a folded map the
+/// preimage of the square may fall into pieces that are only joined outside the square, and
+/// a start on a fold's closed "bubble" alone reaches a piece of zero signed area.
+bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
+                    const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
+                    std::vector<std::array<int, 3>>& triangles, double& signed_area);
 
 } // namespace HexEx

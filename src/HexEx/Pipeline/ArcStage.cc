@@ -221,22 +221,30 @@ HexArcs arcStage(const ArcInput& in) {
             for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
                 const int k = faceOwner[f].second;
                 const int* q = HexArcs::kHexFaces[k];
-                const AxisDir d0 = localDir(q[0], q[1]), d1 = localDir(q[0], q[3]);
-                const int a2 = 3 - dirAxis(d0) - dirAxis(d1);
-                const ArcStart s = starts.at(q[0], d0, d1, inward(q[0], a2));
-                const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
+                auto cornerStart = [&](int i) {  // corner q[i], d0 to q[i+1], d1 to q[i-1]
+                    const int c = q[i], n = q[(i + 1) % 4], p = q[(i + 3) % 4];
+                    const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
+                    return starts.at(c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1)));
+                };
+                std::vector<ArcStart> from{cornerStart(0)};
+                std::vector<Vec3d> pts;
+                std::vector<std::array<int, 3>> tris;
                 double area = 0;
-                bool ok = s.tet >= 0;
-                if (ok) {
-                    std::vector<std::array<int, 3>> tris;
-                    const int base = static_cast<int>(pointsBefore);
-                    std::vector<Vec3d> pts;
-                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, s, pts, tris, area) &&
+                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, pts, tris, area) &&
+                          std::abs(area - 1) <= kAreaTolerance;
+                if (!ok) {
+                    // A fold may have cut the preimage into pieces: flood from all four corners.
+                    for (int i = 1; i < 4; ++i) from.push_back(cornerStart(i));
+                    pts.clear();
+                    tris.clear();
+                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, pts, tris, area) &&
                          std::abs(area - 1) <= kAreaTolerance;
-                    if (ok) {
-                        R.patch_points.insert(R.patch_points.end(), pts.begin(), pts.end());
-                        for (auto t : tris) R.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-                    }
+                }
+                const std::size_t trisBefore = R.triangles.size();
+                if (ok) {
+                    const int base = static_cast<int>(R.patch_points.size());
+                    R.patch_points.insert(R.patch_points.end(), pts.begin(), pts.end());
+                    for (auto t : tris) R.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
                 }
                 R.patch_size.push_back(R.triangles.size() - trisBefore);
             }
