@@ -5,7 +5,7 @@
 /// Usage:
 /// ```
 /// extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]
-///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--list]
+///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--arcs] [--list]
 /// ```
 /// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, read_cube20.
 /// `--quick` runs small versions of every case as a smoke test.
@@ -83,6 +83,7 @@ struct Options {
     std::string data_dir = std::string(HEXEX_SOURCE_DIR) + "/../shared/data";  ///< real inputs
     bool quick = false;              ///< small inputs only
     double timeout_s = 0;            ///< per-measurement time limit, 0 for none
+    bool arcs = false;               ///< also compute edge arcs and face patches (ExtractionOptions::arcs)
 };
 
 /// The published numbers a case is compared with (NaN / empty where the table has none).
@@ -257,8 +258,10 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     r.num["input_rss_mb"] = procStatusKb("VmRSS") / 1024.0;
 
     HexEx::HexMesh out;
+    HexEx::HexArcs arcs;
     HexEx::ExtractionOptions eo;
     eo.threads = threads;
+    if (opt.arcs) eo.arcs = &arcs;
     t0 = Clock::now();
     const HexEx::ExtractionReport rep = HexEx::extractHexMesh(pm, out, eo);
     const double total = secondsSince(t0);
@@ -279,6 +282,12 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     r.num["connect_s"] = rep.timings_s.connect;
     r.num["postprocess_s"] = rep.timings_s.postprocess;
     r.num["assemble_s"] = rep.timings_s.assemble;
+    if (opt.arcs) {
+        r.num["arcs_s"] = rep.timings_s.arcs;
+        r.num["arc_edges"] = static_cast<double>(rep.arcs.edges);
+        r.num["failed_arcs"] = static_cast<double>(rep.arcs.failed_edges);
+        r.num["failed_patches"] = static_cast<double>(rep.arcs.failed_faces);
+    }
     r.num["total_s"] = total;
     r.num["tets_per_s"] = total > 0 ? static_cast<double>(pm.mesh.n_cells()) / total : 0;
     r.num["hexes_per_s"] = total > 0 ? static_cast<double>(out.hexes.size()) / total : 0;
@@ -604,13 +613,14 @@ bool writeJson(const Options& opt, const std::vector<Result>& results, const std
 
 const char* const kUsage =
     "usage: extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]\n"
-    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--list]\n"
+    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--arcs] [--list]\n"
     "  --case NAME      run only this case (repeatable; default: all, see --list)\n"
     "  --threads LIST   comma-separated thread counts, 0 = all hardware threads (default 1,2)\n"
     "  --json FILE      also write the results and the reference numbers as JSON\n"
     "  --data-dir DIR   directory of the real inputs (default <repo>/../shared/data)\n"
     "  --quick          small inputs: a smoke test that runs in seconds\n"
     "  --timeout S      kill a measurement after S seconds (default: no limit)\n"
+    "  --arcs           also compute the edge arcs and face patches (ExtractionOptions::arcs)\n"
     "  --list           list the cases and exit\n";
 
 /// Parses "1,2,4" into thread counts; throws std::invalid_argument.
@@ -651,6 +661,8 @@ int main(int argc, char** argv) {
                 opt.data_dir = value();
             } else if (a == "--quick") {
                 opt.quick = true;
+            } else if (a == "--arcs") {
+                opt.arcs = true;
             } else if (a == "--timeout") {
                 const std::string v = value();
                 char* end = nullptr;

@@ -266,9 +266,11 @@ TEST(Arcs, ExtremeFoldsListTheFacesWithoutCompletePatch) {
     for (const auto& s : e.rep.warnings) found = found || s.find(w) != std::string::npos;
     EXPECT_TRUE(found);
     // Every other face's patch has signed parametric area 1, so in 3D it is non-empty.
-    for (std::size_t f = 0; f < e.arcs.faces.size(); ++f)
-        if (!std::binary_search(e.arcs.failed_faces.begin(), e.arcs.failed_faces.end(), static_cast<int>(f)))
+    for (std::size_t f = 0; f < e.arcs.faces.size(); ++f) {
+        if (!std::binary_search(e.arcs.failed_faces.begin(), e.arcs.failed_faces.end(), static_cast<int>(f))) {
             EXPECT_GT(patchArea(e.arcs, f), 0);
+        }
+    }
 }
 
 TEST(Arcs, OffByDefaultAndSameMeshWhenOn) {

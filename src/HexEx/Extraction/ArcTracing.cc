@@ -112,16 +112,37 @@ Chart transformed(const GridTransform& g, const Chart& c) {
 /// A vertex of a clipped polygon: square coordinates (a along d0, b along d1) and
 /// barycentric coordinates in the tet; `side` labels the side to the next vertex (local tet
 /// face, or -1 for the square's border).
+/// Trivial (no member initializers): polygons of them live on the stack in the hot loop and
+/// are filled field by field.
 struct PolyVertex {
-    double a = 0, b = 0;
-    double lam[4] = {0, 0, 0, 0};
-    int side = -1;
+    double a, b;
+    double lam[4];
+    int side;
+};
+
+/// A convex polygon of at most kMaxVertices vertices, on the stack (the section of a tet has
+/// at most 4, and each of the 4 clips adds at most one).
+class Polygon {
+public:
+    static constexpr std::size_t kMaxVertices = 8;
+    std::size_t size() const { return n_; }
+    bool empty() const { return n_ == 0; }
+    PolyVertex& operator[](std::size_t k) { return v_[k]; }
+    const PolyVertex& operator[](std::size_t k) const { return v_[k]; }
+    void push_back(const PolyVertex& x) {
+        if (n_ < kMaxVertices) v_[n_++] = x;
+    }
+    void clear() { n_ = 0; }
+
+private:
+    PolyVertex v_[kMaxVertices];
+    std::size_t n_ = 0;
 };
 
 /// The section of tet T by the square's plane moved by e along d[2] (vertices on the plane
 /// count as behind it), as a counter-clockwise polygon in square coordinates. Empty if the
 /// tet lies on one side.
-std::vector<PolyVertex> planeSection(const TetSoS& T, const Chart& c) {
+Polygon planeSection(const TetSoS& T, const Chart& c) {
     const int wa = dirAxis(c.d[2]), aa = dirAxis(c.d[0]), ba = dirAxis(c.d[1]);
     const double ws = dirSign(c.d[2]), as = dirSign(c.d[0]), bs = dirSign(c.d[1]);
     const double w0 = c.z[wa];
@@ -130,12 +151,14 @@ std::vector<PolyVertex> planeSection(const TetSoS& T, const Chart& c) {
         if (ws * (T.p[j][wa] - w0) > 0) above[na++] = j;
         else below[nb++] = j;
     }
-    std::vector<PolyVertex> poly;
+    Polygon poly;
     if (na == 0 || nb == 0) return poly;
     auto cut = [&](int p, int q) {  // p above, q behind: the point where edge pq meets the plane
         const double wp = T.p[p][wa], wq = T.p[q][wa];
         const double s = wq == w0 ? 0.0 : (w0 - wq) / (wp - wq);
         PolyVertex v;
+        v.side = -1;
+        v.lam[0] = v.lam[1] = v.lam[2] = v.lam[3] = 0;
         const Vec3d x = T.p[q] + (T.p[p] - T.p[q]) * s;
         v.a = as * (x[aa] - c.z[aa]);
         v.b = bs * (x[ba] - c.z[ba]);
@@ -160,7 +183,7 @@ std::vector<PolyVertex> planeSection(const TetSoS& T, const Chart& c) {
         v[1].side = q1;
         v[2].side = p1;
         v[3].side = q2;
-        poly.assign(v, v + 4);
+        for (const PolyVertex& x : v) poly.push_back(x);
     }
     double area2 = 0;
     for (std::size_t k = 0; k < poly.size(); ++k) {
@@ -170,22 +193,25 @@ std::vector<PolyVertex> planeSection(const TetSoS& T, const Chart& c) {
     if (area2 < 0) {
         // Reverse: the side from new vertex k to k+1 is the old side from n-2-k to n-1-k.
         const std::size_t n = poly.size();
-        std::vector<PolyVertex> r(n);
+        Polygon r;
         for (std::size_t k = 0; k < n; ++k) {
-            r[k] = poly[n - 1 - k];
+            r.push_back(poly[n - 1 - k]);
             r[k].side = poly[(2 * n - 2 - k) % n].side;
         }
-        poly.swap(r);
+        poly = r;
     }
     return poly;
 }
 
 /// Clips @p poly by the half plane sign * (coordinate - bound) <= 0 (coordinate a or b).
-void clip(std::vector<PolyVertex>& poly, bool useA, double bound, double sign) {
+void clip(Polygon& poly, bool useA, double bound, double sign) {
     if (poly.empty()) return;
     auto h = [&](const PolyVertex& v) { return sign * ((useA ? v.a : v.b) - bound); };  // inside if <= 0
-    std::vector<PolyVertex> out;
     const std::size_t n = poly.size();
+    bool allInside = true;
+    for (std::size_t k = 0; k < n && allInside; ++k) allInside = h(poly[k]) <= 0;
+    if (allInside) return;  // the common case: nothing to cut
+    Polygon out;
     for (std::size_t k = 0; k < n; ++k) {
         const PolyVertex &cur = poly[k], &nxt = poly[(k + 1) % n];
         const double hc = h(cur), hn = h(nxt);
@@ -202,7 +228,7 @@ void clip(std::vector<PolyVertex>& poly, bool useA, double bound, double sign) {
             out.push_back(x);
         }
     }
-    poly.swap(out);
+    poly = out;
 }
 
 bool strictlyInside(double a, double b) {
@@ -267,19 +293,35 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
         const int a0 = dirAxis(c.d[0]), a1 = dirAxis(c.d[1]);
         return Key{t, lo[0], lo[1], lo[2], std::min(a0, a1), std::max(a0, a1), c.d[2]};
     };
-    std::set<Key> seen;
-    std::vector<std::pair<int, Chart>> queue;
+    // Visited squares: a short list searched linearly (floods are small), a set beyond.
+    std::vector<Key> few;
+    std::set<Key> many;
+    auto firstVisit = [&](const Key& k) {
+        if (many.empty()) {
+            for (const Key& x : few)  // the tet differs almost always: compare it first
+                if (x[0] == k[0] && x == k) return false;
+            few.push_back(k);
+            if (few.size() > 64) many.insert(few.begin(), few.end());
+            return true;
+        }
+        return many.insert(k).second;
+    };
+    struct Item {
+        int tet, entry;  ///< tet and the local face it was entered through (-1 at a start)
+        Chart c;
+    };
+    std::vector<Item> queue;
     for (const ArcStart& st : starts) {
         if (st.tet < 0 || static_cast<std::size_t>(st.tet) >= tets.size()) continue;
         const Chart c{st.z, st.d};
-        if (seen.insert(key(st.tet, c)).second) queue.emplace_back(st.tet, c);
+        if (firstVisit(key(st.tet, c))) queue.push_back({st.tet, -1, c});
     }
     for (std::size_t head = 0; head < queue.size(); ++head) {
         if (queue.size() > kMaxPatchTets) return false;
-        const int t = queue[head].first;
-        const Chart c = queue[head].second;
+        const int t = queue[head].tet, entry = queue[head].entry;
+        const Chart c = queue[head].c;
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
-        std::vector<PolyVertex> poly = planeSection(T, c);
+        Polygon poly = planeSection(T, c);
         clip(poly, true, 0, -1);
         clip(poly, true, 1, 1);
         clip(poly, false, 0, -1);
@@ -289,7 +331,13 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
         // Triangles (a fan; zero-area ones left out) and the signed parametric area.
         if (n >= 3 && T.vol != 0) {
             const int base = static_cast<int>(points.size());
-            for (const PolyVertex& v : poly) points.push_back(mapBack(mesh, t, v.lam));
+            const auto& cv = mesh.cell_vertices(CellHandle(t));
+            const Vec3d X[4] = {mesh.position(cv[0]), mesh.position(cv[1]), mesh.position(cv[2]), mesh.position(cv[3])};
+            for (std::size_t k = 0; k < n; ++k) {
+                // The section's barycentric coordinates are convex combinations already (sum 1).
+                const double* l = poly[k].lam;
+                points.push_back(X[0] * l[0] + X[1] * l[1] + X[2] * l[2] + X[3] * l[3]);
+            }
             for (std::size_t k = 1; k + 1 < n; ++k) {
                 const PolyVertex &p0 = poly[0], &p1 = poly[k], &p2 = poly[k + 1];
                 const double area = 0.5 * ((p1.a - p0.a) * (p2.b - p0.b) - (p2.a - p0.a) * (p1.b - p0.b));
@@ -301,14 +349,14 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
         // Go on across every tet face that cuts the square along a side inside it.
         for (std::size_t k = 0; k < n; ++k) {
             const PolyVertex &u = poly[k], &w = poly[(k + 1) % n];
-            if (u.side < 0 || (u.a == w.a && u.b == w.b)) continue;
+            if (u.side < 0 || u.side == entry || (u.a == w.a && u.b == w.b)) continue;
             if (!strictlyInside(0.5 * (u.a + w.a), 0.5 * (u.b + w.b))) continue;
             const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), u.side);
             const HalfFaceHandle opp = mesh.opposite_halfface(hf);
             if (!opp.is_valid()) continue;
             const Chart next = tr.halfface.is_identity(hf.uidx()) ? c : transformed(tr.halfface[hf.uidx()], c);
             const int nt = TetMesh::cell(opp).idx();
-            if (seen.insert(key(nt, next)).second) queue.emplace_back(nt, next);
+            if (firstVisit(key(nt, next))) queue.push_back({nt, TetMesh::opposite_corner(opp), next});
         }
     }
     return true;

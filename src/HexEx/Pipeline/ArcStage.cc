@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <unordered_map>
 
 namespace HexEx {
 
@@ -162,38 +160,57 @@ HexArcs arcStage(const ArcInput& in) {
     // Edge and face ids by first appearance; the first hex that has one traces it.
     std::vector<std::pair<int, int>> edgeOwner, faceOwner;  // (hex, local index)
     {
-        std::unordered_map<std::uint64_t, int> edgeId;
-        std::map<std::array<int, 4>, int> faceId;
-        edgeId.reserve(3 * nh + 16);
-        for (std::size_t h = 0; h < nh; ++h) {
-            const auto& v = hexes[h];
+        // Occurrences (hex * 12 + local edge) sorted by their vertex pair, then numbered.
+        struct Occ {
+            std::uint64_t k0, k1;  ///< sorted vertex ids, packed
+            int o;                 ///< occurrence: hex * n + local index
+            bool operator<(const Occ& x) const { return k0 != x.k0 ? k0 < x.k0 : k1 != x.k1 ? k1 < x.k1 : o < x.o; }
+        };
+        auto pack = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
+        auto number = [&](std::vector<Occ>& occ, int per, std::vector<std::pair<int, int>>& owner, auto&& setId) {
+            std::sort(occ.begin(), occ.end());
+            std::vector<std::pair<int, std::size_t>> firsts;  // (first occurrence, start of its group)
+            for (std::size_t i = 0; i < occ.size(); ++i)
+                if (i == 0 || occ[i].k0 != occ[i - 1].k0 || occ[i].k1 != occ[i - 1].k1) firsts.emplace_back(occ[i].o, i);
+            std::sort(firsts.begin(), firsts.end());
+            owner.reserve(firsts.size());
+            for (std::size_t id = 0; id < firsts.size(); ++id) {
+                const int o0 = firsts[id].first;
+                owner.emplace_back(o0 / per, o0 % per);
+                for (std::size_t i = firsts[id].second;
+                     i < occ.size() && occ[i].k0 == occ[firsts[id].second].k0 && occ[i].k1 == occ[firsts[id].second].k1; ++i)
+                    setId(occ[i].o / per, occ[i].o % per, static_cast<int>(id), occ[i].o == o0);
+            }
+        };
+        std::vector<Occ> occ;
+        occ.reserve(12 * nh);
+        for (std::size_t h = 0; h < nh; ++h)
             for (int k = 0; k < 12; ++k) {
-                const int a = v[static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = v[static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
-                const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, b))) << 32) |
-                                          static_cast<std::uint32_t>(std::max(a, b));
-                auto it = edgeId.emplace(key, static_cast<int>(out.edges.size()));
-                if (it.second) {
-                    out.edges.push_back({a, b});
-                    edgeOwner.emplace_back(static_cast<int>(h), k);
-                }
-                out.hex_edges[h][static_cast<std::size_t>(k)] = it.first->second;
+                const int a = hexes[h][static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = hexes[h][static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
+                occ.push_back({pack(std::min(a, b), std::max(a, b)), 0, static_cast<int>(12 * h) + k});
             }
+        number(occ, 12, edgeOwner, [&](int h, int k, int id, bool) { out.hex_edges[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = id; });
+        out.edges.resize(edgeOwner.size());
+        for (std::size_t e = 0; e < edgeOwner.size(); ++e)
+            for (int q = 0; q < 2; ++q)
+                out.edges[e][static_cast<std::size_t>(q)] = hexes[static_cast<std::size_t>(edgeOwner[e].first)][static_cast<std::size_t>(HexArcs::kHexEdges[edgeOwner[e].second][q])];
+        occ.clear();
+        for (std::size_t h = 0; h < nh; ++h)
             for (int k = 0; k < 6; ++k) {
-                std::array<int, 4> loop, sorted;
-                for (int q = 0; q < 4; ++q) loop[static_cast<std::size_t>(q)] = v[static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
-                sorted = loop;
-                std::sort(sorted.begin(), sorted.end());
-                auto it = faceId.emplace(sorted, static_cast<int>(out.faces.size()));
-                if (it.second) {
-                    out.faces.push_back(loop);
-                    faceOwner.emplace_back(static_cast<int>(h), k);
-                }
-                out.hex_faces[h][static_cast<std::size_t>(k)] = it.first->second;
-                out.hex_face_sign[h][static_cast<std::size_t>(k)] = it.second ? 1 : -1;
+                std::array<int, 4> v;
+                for (int q = 0; q < 4; ++q) v[static_cast<std::size_t>(q)] = hexes[h][static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
+                std::sort(v.begin(), v.end());
+                occ.push_back({pack(v[0], v[1]), pack(v[2], v[3]), static_cast<int>(6 * h) + k});
             }
-        }
+        number(occ, 6, faceOwner, [&](int h, int k, int id, bool first) {
+            out.hex_faces[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = id;
+            out.hex_face_sign[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = first ? 1 : -1;
+        });
+        out.faces.resize(faceOwner.size());
+        for (std::size_t f = 0; f < faceOwner.size(); ++f)
+            for (int q = 0; q < 4; ++q)
+                out.faces[f][static_cast<std::size_t>(q)] = hexes[static_cast<std::size_t>(faceOwner[f].first)][static_cast<std::size_t>(HexArcs::kHexFaces[faceOwner[f].second][q])];
     }
-
     // Trace in parallel chunks of hexes; the edges and faces a chunk owns are consecutive ids.
     const int chunks = std::max(1, std::min(in.threads, static_cast<int>(nh / 64) + 1));
     std::vector<ChunkResult> parts(static_cast<std::size_t>(chunks));
@@ -202,6 +219,11 @@ HexArcs arcStage(const ArcInput& in) {
         const std::size_t e0 = std::lower_bound(edgeOwner.begin(), edgeOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - edgeOwner.begin();
         const std::size_t f0 = std::lower_bound(faceOwner.begin(), faceOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - faceOwner.begin();
         std::size_t e = e0, f = f0;
+        std::vector<ArcStart> from;  // reused per face
+        // Generous reservations (untouched pages cost nothing): no copies while growing.
+        R.patch_points.reserve(64 * 6 * (he - hb));
+        R.triangles.reserve(32 * 6 * (he - hb));
+        R.arc_points.reserve(8 * 12 * (he - hb));
         for (std::size_t h = hb; h < he; ++h) {
             if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
                 (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
@@ -226,32 +248,36 @@ HexArcs arcStage(const ArcInput& in) {
                     const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
                     return starts.at(c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1)));
                 };
-                std::vector<ArcStart> from{cornerStart(0)};
-                std::vector<Vec3d> pts;
-                std::vector<std::array<int, 3>> tris;
+                from.assign(1, cornerStart(0));
+                const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
                 double area = 0;
-                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, pts, tris, area) &&
+                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area) &&
                           std::abs(area - 1) <= kAreaTolerance;
                 if (!ok) {
                     // A fold may have cut the preimage into pieces: flood from all four corners.
                     for (int i = 1; i < 4; ++i) from.push_back(cornerStart(i));
-                    pts.clear();
-                    tris.clear();
-                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, pts, tris, area) &&
+                    R.patch_points.resize(pointsBefore);
+                    R.triangles.resize(trisBefore);
+                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area) &&
                          std::abs(area - 1) <= kAreaTolerance;
                 }
-                const std::size_t trisBefore = R.triangles.size();
-                if (ok) {
-                    const int base = static_cast<int>(R.patch_points.size());
-                    R.patch_points.insert(R.patch_points.end(), pts.begin(), pts.end());
-                    for (auto t : tris) R.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+                if (!ok) {
+                    R.patch_points.resize(pointsBefore);
+                    R.triangles.resize(trisBefore);
                 }
                 R.patch_size.push_back(R.triangles.size() - trisBefore);
             }
         }
     });
 
-    // Concatenate in chunk order.
+    // Concatenate in chunk order (a single chunk is moved).
+    if (parts.size() == 1) {
+        out.arc_points = std::move(parts[0].arc_points);
+        out.patch_points = std::move(parts[0].patch_points);
+        out.patch_triangles = std::move(parts[0].triangles);
+    }
+    out.arc_offset.reserve(out.edges.size() + 1);
+    out.patch_offset.reserve(out.faces.size() + 1);
     out.arc_offset.assign(1, 0);
     out.patch_offset.assign(1, 0);
     for (const ChunkResult& R : parts) {
@@ -259,12 +285,13 @@ HexArcs arcStage(const ArcInput& in) {
             if (R.arc_size[k] == 0) out.failed_edges.push_back(static_cast<int>(out.arc_offset.size() - 1));
             out.arc_offset.push_back(out.arc_offset.back() + R.arc_size[k]);
         }
-        out.arc_points.insert(out.arc_points.end(), R.arc_points.begin(), R.arc_points.end());
-        const int base = static_cast<int>(out.patch_points.size());
         for (std::size_t k = 0; k < R.patch_size.size(); ++k) {
             if (R.patch_size[k] == 0) out.failed_faces.push_back(static_cast<int>(out.patch_offset.size() - 1));
             out.patch_offset.push_back(out.patch_offset.back() + R.patch_size[k]);
         }
+        if (parts.size() == 1) continue;
+        out.arc_points.insert(out.arc_points.end(), R.arc_points.begin(), R.arc_points.end());
+        const int base = static_cast<int>(out.patch_points.size());
         for (auto t : R.triangles) out.patch_triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
         out.patch_points.insert(out.patch_points.end(), R.patch_points.begin(), R.patch_points.end());
     }
