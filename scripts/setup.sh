@@ -12,6 +12,7 @@ BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 BUILD_TYPE="${BUILD_TYPE:-Release}"
 
 PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev libgtest-dev
+          libpugixml-dev zlib1g-dev
           doxygen xz-utils python3 python3-numpy python3-meshio)
 
 missing_packages() {

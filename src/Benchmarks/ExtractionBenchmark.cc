@@ -7,7 +7,8 @@
 /// extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]
 ///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--arcs] [--list]
 /// ```
-/// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, read_cube20.
+/// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, read_cube20,
+/// write_cylinder6 (the cylinder6 extraction, then writeHexMesh() to .vtu in each encoding).
 /// `--quick` runs small versions of every case as a smoke test.
 ///
 /// Every measurement (one case at one thread count) runs in a child process made with
@@ -24,6 +25,7 @@
 #include <HexEx/HexEx.hh>
 #include <HexEx/Core/Parallel.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/IO/HexMeshWriters.hh>
 
 #include <poll.h>
 #include <signal.h>
@@ -122,6 +124,8 @@ const std::vector<CaseDef>& caseDefs() {
          "generateCube(8, 4) + perturbParameters(a=1, seed=1)", false, {}},
         {"read_cube20", "readHexExFile of generateCube(40, 20)", "readHexExFile of generateCube(10, 5)", true,
          {384000, 0, 10.0, 5.0, NAN, "", "31 MB .hexex; HexHex time is its reader"}},
+        {"write_cylinder6", "writeHexMesh(.vtu) of the cylinder6 output", "writeHexMesh(.vtu) of generateCylinder(6, 8, 8, 1, 1)",
+         false, {}},
     };
     return defs;
 }
@@ -148,6 +152,7 @@ const char* const kNumericFields[] = {
     "flipped_tets", "degenerate_tets", "valid_all_hex", "file_mb",
     "adjacency_s", "preprocess_s", "vertices_s", "darts_s", "connect_s", "postprocess_s", "assemble_s",
     "total_s", "read_s", "input_rss_mb", "peak_rss_mb", "tets_per_s", "hexes_per_s",
+    "write_binary_s", "write_compressed_s", "write_ascii_s", "binary_mb", "compressed_mb", "ascii_mb",
 };
 
 /// Replaces tabs and line breaks so that @p s fits in one field of a result line.
@@ -219,7 +224,7 @@ std::pair<int, int> cubeSize(const std::string& name, bool quick) {
 /// Builds the input of an extraction case (without timing); sets expected_hexes when known.
 HexEx::ParametrizedTetMesh buildInput(const CaseDef& def, const Options& opt, Result& r) {
     r.input = opt.quick ? def.quick : def.description;
-    if (def.name == "cylinder6") {
+    if (def.name == "cylinder6" || def.name == "write_cylinder6") {
         const int R = opt.quick ? 8 : 64;
         r.num["expected_hexes"] = 6.0 * R * R * R;
         return HexEx::generateCylinder(6, R, R, 1, 1);
@@ -291,6 +296,19 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     r.num["total_s"] = total;
     r.num["tets_per_s"] = total > 0 ? static_cast<double>(pm.mesh.n_cells()) / total : 0;
     r.num["hexes_per_s"] = total > 0 ? static_cast<double>(out.hexes.size()) / total : 0;
+    if (def.name != "write_cylinder6") return;
+    // Writing the output: each .vtu encoding into a temporary file (time includes the disk write).
+    const char* tmpDir = std::getenv("TMPDIR");
+    const std::string path = std::string(tmpDir && *tmpDir ? tmpDir : "/tmp") + "/hexex_bench_write_" +
+                             std::to_string(static_cast<long>(getpid())) + ".vtu";
+    for (const char* enc : {"binary", "compressed", "ascii"}) {
+        const auto w0 = Clock::now();
+        HexEx::writeHexMesh(path, out, HexEx::vtuEncodingFromName(enc));
+        r.num[std::string("write_") + enc + "_s"] = secondsSince(w0);
+        struct stat st;
+        if (::stat(path.c_str(), &st) == 0) r.num[std::string(enc) + "_mb"] = static_cast<double>(st.st_size) / 1e6;
+    }
+    std::remove(path.c_str());
 }
 
 /// Runs the read measurement of @p path (written beforehand) in the current (child) process.
@@ -528,6 +546,11 @@ void printTables(const Options& opt, const std::vector<Result>& results) {
                     fmtNum(r, "assemble_s", "%.3f").c_str(), fmtNum(r, "total_s", "%.3f").c_str(),
                     fmtNum(r, "peak_rss_mb", "%.0f").c_str(), fmtRate(r, "tets_per_s").c_str(),
                     fmtRate(r, "hexes_per_s").c_str());
+        if (r.name == "write_cylinder6")
+            std::printf("%-11s     (.vtu write: binary %s s / %s MB, compressed %s s / %s MB, ascii %s s / %s MB)\n", "",
+                        fmtNum(r, "write_binary_s", "%.3f").c_str(), fmtNum(r, "binary_mb", "%.0f").c_str(),
+                        fmtNum(r, "write_compressed_s", "%.3f").c_str(), fmtNum(r, "compressed_mb", "%.0f").c_str(),
+                        fmtNum(r, "write_ascii_s", "%.3f").c_str(), fmtNum(r, "ascii_mb", "%.0f").c_str());
         if (r.name == "read_cube20")
             std::printf("%-11s     (readHexExFile of a %s MB file, adjacency included; total = read time)\n", "",
                         fmtNum(r, "file_mb", "%.1f").c_str());

@@ -294,7 +294,7 @@ TEST(HexMeshReaders, MalformedInputsNameLineAndReason) {
     const std::string pts8 = "POINTS 8 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n";
     // Legacy VTK.
     expectReadError(std::string(kVtkHead) + pts8 + "CELLS 1 9\n8 0 1 2 3 4 5 6 99\nCELL_TYPES 1\n12\n",
-                    HexMeshFormat::Vtk, {"bad.file:15:", "point index 99 out of range"});
+                    HexMeshFormat::Vtk, {"bad.file:14:", "cell 0: point index 99 out of range"});
     expectReadError(std::string(kVtkHead) + pts8 + "CELLS 1 9\n8 0 1 2 3 4 5 6\n", HexMeshFormat::Vtk,
                     {"bad.file:", "end of file"});
     expectReadError(std::string(kVtkHead) + pts8 + "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n3\n",
@@ -306,7 +306,7 @@ TEST(HexMeshReaders, MalformedInputsNameLineAndReason) {
                     {"bad.file:5:", "larger than the file"});
     // VTU.
     expectReadError("<VTKFile type=\"UnstructuredGrid\">\n<UnstructuredGrid>\n</VTKFile>\n", HexMeshFormat::Vtu,
-                    {"bad.file:3:", "does not match"});
+                    {"bad.file:3:", "malformed XML", "mismatch"});
     expectReadError("<VTKFile type=\"PolyData\"></VTKFile>", HexMeshFormat::Vtu, {"bad.file:1:", "PolyData"});
     expectReadError("<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"1\" "
                     "NumberOfCells=\"1\">\n<Points><DataArray NumberOfComponents=\"3\" format=\"ascii\">0 0 0"
@@ -315,9 +315,9 @@ TEST(HexMeshReaders, MalformedInputsNameLineAndReason) {
                     "</Piece></UnstructuredGrid></VTKFile>",
                     HexMeshFormat::Vtu, {"bad.file:4:", "point index 5 out of range"});
     expectReadError("<VTKFile type=\"UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"1\" "
-                    "NumberOfCells=\"0\">\n<Points><DataArray NumberOfComponents=\"3\" format=\"binary\">AAAA"
+                    "NumberOfCells=\"0\">\n<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"binary\">AAAA"
                     "</DataArray></Points></Piece></UnstructuredGrid></VTKFile>",
-                    HexMeshFormat::Vtu, {"bad.file:2:", "only ascii"});
+                    HexMeshFormat::Vtu, {"bad.file:2:", "(binary): needs 4 bytes, at most 3 left"});
     // Medit.
     expectReadError("MeshVersionFormatted 2\nDimension 3\nVertices\n1\n0 0 0 0\nHexahedra\n1\n1 1 1 1 1 1 1 9 0\nEnd\n",
                     HexMeshFormat::Medit, {"bad.file:8:", "vertex index 9 out of range"});
@@ -326,11 +326,12 @@ TEST(HexMeshReaders, MalformedInputsNameLineAndReason) {
     // OVM.
     expectReadError("OVM ASCII\nVertices\n2\n0 0 0\n1 0 0\nEdges\n1\n0 2\n", HexMeshFormat::Ovm,
                     {"bad.file:8:", "out of range"});
-    expectReadError("OVM ASCII\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nEdges\n3\n0 1\n1 2\n2 0\nFaces\n1\n3 0 4 2\n",
-                    HexMeshFormat::Ovm, {"bad.file:14:", "not connected"});
+    expectReadError("OVM ASCII\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nEdges\n3\n0 1\n1 2\n2 0\nFaces\n1\n3 0 4 2\n"
+                    "Polyhedra\n1\n1 0\n",
+                    HexMeshFormat::Ovm, {"bad.file:14:", "not closed"});
     expectReadError("OVM ASCII\nVertices\n3\n0 0 0\n1 0 0\n0 1 0\nEdges\n3\n0 1\n1 2\n2 0\nFaces\n1\n3 0 2 4\n"
                     "Polyhedra\n1\n1 7\n",
-                    HexMeshFormat::Ovm, {"bad.file:17:", "halfface index"});
+                    HexMeshFormat::Ovm, {"bad.file:17:", "halfface 0 of polyhedron 0 7 out of range [0, 2)"});
 }
 
 TEST(HexMeshReaders, MissingFileNamesPath) {
@@ -387,9 +388,9 @@ TEST(HexMeshWriters, IndependentPythonVtuReader) {
         return out;
     };
     const std::string cubePath = tempPath("py_cube.vtu");
-    writeHexMesh(cubePath, extracted(generateCube(2, 3)));
+    writeHexMesh(cubePath, extracted(generateCube(2, 3)), VtuEncoding::Ascii);  // the script reads ASCII
     EXPECT_EQ(run(cubePath), "64 27 27 0\n");
     const std::string polyPath = tempPath("py_poly.vtu");
-    writeHexMesh(polyPath, hexWithPyramid());
+    writeHexMesh(polyPath, hexWithPyramid(), VtuEncoding::Ascii);
     EXPECT_EQ(run(polyPath), "9 2 1 1\n");
 }

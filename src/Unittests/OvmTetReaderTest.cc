@@ -138,7 +138,9 @@ void checkRoundTrip(const HexEx::ParametrizedTetMesh& ref, const std::string& te
     HexEx::ReadReport rr;
     HexEx::ParametrizedTetMesh pm;
     ASSERT_NO_THROW(pm = HexEx::readOvmTetBuffer(text, "cube.ovm", &rr));
-    EXPECT_TRUE(rr.warnings.empty());
+    ASSERT_EQ(rr.warnings.size(), 1u);  // properties not needed are named
+    EXPECT_NE(rr.warnings[0].find("cube.ovm: skipped 1 unused property: VProp double \"unrelated\" (line "),
+              std::string::npos) << rr.warnings[0];
     ASSERT_EQ(pm.mesh.n_vertices(), ref.mesh.n_vertices());
     ASSERT_EQ(pm.mesh.n_cells(), ref.mesh.n_cells());
     ASSERT_TRUE(pm.mesh.has_adjacency());
@@ -236,17 +238,18 @@ TEST(OvmTetReaderTest, SingleTetHalfFaceProperty) {
     ASSERT_EQ(pm.mesh.n_vertices(), 4u);
     ASSERT_EQ(pm.mesh.n_cells(), 1u);
     const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(0));
-    // File corner order (1 2 3 0) is negative (outward halffaces): corners 1 and 2 swapped.
-    EXPECT_EQ(cv[0].idx(), 1);
-    EXPECT_EQ(cv[1].idx(), 3);
-    EXPECT_EQ(cv[2].idx(), 2);
+    // File corner order (1 2 3 0), started at the corner opposite the last halfface (3 1 2 0),
+    // is negative (outward halffaces): corners 1 and 2 swapped.
+    EXPECT_EQ(cv[0].idx(), 3);
+    EXPECT_EQ(cv[1].idx(), 2);
+    EXPECT_EQ(cv[2].idx(), 1);
     EXPECT_EQ(cv[3].idx(), 0);
     for (int i = 0; i < 4; ++i) EXPECT_EQ(pm.params[0][static_cast<std::size_t>(i)], pm.mesh.position(cv[static_cast<std::size_t>(i)]));
-    // TetMesh halfface 3 is the file's first halfface, with its orientation.
+    // TetMesh halfface 3 is the file's first halfface (loop 1 2 3), with its orientation.
     const auto hv = pm.mesh.halfface_vertices(HexEx::TetMesh::halfface(HexEx::CellHandle(0), 3));
-    EXPECT_EQ(hv[0].idx(), 1);
-    EXPECT_EQ(hv[1].idx(), 2);
-    EXPECT_EQ(hv[2].idx(), 3);
+    EXPECT_EQ(hv[0].idx(), 3);
+    EXPECT_EQ(hv[1].idx(), 1);
+    EXPECT_EQ(hv[2].idx(), 2);
     EXPECT_TRUE(pm.mesh.has_adjacency());
     EXPECT_EQ(pm.mesh.n_boundary_faces(), 4u);
 }
@@ -293,9 +296,11 @@ TEST(OvmTetReaderTest, FileApiAndSecondPropertyWarning) {
     ASSERT_NO_THROW(pm = HexEx::readOvmTetMesh(path, &rr));
     std::remove(path.c_str());
     EXPECT_EQ(paramsByVertex(pm), paramsByVertex(ref));  // the first block wins
-    ASSERT_EQ(rr.warnings.size(), 1u);
+    ASSERT_EQ(rr.warnings.size(), 2u);
     EXPECT_NE(rr.warnings[0].find("ignoring parametrization property CProp vec12d \"params\""), std::string::npos)
         << rr.warnings[0];
+    EXPECT_NE(rr.warnings[1].find("skipped 1 unused property: VProp double \"unrelated\""), std::string::npos)
+        << rr.warnings[1];
     EXPECT_FALSE(rr.reoriented);
 
     try {

@@ -39,4 +39,11 @@ HexMesh readHexMesh(const std::string& path);
 /// @throws InputError as readHexMesh().
 HexMesh readHexMeshBuffer(std::string_view text, HexMeshFormat format, const std::string& name);
 
+namespace detail {
+/// Reads a legacy VTK file held in memory (LegacyVtkReader.cc); errors as readHexMesh().
+HexMesh readLegacyVtk(std::string_view text, const std::string& name);
+/// Reads a VTK XML UnstructuredGrid file held in memory (VtuReader.cc); errors as readHexMesh().
+HexMesh readVtu(std::string_view text, const std::string& name);
+} // namespace detail
+
 } // namespace HexEx

@@ -1,11 +1,15 @@
 /// @file HexMeshWriters.cc
-/// Implementation of the hex mesh writers (.vtu, .vtk, .ovm, .mesh) and of the singular
+/// Implementation of the hex mesh writers (.vtu, .vtk, .ovm, .ovmb, .mesh) and of the singular
 /// edge writer. Text is assembled in a string buffer and written in one go.
 
 #include "HexMeshWriters.hh"
 
+#include "OvmModel.hh"
+#include "ReaderSupport.hh"
+#include "VtkCells.hh"
+#include "VtkDataBlocks.hh"
+
 #include "../Core/Error.hh"
-#include "../Mesh/HexMeshCheck.hh"
 
 #include <algorithm>
 #include <cctype>
@@ -25,13 +29,8 @@ namespace {
 /// Appends text with fast number formatting.
 class Out {
 public:
-    /// Appends a string.
-    Out& operator<<(const char* s) {
-        buf_ += s;
-        return *this;
-    }
-    /// Appends a string.
-    Out& operator<<(const std::string& s) {
+    /// Appends raw bytes.
+    Out& operator<<(std::string_view s) {
         buf_ += s;
         return *this;
     }
@@ -76,103 +75,127 @@ private:
     std::string buf_;
 };
 
-/// Throws std::invalid_argument if a cell references a vertex out of range.
-void checkIndices(const HexMesh& mesh) {
-    const long nv = static_cast<long>(mesh.vertices.size());
-    for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
-        for (const int v : mesh.hexes[c])
-            if (v < 0 || v >= nv)
-                throw std::invalid_argument("hex " + std::to_string(c) + " references vertex " + std::to_string(v) +
-                                            " (mesh has " + std::to_string(nv) + " vertices)");
-    for (std::size_t c = 0; c < mesh.polyhedra.size(); ++c) {
-        if (mesh.polyhedra[c].faces.empty())
-            throw std::invalid_argument("polyhedron " + std::to_string(c) + " has no faces");
-        for (const auto& f : mesh.polyhedra[c].faces) {
-            if (f.size() < 3)
-                throw std::invalid_argument("polyhedron " + std::to_string(c) + " has a face with " +
-                                            std::to_string(f.size()) + " vertices");
-            for (const int v : f)
-                if (v < 0 || v >= nv)
-                    throw std::invalid_argument("polyhedron " + std::to_string(c) + " references vertex " +
-                                                std::to_string(v) + " (mesh has " + std::to_string(nv) +
-                                                " vertices)");
+/// True on little-endian hosts (arrays are written in host byte order and labelled so).
+bool hostIsLittleEndian() {
+    const std::uint16_t probe = 1;
+    unsigned char first = 0;
+    std::memcpy(&first, &probe, 1);
+    return first == 1;
+}
+
+/// The data arrays of a `.vtu` file: text inside the XML (ascii), or appended blocks that
+/// point into the caller's arrays (binary) or hold their compressed bytes.
+class VtuWriter {
+public:
+    VtuWriter(Out& o, VtuEncoding enc) : o_(o), enc_(enc) {}
+
+    /// Adds a DataArray element for the @p count values at @p values (@p type is the VTK
+    /// name of T); binary data is not copied, so @p values must live until finish().
+    template <class T>
+    void array(const char* name, const char* type, int comps, const T* values, std::size_t count) {
+        o_ << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\"";
+        if (comps > 1) o_ << " NumberOfComponents=\"" << comps << "\"";
+        if (enc_ != VtuEncoding::Ascii) {
+            const std::string_view bytes(reinterpret_cast<const char*>(values), count * sizeof(T));
+            o_ << " format=\"appended\" offset=\"" << offset_ << "\"/>\n";
+            if (enc_ == VtuEncoding::Compressed) blocks_.push_back({detail::makeVtkBlock(bytes, true), {}});
+            else blocks_.push_back({sizeOf(bytes.size()), bytes});
+            offset_ += blocks_.back().first.size() + blocks_.back().second.size();
+            return;
         }
+        o_ << " format=\"ascii\">\n";
+        for (std::size_t i = 0; i < count; ++i) {
+            if constexpr (std::is_floating_point_v<T>) o_.num(values[i]);
+            else o_ << static_cast<long long>(values[i]);
+            o_ << ((i + 1) % static_cast<std::size_t>(comps) == 0 ? '\n' : ' ');
+        }
+        o_ << "        </DataArray>\n";
     }
-}
+    /// Writes the XML, the appended blocks and the closing tags to @p out.
+    void finish(std::ostream& out) {
+        o_ << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
+        if (enc_ != VtuEncoding::Ascii) o_ << "  <AppendedData encoding=\"raw\">\n_";
+        out.write(o_.str().data(), static_cast<std::streamsize>(o_.str().size()));
+        for (const auto& [owned, borrowed] : blocks_) {
+            out.write(owned.data(), static_cast<std::streamsize>(owned.size()));
+            out.write(borrowed.data(), static_cast<std::streamsize>(borrowed.size()));
+        }
+        out << (enc_ != VtuEncoding::Ascii ? "\n  </AppendedData>\n</VTKFile>\n" : "</VTKFile>\n");
+    }
 
-/// Distinct vertices of a polyhedron in order of first appearance.
-std::vector<int> polyVertices(const Polyhedron& p) {
-    std::vector<int> out;
-    for (const auto& f : p.faces)
-        for (const int v : f)
-            if (std::find(out.begin(), out.end(), v) == out.end()) out.push_back(v);
-    return out;
-}
+private:
+    /// The UInt64 little-endian header of a block of @p n bytes.
+    static std::string sizeOf(std::size_t n) {
+        std::string h(8, '\0');
+        for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = static_cast<char>((static_cast<std::uint64_t>(n) >> (8 * k)) & 0xff);
+        return h;
+    }
 
-void writeVtu(Out& o, const HexMesh& m) {
-    const std::size_t nh = m.hexes.size(), np = m.polyhedra.size();
-    o << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      << "  <UnstructuredGrid>\n"
-      << "    <Piece NumberOfPoints=\"" << m.vertices.size() << "\" NumberOfCells=\"" << (nh + np) << "\">\n"
-      << "      <Points>\n"
-      << "        <DataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto& p : m.vertices) o.vec(p) << '\n';
-    o << "        </DataArray>\n"
-      << "      </Points>\n"
-      << "      <Cells>\n"
-      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    std::vector<std::vector<int>> pverts(np);
-    for (const auto& h : m.hexes) {
-        for (int i = 0; i < 8; ++i) o << (i ? " " : "") << h[i];
-        o << '\n';
-    }
-    for (std::size_t c = 0; c < np; ++c) {
-        pverts[c] = polyVertices(m.polyhedra[c]);
-        for (std::size_t i = 0; i < pverts[c].size(); ++i) o << (i ? " " : "") << pverts[c][i];
-        o << '\n';
-    }
-    o << "        </DataArray>\n"
-      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    long long off = 0;
-    for (std::size_t c = 0; c < nh; ++c) {
-        off += 8;
-        o << off << '\n';
-    }
-    for (std::size_t c = 0; c < np; ++c) {
-        off += static_cast<long long>(pverts[c].size());
-        o << off << '\n';
-    }
-    o << "        </DataArray>\n"
-      << "        <DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < nh; ++c) o << "12\n";
-    for (std::size_t c = 0; c < np; ++c) o << "42\n";
-    o << "        </DataArray>\n";
-    if (np > 0) {
-        o << "        <DataArray type=\"Int64\" Name=\"faces\" format=\"ascii\">\n";
-        std::vector<long long> ends;
-        long long fo = 0;
+    Out& o_;
+    VtuEncoding enc_;
+    std::size_t offset_ = 0;
+    std::vector<std::pair<std::string, std::string_view>> blocks_;  // owned bytes, then borrowed bytes
+};
+
+/// The cell arrays of a `.vtu` file (T = int32 or int64) and writing them.
+template <class T>
+struct VtuCells {
+    std::vector<T> conn, offsets, faces, faceoffsets;  ///< built arrays (hex connectivity may be borrowed)
+    std::vector<std::uint8_t> types;                   ///< cell types
+
+    /// Builds and adds the arrays of @p m to @p w.
+    void add(VtuWriter& w, const HexMesh& m) {
+        const char* type = sizeof(T) == 4 ? "Int32" : "Int64";
+        const std::size_t nh = m.hexes.size(), np = m.polyhedra.size();
+        const bool borrowHexes = sizeof(T) == sizeof(int) && np == 0;
+        if (!borrowHexes)
+            for (const auto& h : m.hexes) conn.insert(conn.end(), h.begin(), h.end());
+        offsets.reserve(nh + np);
+        for (std::size_t c = 1; c <= nh; ++c) offsets.push_back(static_cast<T>(8 * c));
         for (const auto& p : m.polyhedra) {
-            o << p.faces.size() << '\n';
-            fo += 1;
+            for (const int v : detail::polyVertices(p)) conn.push_back(v);
+            offsets.push_back(static_cast<T>(conn.size()));
+            faces.push_back(static_cast<T>(p.faces.size()));
             for (const auto& f : p.faces) {
-                o << f.size();
-                for (const int v : f) o << ' ' << v;
-                o << '\n';
-                fo += 1 + static_cast<long long>(f.size());
+                faces.push_back(static_cast<T>(f.size()));
+                faces.insert(faces.end(), f.begin(), f.end());
             }
-            ends.push_back(fo);
+            faceoffsets.push_back(static_cast<T>(faces.size()));
         }
-        o << "        </DataArray>\n"
-          << "        <DataArray type=\"Int64\" Name=\"faceoffsets\" format=\"ascii\">\n";
-        for (std::size_t c = 0; c < nh; ++c) o << "-1\n";
-        for (const long long e : ends) o << e << '\n';
-        o << "        </DataArray>\n";
+        types.assign(nh, 12);
+        types.resize(nh + np, 42);
+        if (borrowHexes) w.array("connectivity", type, 1, reinterpret_cast<const T*>(m.hexes.data()), 8 * nh);
+        else w.array("connectivity", type, 1, conn.data(), conn.size());
+        w.array("offsets", type, 1, offsets.data(), offsets.size());
+        w.array("types", "UInt8", 1, types.data(), types.size());
+        if (np > 0) {
+            faceoffsets.insert(faceoffsets.begin(), nh, T(-1));
+            w.array("faces", type, 1, faces.data(), faces.size());
+            w.array("faceoffsets", type, 1, faceoffsets.data(), faceoffsets.size());
+        }
     }
-    o << "      </Cells>\n"
-      << "    </Piece>\n"
-      << "  </UnstructuredGrid>\n"
-      << "</VTKFile>\n";
+};
+
+void writeVtu(std::ostream& out, const HexMesh& m, VtuEncoding enc) {
+    static_assert(sizeof(Vec3d) == 3 * sizeof(double) && sizeof(std::array<int, 8>) == 8 * sizeof(int),
+                  "points and hexes are written from the mesh's own arrays");
+    Out o;
+    o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
+      << (hostIsLittleEndian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\""
+      << (enc == VtuEncoding::Compressed ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
+      << "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" << m.vertices.size() << "\" NumberOfCells=\""
+      << (m.hexes.size() + m.polyhedra.size()) << "\">\n      <Points>\n";
+    VtuWriter w(o, enc);
+    w.array("Points", "Float64", 3, m.vertices.empty() ? nullptr : m.vertices[0].data(), 3 * m.vertices.size());
+    o << "      </Points>\n      <Cells>\n";
+    std::size_t total = 8 * m.hexes.size();
+    for (const auto& p : m.polyhedra)
+        for (const auto& f : p.faces) total += 2 * f.size() + 2;
+    VtuCells<std::int32_t> small;
+    VtuCells<std::int64_t> large;
+    if (total < static_cast<std::size_t>(INT32_MAX)) small.add(w, m);
+    else large.add(w, m);
+    w.finish(out);
 }
 
 void writeVtk(Out& o, const HexMesh& m) {
@@ -211,96 +234,6 @@ void writeVtk(Out& o, const HexMesh& m) {
     }
 }
 
-/// Hash of a sorted, -1-padded small face key.
-struct SmallKeyHash {
-    std::size_t operator()(const std::array<int, 4>& k) const {
-        std::uint64_t h = 1469598103934665603ull;
-        for (const int v : k) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull;
-        return static_cast<std::size_t>(h);
-    }
-};
-
-void writeOvm(Out& o, const HexMesh& m) {
-    std::vector<std::array<int, 2>> edges;
-    std::unordered_map<std::uint64_t, int> edgeId;
-    std::vector<std::vector<int>> faces;  // stored loops
-    std::unordered_map<std::array<int, 4>, int, SmallKeyHash> smallFace;
-    std::map<std::vector<int>, int> largeFace;
-    std::vector<std::vector<int>> cells;  // halfface lists
-
-    auto halfedge = [&](int a, int b) {
-        const std::uint64_t key = (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, b))) << 32) |
-                                  static_cast<std::uint32_t>(std::max(a, b));
-        auto it = edgeId.find(key);
-        if (it == edgeId.end()) {
-            it = edgeId.emplace(key, static_cast<int>(edges.size())).first;
-            edges.push_back({{a, b}});
-        }
-        const int e = it->second;
-        return 2 * e + (edges[e][0] == a ? 0 : 1);
-    };
-    auto halfface = [&](const std::vector<int>& loop) {
-        int* slot = nullptr;
-        int fresh = static_cast<int>(faces.size());
-        if (loop.size() <= 4) {
-            std::array<int, 4> key{{-1, -1, -1, -1}};
-            std::copy(loop.begin(), loop.end(), key.begin());
-            std::sort(key.begin(), key.end());
-            slot = &smallFace.emplace(key, fresh).first->second;
-        } else {
-            std::vector<int> key = loop;
-            std::sort(key.begin(), key.end());
-            slot = &largeFace.emplace(std::move(key), fresh).first->second;
-        }
-        const int f = *slot;
-        if (f == fresh) {
-            faces.push_back(loop);
-            return 2 * f;
-        }
-        const auto& s = faces[f];
-        const std::size_t n = s.size();
-        const std::size_t k = static_cast<std::size_t>(std::find(s.begin(), s.end(), loop[0]) - s.begin());
-        const bool same = k < n && s[(k + 1) % n] == loop[1 % loop.size()];
-        return 2 * f + (same ? 0 : 1);
-    };
-
-    for (const auto& h : m.hexes) {
-        std::vector<int> hfs;
-        for (const auto& lf : kHexFaces) hfs.push_back(halfface({h[lf[0]], h[lf[1]], h[lf[2]], h[lf[3]]}));
-        cells.push_back(std::move(hfs));
-    }
-    for (const auto& p : m.polyhedra) {
-        std::vector<int> hfs;
-        for (const auto& f : p.faces) hfs.push_back(halfface(f));
-        cells.push_back(std::move(hfs));
-    }
-    // Edges in face order (so that edge ids follow the faces).
-    std::vector<std::vector<int>> faceHalfedges;
-    faceHalfedges.reserve(faces.size());
-    for (const auto& f : faces) {
-        std::vector<int> hes;
-        for (std::size_t i = 0; i < f.size(); ++i) hes.push_back(halfedge(f[i], f[(i + 1) % f.size()]));
-        faceHalfedges.push_back(std::move(hes));
-    }
-
-    o << "OVM ASCII\nVertices\n" << m.vertices.size() << '\n';
-    for (const auto& p : m.vertices) o.vec(p) << '\n';
-    o << "Edges\n" << edges.size() << '\n';
-    for (const auto& e : edges) o << e[0] << ' ' << e[1] << '\n';
-    o << "Faces\n" << faces.size() << '\n';
-    for (const auto& hes : faceHalfedges) {
-        o << hes.size();
-        for (const int he : hes) o << ' ' << he;
-        o << '\n';
-    }
-    o << "Polyhedra\n" << cells.size() << '\n';
-    for (const auto& c : cells) {
-        o << c.size();
-        for (const int hf : c) o << ' ' << hf;
-        o << '\n';
-    }
-}
-
 std::vector<std::string> writeMedit(Out& o, const HexMesh& m) {
     o << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << m.vertices.size() << '\n';
     for (const auto& p : m.vertices) o.vec(p) << " 0\n";
@@ -319,27 +252,32 @@ std::vector<std::string> writeMedit(Out& o, const HexMesh& m) {
     return warnings;
 }
 
-std::vector<std::string> writeTo(Out& o, const HexMesh& mesh, HexMeshFormat format) {
-    checkIndices(mesh);
-    switch (format) {
-    case HexMeshFormat::Vtu: writeVtu(o, mesh); return {};
-    case HexMeshFormat::Vtk: writeVtk(o, mesh); return {};
-    case HexMeshFormat::Ovm: writeOvm(o, mesh); return {};
-    case HexMeshFormat::Medit: return writeMedit(o, mesh);
+std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc) {
+    detail::checkCellIndices(mesh);
+    if (format == HexMeshFormat::Vtu) {
+        writeVtu(out, mesh, enc);
+        return {};
     }
-    return {};
-}
-
-/// Writes @p text to @p path or throws InputError naming the path.
-void writeFile(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path + ": cannot open file for writing");
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.flush();
-    if (!out) throw InputError(path + ": error while writing the file");
+    Out o;
+    std::vector<std::string> warnings;
+    switch (format) {
+    case HexMeshFormat::Vtk: writeVtk(o, mesh); break;
+    case HexMeshFormat::Ovm: o << writeOvmAscii(ovmFromHexMesh(mesh)); break;
+    case HexMeshFormat::Ovmb: o << writeOvmBinary(ovmFromHexMesh(mesh)); break;
+    default: warnings = writeMedit(o, mesh);
+    }
+    out.write(o.str().data(), static_cast<std::streamsize>(o.str().size()));
+    return warnings;
 }
 
 } // namespace
+
+VtuEncoding vtuEncodingFromName(const std::string& name) {
+    if (name == "binary") return VtuEncoding::Binary;
+    if (name == "compressed") return VtuEncoding::Compressed;
+    if (name == "ascii") return VtuEncoding::Ascii;
+    throw std::invalid_argument("unknown encoding '" + name + "' (expected binary, compressed or ascii)");
+}
 
 HexMeshFormat hexMeshFormatFromPath(const std::string& path) {
     const std::size_t dot = path.find_last_of('.');
@@ -350,23 +288,25 @@ HexMeshFormat hexMeshFormatFromPath(const std::string& path) {
     if (ext == "vtu") return HexMeshFormat::Vtu;
     if (ext == "vtk") return HexMeshFormat::Vtk;
     if (ext == "ovm") return HexMeshFormat::Ovm;
+    if (ext == "ovmb") return HexMeshFormat::Ovmb;
     if (ext == "mesh") return HexMeshFormat::Medit;
     throw InputError(path + ": unknown hex mesh file extension '" + (ext.empty() ? std::string() : "." + ext) +
-                     "' (expected .vtu, .vtk, .ovm or .mesh)");
+                     "' (expected .vtu, .vtk, .ovm, .ovmb or .mesh)");
 }
 
-std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format) {
-    Out o;
-    auto warnings = writeTo(o, mesh, format);
-    out.write(o.str().data(), static_cast<std::streamsize>(o.str().size()));
-    return warnings;
+std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
+                                            VtuEncoding encoding) {
+    return writeTo(out, mesh, format, encoding);
 }
 
-std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh) {
+std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh, VtuEncoding encoding) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
-    Out o;
-    auto warnings = writeTo(o, mesh, format);
-    writeFile(path, o.str());
+    detail::checkCellIndices(mesh);
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path + ": cannot open file for writing");
+    auto warnings = writeTo(out, mesh, format, encoding);
+    out.flush();
+    if (!out) throw InputError(path + ": error while writing the file");
     for (auto& w : warnings) w = path + ": " + w;
     return warnings;
 }
@@ -394,7 +334,7 @@ void writeSingularEdgesVtk(const std::string& path, const std::vector<Vec3d>& po
     for (const auto& s : segments) o << "2 " << s[0] << ' ' << s[1] << '\n';
     o << "CELL_DATA " << segments.size() << '\n' << "SCALARS valence int 1\n" << "LOOKUP_TABLE default\n";
     for (const int v : valences) o << v << '\n';
-    writeFile(path, o.str());
+    detail::writeWholeFile(path, o.str());
 }
 
 } // namespace HexEx

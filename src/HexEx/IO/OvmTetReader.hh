@@ -1,9 +1,10 @@
 #pragma once
 /// @file OvmTetReader.hh
-/// Reader of tetrahedral meshes with an integer-grid map in the OpenVolumeMesh ASCII format
-/// (`.ovm`), the input counterpart of the `.ovm` hex mesh writer (HexMeshWriters.hh).
+/// Reader and writer of tetrahedral meshes with an integer-grid map in the OpenVolumeMesh
+/// formats: ASCII (`.ovm`) and binary (`.ovmb`, recognised by its magic bytes; layout in
+/// OvmBinary.cc). Both are parsed into an OvmModel (OvmModel.hh) and checked the same way.
 ///
-/// ## Accepted layout
+/// ## Accepted ASCII layout
 /// The file is read line by line. Text from `#` to the end of a line (outside a quoted
 /// property name) is a comment; blank lines are skipped; keywords are case-insensitive.
 /// ```
@@ -26,7 +27,10 @@
 /// ...                          2 n_e for HEProp, n_f for FProp, 2 n_f for HFProp, n_c for
 ///                              CProp, 1 for MProp)
 /// ```
-/// `OVM BINARY` files are rejected. Every face must be a triangle and every polyhedron a
+/// The old `OVM BINARY` format is rejected. In `.ovmb` files, the map is a halfface property
+/// of type `3d` (vec3d; `3f` is accepted too) with a name as below; chunks must give each
+/// entity's values in order (the way OpenVolumeMesh writes them); compressed chunks are
+/// rejected, unknown chunk types skipped with a warning. Every face must be a triangle and every polyhedron a
 /// tetrahedron: four triangular halffaces over four distinct vertices, consistently
 /// oriented (every directed edge used once), no halfface used by two cells.
 ///
@@ -38,7 +42,8 @@
 /// - `CProp vec12d "NAME"`: twelve numbers per cell, `u0 v0 w0 u1 v1 w1 u2 v2 w2 u3 v3 w3`,
 ///   the parameters of the cell's corners in the file corner order defined below.
 ///
-/// NAME is compared case-insensitively with: `parametrization`, `parameterization`,
+/// NAME, after any `X::` prefix (as in `HexHex::Parametrization`, the convention of the
+/// OpenVolumeMesh-based tools HexHex and AlgoHex), is compared case-insensitively with: `parametrization`, `parameterization`,
 /// `param`, `params`, `parameter`, `parameters`, `uvw`, `igm`. Other property blocks are
 /// skipped. No matching block is an error that lists the property blocks found.
 ///
@@ -46,19 +51,25 @@
 /// The *file corner order* of a cell is: the three vertices of its first halfface `hf0` in
 /// that halfface's loop order (for halfface 2f: the sources of the face's halfedges in
 /// order, starting at the source of the first; for 2f+1: the same loop reversed, starting at
-/// the same vertex), followed by the remaining fourth vertex. The returned TetMesh must be
+/// the same vertex), followed by the remaining fourth vertex. CProp values are given in this
+/// order. The reader then rotates the first three corners (an even permutation, with their
+/// parameters) until corner 0 is the vertex opposite the cell's LAST halfface: a tet
+/// `a b c d` written as OpenVolumeMesh-based tools and ovmFromTetMesh() write it (halffaces
+/// `a b c`, `a c d`, `a d b`, `b d c`) reads back as `a b c d`, so `.hexex` -> `.ovmb` ->
+/// extraction gives bit-identical output. The returned TetMesh must be
 /// positively oriented in 3D, which depends on whether the file lists halffaces pointing
-/// out of their cells (as the HexEx `.ovm` writer does) or into them. The reader computes
-/// the exact 3D orientation of every cell in file corner order; within each connected
+/// out of their cells or into them (OpenVolumeMesh's convention). The reader computes
+/// the exact 3D orientation of every cell in this corner order; within each connected
 /// component (cells joined by shared faces) all cells must agree:
-/// - all positive: corners are kept in file corner order;
+/// - all positive: corners are kept;
 /// - all negative (outward halffaces): corners 1 and 2 are swapped (with their parameters),
-///   so that TetMesh halfface 3 of the cell is exactly the file's hf0 with its orientation;
+///   so that TetMesh halfface 3 of the cell lies on the file's hf0, with its orientation;
 /// - mixed: InputError naming the first cell of the minority (the mesh is folded in 3D);
 /// - a cell of zero volume: InputError.
 ///
 /// ## Errors
-/// Every problem throws InputError "<file>:<line>: <reason>" (bad header or section
+/// Every problem throws InputError "<file>:<line>: <reason>" (for `.ovmb`:
+/// "<file>: byte <offset>: <reason>"; bad header or section
 /// keyword, bad or negative counts, indices out of range, faces that are not closed
 /// triangles, cells that are not tetrahedra, NaN or infinite numbers, missing
 /// parametrization, truncated files, orientation), or "<file>: <reason>" when no line
@@ -66,6 +77,7 @@
 
 #include "../Mesh/ParametrizedTetMesh.hh"
 #include "HexExFile.hh"
+#include "OvmModel.hh"
 
 #include <iosfwd>
 #include <string>
@@ -87,5 +99,20 @@ ParametrizedTetMesh readOvmTetStream(std::istream& in, const std::string& name, 
 /// Reads OpenVolumeMesh ASCII data held in memory; @p name is used in error messages.
 /// @throws InputError as readOvmTetMesh().
 ParametrizedTetMesh readOvmTetBuffer(std::string_view text, const std::string& name, ReadReport* report = nullptr);
+
+/// The tet mesh with its map stored in @p model (see the file overview); warnings go to @p report.
+/// @throws InputError at the face or cell at fault.
+ParametrizedTetMesh tetMeshFromOvm(const OvmModel& model, ReadReport* report = nullptr);
+
+/// The OpenVolumeMesh model of @p pm: tet `a b c d` becomes the cell of halffaces `a b c`,
+/// `a c d`, `a d b`, `b d c` (pointing into the cell, as OpenVolumeMesh orients them; the
+/// opposite corners are d, b, c, a), faces and edges numbered in order of first use, the
+/// map as halfface parameters (halffaces of no cell get 0).
+/// @throws std::invalid_argument if the parameter count does not match the cell count.
+OvmModel ovmFromTetMesh(const ParametrizedTetMesh& pm);
+
+/// Writes @p pm with its map to @p path as OpenVolumeMesh binary (@p binary) or ASCII.
+/// @throws InputError naming the path if it cannot be written; std::invalid_argument as ovmFromTetMesh().
+void writeOvmTetMesh(const std::string& path, const ParametrizedTetMesh& pm, bool binary);
 
 } // namespace HexEx

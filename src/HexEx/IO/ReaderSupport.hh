@@ -1,7 +1,8 @@
 #pragma once
 /// @file ReaderSupport.hh
-/// Steps shared by the tet-mesh readers (.hexex, .ovm): reading a whole stream, opening an
-/// input file with a clear error, and finishing the mesh (adjacency and manifoldness).
+/// Steps shared by the readers and writers: reading a whole stream, opening an input file
+/// with a clear error, writing a whole file, and finishing a tet mesh (adjacency and
+/// manifoldness).
 
 #include "../Core/Error.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
@@ -31,6 +32,15 @@ inline std::ifstream openInputFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
     return in;
+}
+
+/// Writes @p bytes to @p path; InputError naming the path if it cannot be written.
+inline void writeWholeFile(const std::string& path, const std::string& bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    if (!out) throw InputError(path + ": cannot open file for writing");
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    out.flush();
+    if (!out) throw InputError(path + ": error while writing the file");
 }
 
 /// Builds the adjacency of a freshly read mesh (on @p threads threads, 0 = all hardware

@@ -8,7 +8,7 @@
 
 namespace HexEx {
 
-/// Reads @p path as OpenVolumeMesh ASCII if it ends in `.ovm` (any case), as `.hexex`
+/// Reads @p path as OpenVolumeMesh if it ends in `.ovm` or `.ovmb` (any case), as `.hexex`
 /// otherwise; `-` reads `.hexex` from standard input. Throws InputError like the readers.
 ParametrizedTetMesh readParametrizedTetMesh(const std::string& path, ReadReport* report = nullptr);
 

@@ -2,13 +2,18 @@
 /// @file TextParsing.hh
 /// Small helpers shared by the text readers (.hexex, .ovm, hex mesh files).
 
+#include "../Core/Error.hh"
+
 #include <algorithm>
+#include <cctype>
 #include <charconv>
+#include <climits>
 #include <cmath>
 #include <cstdlib>
 #include <string>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace HexEx {
 namespace detail {
@@ -63,6 +68,138 @@ inline NumberParse parseReal(std::string_view tok, double& value) {
     if (res.ec != std::errc() || res.ptr != last) return NumberParse::Malformed;
     return NumberParse::Ok;
 }
+
+/// Case-insensitive comparison of a token with a keyword.
+inline bool iequals(std::string_view a, std::string_view b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) == std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
+/// Throws InputError "<name>:<line>: <reason>" (without the line if @p line <= 0).
+[[noreturn]] inline void failAt(const std::string& name, long long line, const std::string& reason) {
+    if (line > 0) throw InputError(name + ":" + std::to_string(line) + ": " + reason);
+    throw InputError(name + ": " + reason);
+}
+
+/// A token and the line it is on.
+struct Token {
+    std::string_view text;  ///< the characters
+    long long line = 0;     ///< 1-based line
+};
+
+/// Whitespace-separated tokens of a text with line numbers, optional comments, and raw
+/// byte blocks (binary data after a header line). Every failure throws InputError
+/// "<name>:<line>: <reason>".
+class Lexer {
+public:
+    /// Tokens of @p text (named @p name in errors), whose first character is on line
+    /// @p firstLine; @p comment starts a comment up to the end of the line ('\0': none).
+    Lexer(std::string_view text, const std::string& name, long long firstLine = 1, char comment = '\0')
+        : text_(text), name_(name), line_(firstLine), comment_(comment) {}
+
+    /// Throws InputError at @p line.
+    [[noreturn]] void fail(long long line, const std::string& reason) const { failAt(name_, line, reason); }
+
+    /// Skips whitespace and comments; true if a token follows.
+    bool more() {
+        for (; pos_ < text_.size(); ++pos_) {
+            const char ch = text_[pos_];
+            if (ch == '\n') ++line_;
+            else if (comment_ && ch == comment_)
+                while (pos_ + 1 < text_.size() && text_[pos_ + 1] != '\n') ++pos_;
+            else if (!isFormatSpace(ch)) return true;
+        }
+        return false;
+    }
+    /// Line of the last token read, or of the end of the text.
+    long long line() const { return line_; }
+    /// Line to report for an unexpected end of the text.
+    long long eofLine() const { return (!text_.empty() && text_.back() == '\n' && line_ > 1) ? line_ - 1 : line_; }
+    /// Bytes left.
+    std::size_t remaining() const { return text_.size() - pos_; }
+    /// Byte offset in the text.
+    std::size_t offset() const { return pos_; }
+
+    /// The next token; fails at the end of the text, naming @p what was expected.
+    Token next(const std::string& what) {
+        if (!more()) fail(eofLine(), "unexpected end of file, expected " + what);
+        const std::size_t b = pos_;
+        while (pos_ < text_.size() && !isFormatSpace(text_[pos_]) && !(comment_ && text_[pos_] == comment_)) ++pos_;
+        tokenEnd_ = pos_;
+        tokenLine_ = line_;
+        return {text_.substr(b, pos_ - b), line_};
+    }
+    /// The tokens of the next non-blank line (none at the end of the text).
+    std::vector<Token> lineTokens() {
+        std::vector<Token> t;
+        for (const long long l = more() ? line_ : 0; more() && line_ == l;) t.push_back(next(""));
+        return t;
+    }
+    /// The next token without consuming it (empty at the end).
+    std::string_view peek() {
+        if (!more()) return {};
+        std::size_t e = pos_;
+        while (e < text_.size() && !isFormatSpace(text_[e])) ++e;
+        return text_.substr(pos_, e - pos_);
+    }
+    /// Reads an integer in [lo, hi].
+    long long integer(const std::string& what, long long lo = LLONG_MIN, long long hi = LLONG_MAX) {
+        const Token t = next(what);
+        long long v = 0;
+        if (parseInteger(t.text, v) != NumberParse::Ok) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
+        if (v < lo || v > hi)
+            fail(t.line, what + " " + std::to_string(v) + " out of range [" + std::to_string(lo) + ", " +
+                             std::to_string(hi) + "]");
+        return v;
+    }
+    /// Reads a count of items of at least @p bytesPerItem bytes each that the rest of the text can hold.
+    long long count(const std::string& what, long long bytesPerItem = 2) {
+        const long long limit = static_cast<long long>(remaining() / static_cast<std::size_t>(std::max(bytesPerItem, 1LL)));
+        const Token t = next(what);
+        long long v = 0;
+        if (parseInteger(t.text, v) != NumberParse::Ok) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
+        if (v < 0) fail(t.line, what + " is negative (" + std::to_string(v) + ")");
+        if (v > limit + 1 || v > INT_MAX) fail(t.line, what + " " + std::to_string(v) + " is larger than the file can hold");
+        return v;
+    }
+    /// Reads a finite real number.
+    double real(const std::string& what) {
+        const Token t = next(what);
+        double v = 0;
+        if (parseReal(t.text, v) != NumberParse::Ok) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
+        if (!std::isfinite(v)) fail(t.line, what + " is not finite");
+        return v;
+    }
+    /// Reads the keyword @p kw (case-insensitive).
+    void keyword(std::string_view kw) {
+        const Token t = next("'" + std::string(kw) + "'");
+        if (!iequals(t.text, kw)) fail(t.line, "expected '" + std::string(kw) + "', got " + quoteToken(t.text));
+    }
+    /// Skips the rest of the line of the last token read and returns the next @p n raw bytes.
+    std::string_view bytes(std::size_t n, const std::string& what) {
+        pos_ = tokenEnd_;  // undo any look-ahead of peek()
+        line_ = tokenLine_;
+        const std::size_t eol = text_.find('\n', pos_);
+        if (eol == std::string_view::npos) fail(eofLine(), "unexpected end of file, expected " + what);
+        pos_ = eol + 1;
+        ++line_;
+        if (n > remaining())
+            fail(line_, what + ": " + std::to_string(n) + " bytes needed at byte " + std::to_string(pos_) + ", " +
+                            std::to_string(remaining()) + " left");
+        const std::string_view b = text_.substr(pos_, n);
+        line_ += std::count(b.begin(), b.end(), '\n');
+        pos_ += n;
+        return b;
+    }
+
+private:
+    std::string_view text_;
+    const std::string& name_;
+    std::size_t pos_ = 0, tokenEnd_ = 0;
+    long long line_ = 1, tokenLine_ = 1;
+    char comment_ = '\0';
+};
 
 } // namespace detail
 } // namespace HexEx

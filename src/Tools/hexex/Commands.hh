@@ -16,5 +16,6 @@ int runExtract(const Args& args);   ///< hexex extract IN -o OUT [...]
 int runGenerate(const Args& args);  ///< hexex generate SHAPE [...] -o OUT.hexex
 int runPerturb(const Args& args);   ///< hexex perturb IN -a A --seed S -o OUT.hexex
 int runValidate(const Args& args);  ///< hexex validate MESH [--json]
+int runConvert(const Args& args);   ///< hexex convert IN OUT [--encoding E]
 
 } // namespace HexExTool

@@ -1,6 +1,6 @@
 /// @file ExtractCommand.cc
-/// `hexex extract IN -o OUT [options]`: extract the hex mesh of a .hexex or .ovm tet mesh with
-/// its integer-grid map, write it (.vtu, .vtk, .ovm, .mesh) and optionally a JSON report,
+/// `hexex extract IN -o OUT [options]`: extract the hex mesh of a .hexex, .ovm or .ovmb tet
+/// mesh with its integer-grid map, write it (.vtu, .vtk, .ovm, .ovmb, .mesh) and optionally a JSON report,
 /// the singular edges, the tet mesh in parameter space and the boundary surface.
 
 #include "ArgParser.hh"
@@ -36,8 +36,9 @@ namespace HexExTool {
 namespace {
 
 const char* kExtractUsage =
-    "usage: hexex extract IN.hexex|IN.ovm -o OUT [options]\n"
-    "  -o, --output OUT        hex mesh to write; format by extension: .vtu .vtk .ovm .mesh\n"
+    "usage: hexex extract IN.hexex|IN.ovm|IN.ovmb -o OUT [options]\n"
+    "  -o, --output OUT        hex mesh to write; format by extension: .vtu .vtk .ovm .ovmb .mesh\n"
+    "  --encoding E            .vtu data: binary (default), compressed (zlib) or ascii\n"
     "  --report R.json         write the extraction report as JSON ('-' for stdout)\n"
     "  --threads N             worker threads (0 = all hardware threads, default); output is identical\n"
     "  --epsilon E             snap parameters this close to an integer (default 1e-6)\n"
@@ -50,7 +51,7 @@ const char* kExtractUsage =
     "                          (cell data edge_id, vertex0, vertex1)\n"
     "  --face-patches P.vtu    write the exact image of every hex face as VTK triangles (cell data face_id)\n"
     "  -q, --quiet             print nothing but errors\n"
-    "IN is read as OpenVolumeMesh ASCII if it ends in .ovm, as .hexex otherwise;\n"
+    "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
     "exit status: 0 all-hex mesh written, 3 written but not all-hex, 2 bad input or usage\n";
 
@@ -198,11 +199,12 @@ int runExtract(const Args& args) {
         {"--output", true, "-o"},   {"--report", true, ""},        {"--threads", true, ""},
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
-        {"--edge-arcs", true, ""},  {"--face-patches", true, ""},
+        {"--encoding", true, ""},   {"--edge-arcs", true, ""},     {"--face-patches", true, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
     HexEx::HexArcs arcs;
     HexEx::ExtractionOptions opt;
+    HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
     bool quiet = false;
     try {
         const ParsedArgs pa = parseArgs(args, spec);
@@ -213,7 +215,12 @@ int runExtract(const Args& args) {
         if (pa.positional.empty()) throw UsageError("no input file given");
         if (pa.positional.size() > 1) throw UsageError("more than one input file given ('" + pa.positional[1] + "')");
         input = pa.positional[0];
-        if (!pa.has("--output")) throw UsageError("no output file given (-o OUT.vtu|.vtk|.ovm|.mesh)");
+        if (!pa.has("--output")) throw UsageError("no output file given (-o OUT.vtu|.vtk|.ovm|.ovmb|.mesh)");
+        try {
+            encoding = HexEx::vtuEncodingFromName(pa.get("--encoding", "binary"));
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("--encoding: ") + e.what());
+        }
         output = pa.get("--output");
         report_path = pa.get("--report");
         sing_path = pa.get("--singularities");
@@ -310,7 +317,7 @@ int runExtract(const Args& args) {
             return false;
         }
     };
-    if (!write([&] { return HexEx::writeHexMesh(output, hm); })) return 2;
+    if (!write([&] { return HexEx::writeHexMesh(output, hm, encoding); })) return 2;
     if (!surface_path.empty()) {
         if (!write([&] { return HexEx::writeBoundarySurface(surface_path, hm); })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";

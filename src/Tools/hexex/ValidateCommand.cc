@@ -1,5 +1,5 @@
 /// @file ValidateCommand.cc
-/// `hexex validate MESH [--json]`: reads a hex mesh (.vtu, .vtk, .ovm, .mesh) and prints the
+/// `hexex validate MESH [--json]`: reads a hex mesh (.vtu, .vtk, .ovm, .ovmb, .mesh) and prints the
 /// result of HexEx::checkHexMesh(). Exit status 0 if the mesh is a valid all-hex mesh, 3 if
 /// it was read but is not, 2 on bad input or usage.
 
@@ -32,7 +32,7 @@ constexpr std::size_t label_width = 32;
 
 const char* kValidateUsage =
     "usage: hexex validate MESH [--json]\n"
-    "  MESH  hex mesh file: .vtu, .vtk, .ovm or .mesh\n"
+    "  MESH  hex mesh file: .vtu, .vtk, .ovm, .ovmb or .mesh\n"
     "exit status: 0 valid all-hex mesh, 3 readable but not a valid all-hex mesh, 2 bad input or usage\n";
 
 } // namespace

@@ -13,7 +13,8 @@ const char* kUsage =
     "commands:\n"
     "  info IN [--json]                          statistics of a .hexex tet mesh with its map\n"
     "  extract IN -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
-    "                                            extract the hex mesh (.vtu, .vtk, .ovm, .mesh)\n"
+    "                                            extract the hex mesh (.vtu, .vtk, .ovm, .ovmb, .mesh)\n"
+    "  convert IN OUT [--encoding E]             convert a map (.hexex .ovm .ovmb) or a hex mesh\n"
     "  generate cube|cylinder|ring|twisted-ring [options] -o OUT.hexex\n"
     "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
     "  validate MESH [--json]                    check a hex mesh file\n"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
         if (cmd == "generate") return HexExTool::runGenerate(args);
         if (cmd == "perturb") return HexExTool::runPerturb(args);
         if (cmd == "validate") return HexExTool::runValidate(args);
+        if (cmd == "convert") return HexExTool::runConvert(args);
     } catch (const std::exception& e) {
         std::cerr << "hexex " << cmd << ": error: " << e.what() << "\n";
         return 2;
