@@ -80,6 +80,7 @@ public:
             return;
         }
         // Implicit cell: all corners are occurrences in one tet, whose chart gives the frame.
+        if (!in.implicit || h - nExplicit >= in.implicit->cells.size()) return;  // no starts (tet_ stays -1)
         const auto& cell = in.implicit->cells[h - nExplicit];
         for (int c = 0; c < 8; ++c) occurrence(in, cell[static_cast<std::size_t>(c)], tet_, z_[c]);
         for (int k = 0; k < 3; ++k) {
