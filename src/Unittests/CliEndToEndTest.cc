@@ -7,6 +7,8 @@
 
 #include "ToolPath.hh"
 
+#include <HexEx/IO/HexExFile.hh>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -331,4 +333,59 @@ TEST_F(CliEndToEndTest, EdgeArcsNeedVtu) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--edge-arcs: '" + path("a.vtk") + "' must end in .vtu"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(path("cube.vtu")));
+}
+
+TEST_F(CliEndToEndTest, MaxMemoryRefusesANeedleWithExitTwo) {
+    const std::string sphere = "../shared/data/sphere.hexex";
+    if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
+    pm.params[10][2][1] = 1e6;  // one corrupted number: a needle tet
+    HexEx::writeHexExFile(path("needle.hexex"), pm);
+    const RunResult r = run({"extract", path("needle.hexex"), "-o", path("out.vtu"), "--max-memory", "300M", "-q"});
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("more than the budget of 300.0 MB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("tet 10 ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+}
+
+TEST_F(CliEndToEndTest, MaxMemoryRejectsABadSize) {
+    generateCube("cube.hexex", 1, 1);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "12X"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--max-memory: memory size '12X': unknown unit"), std::string::npos) << r.err;
+    const RunResult ok = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "64M", "-q"});
+    EXPECT_EQ(ok.status, 0) << ok.err;
+}
+
+// `generate from-hex`: an extracted mesh becomes a folded map whose extraction is that mesh
+// again; a file with non-hex cells or a bad option is refused with a clear message.
+TEST_F(CliEndToEndTest, GenerateFromHexMesh) {
+    generateCube("cube.hexex", 2, 3);
+    RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtk"), "--quiet"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run({"generate", "from-hex", path("cube.vtk"), "--perturb", "0.6", "--seed", "4", "-o", path("map.hexex")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("from-hex, 199 vertices, 648 tets, parametric volume 27"), std::string::npos) << r.out;
+    r = run({"extract", path("map.hexex"), "-o", path("again.vtk"), "--report", path("r.json")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("27 hexes, 64 vertices, valid all-hex"), std::string::npos) << r.out;
+    r = run({"generate", "from-hex", path("cube.vtk"), "--scale", "2", "-o", path("map2.hexex"), "--quiet"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run({"extract", path("map2.hexex"), "-o", path("again2.vtk")});
+    EXPECT_NE(r.out.find("216 hexes, 343 vertices, valid all-hex"), std::string::npos) << r.out;
+    r = run({"generate", "from-hex", path("cube.vtk"), "--perturb", "1.5", "-o", path("bad.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--perturb"), std::string::npos) << r.err;
+    r = run({"generate", "from-hex", "-o", path("bad.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("no hex mesh file given"), std::string::npos) << r.err;
+    {
+        std::ofstream tet(path("tet.vtk"));
+        tet << "# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"
+               "CELLS 1 5\n4 0 1 2 3\nCELL_TYPES 1\n10\n";
+    }
+    r = run({"generate", "from-hex", path("tet.vtk"), "-o", path("bad.hexex")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("1 non-hex cells"), std::string::npos) << r.err;
 }

@@ -273,3 +273,40 @@ TEST(UnionFind, ClassesAndSmallestRoot) {
     for (int x : {1, 2, 5, 8}) EXPECT_EQ(uf.find(x), 1);
     EXPECT_NE(uf.find(3), uf.find(1));
 }
+
+// An invalid map names its offending darts: the first ones per failing check, in dart
+// order, at most kExamplesPerCheck each, the same for any thread count; a valid one none.
+TEST(GMap, ValidatorNamesOffendingDarts) {
+    const GMap<3> hex = makeHex();
+    GMap<3> g;
+    g.add_darts(96);
+    for (int h = 0; h < 2; ++h)
+        for (int d = 0; d < 48; ++d)
+            for (int i = 0; i < 3; ++i) g.link(DartHandle(48 * h + d), DartHandle(48 * h + hex.alpha(DartHandle(d), i).idx()), i);
+    for (int d = 8; d < 16; ++d) g.sew(DartHandle(d), DartHandle(48 + d), 3);
+    EXPECT_TRUE(validateHexGMap(g).valid());
+    EXPECT_TRUE(validateHexGMap(g).examples.empty());
+    // Cross two alpha_3 links of the shared quad: darts 8, 9 go to 57, 56 (eq2 breaks).
+    g.unsew(DartHandle(8), 3);
+    g.unsew(DartHandle(9), 3);
+    g.sew(DartHandle(8), DartHandle(57), 3);
+    g.sew(DartHandle(9), DartHandle(56), 3);
+    for (int threads : {1, 2}) {
+        const GMapValidation v = validateHexGMap(g, nullptr, threads);
+        EXPECT_FALSE(v.valid());
+        EXPECT_EQ(v.eq2_face_connection, 8);  // 8, 9, 10, 15 and 56, 57, 58, 63 on the other side
+        ASSERT_EQ(v.examples.size(), 4u);
+        std::vector<int> darts;
+        for (const auto& e : v.examples) {
+            EXPECT_EQ(e.check, "eq2");
+            darts.push_back(e.dart);
+        }
+        EXPECT_EQ(darts, (std::vector<int>{8, 9, 10, 15}));
+        // Face vertices from a vertex labelling: corner k of the loop of quad 1 gets id 100+k.
+        GMapValidation w = v;
+        std::vector<int> vertex(96, -1);
+        for (int d = 0; d < 96; ++d) vertex[static_cast<std::size_t>(d)] = 100 + ((d % 48) / 2 + (d % 2)) % 4;
+        describeViolations(g, vertex, w);
+        EXPECT_EQ(w.examples[0].face_vertices, (std::vector<int>{100, 101, 102, 103}));
+    }
+}

@@ -54,7 +54,8 @@ ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitReq
     addToReport(map, r.report);
     r.map_darts = static_cast<long>(map.map.n_darts());
     const DartGeometry geo =
-        placementStage({&pm.mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads});
+        placementStage({&pm.mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads,
+                        &survivors.heir});
     r.placed_points = static_cast<long>(geo.placement.position.size());
     if (implicit) {
         cells.dart_occurrence = implicitDartOccurrences(darts.darts, survivors.alive, survivors.new_index, survivors.n_alive, threads);

@@ -4,6 +4,7 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
+#include <functional>
 #include <sstream>
 
 namespace HexEx {
@@ -237,6 +238,75 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
     }
 }
 
+
+/// Size of the orbit of @p s under the involutions @p gens (at most @p cap darts are visited).
+template <class Gen>
+int orbitSize(int s, const std::vector<Gen>& gens, int cap) {
+    std::vector<int> seen{s}, stack{s};
+    while (!stack.empty() && static_cast<int>(seen.size()) < cap) {
+        const int d = stack.back();
+        stack.pop_back();
+        for (const auto& f : gens) {
+            const int x = f(d);
+            if (std::find(seen.begin(), seen.end(), x) == seen.end()) {
+                seen.push_back(x);
+                stack.push_back(x);
+            }
+        }
+    }
+    return static_cast<int>(seen.size());
+}
+
+/// Fills v.examples: the first darts (ascending) that fail each check counted in @p v.
+void collectExamples(const GMap<3>& g, GMapValidation& v) {
+    const auto& L = g.links();
+    const std::size_t n = g.n_darts();
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    using Gen = std::function<int(int)>;
+    const std::vector<Gen> quad = {[&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); }};
+    const std::vector<Gen> corner = {[&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); }};
+    const std::vector<Gen> strip = {[&](int d) { return a(d, 0); }, [&](int d) { return a(a(a(d, 1), 2), 1); }};
+    const std::vector<Gen> cell = {[&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
+                                   [&](int d) { return a(d, 2); }};
+    const char* names[8] = {"not_involution", "open_link", "eq1", "eq2", "eq3", "eq4", "eq5", "eq6"};
+    const long counts[8] = {v.not_involution, v.open_links, v.eq1_edge_connection, v.eq2_face_connection,
+                            v.eq3_quad, v.eq4_corner, v.eq5_strip, v.eq6_hex};
+    std::vector<std::vector<int>> found(8);
+    auto need = [&](int k) { return counts[k] > 0 && static_cast<int>(found[k].size()) < GMapValidation::kExamplesPerCheck; };
+    for (std::size_t s = 0; s < n; ++s) {
+        bool any = false;
+        for (int k = 0; k < 8; ++k) any = any || need(k);
+        if (!any) break;
+        const int d = static_cast<int>(s);
+        if (!g.is_alive(DartHandle(d))) continue;
+        bool inv = true;
+        for (int i = 0; i < 4; ++i) {
+            const int x = a(d, i);
+            if (!g.is_alive(DartHandle(x)) || a(x, i) != d) inv = false;
+        }
+        if (!inv) {
+            if (need(0)) found[0].push_back(d);
+            continue;  // the other checks assume involutions
+        }
+        if (need(1) && (a(d, 0) == d || a(d, 1) == d || a(d, 2) == d)) found[1].push_back(d);
+        if (need(2) && a(a(a(a(d, 0), 2), 0), 2) != d) found[2].push_back(d);
+        if (need(3) && a(d, 3) != d && (a(a(a(a(d, 0), 3), 0), 3) != d || a(a(a(a(d, 1), 3), 1), 3) != d))
+            found[3].push_back(d);
+        if (need(4) && orbitSize(d, quad, 64) != 8) found[4].push_back(d);
+        if (need(5) && orbitSize(d, corner, 64) != 6) found[5].push_back(d);
+        if (need(6) && orbitSize(d, strip, 64) != 8) found[6].push_back(d);
+        if (need(7) && orbitSize(d, cell, 256) != 48) found[7].push_back(d);
+    }
+    v.examples.clear();
+    for (int k = 0; k < 8; ++k)
+        for (int d : found[k]) {
+            GMapViolation e;
+            e.check = names[k];
+            e.dart = d;
+            v.examples.push_back(e);
+        }
+}
+
 } // namespace
 
 std::vector<int> labelVertexOrbits(const GMap<3>& g, const HexOrbitLabels& labels, int* n_labels) {
@@ -355,6 +425,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
         if (!overlap) cells = findCells(g);
         labelCellByCell(g, v, labels, threads, std::move(cells));
+        if (!v.valid()) collectExamples(g, v);
         return v;
     }
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
@@ -386,7 +457,26 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         labels->face_size = std::move(s01);
         labels->corner_size = std::move(s12);
     }
+    if (!v.valid()) collectExamples(g, v);
     return v;
+}
+
+void describeViolations(const GMap<3>& g, const std::vector<int>& vertex_label, GMapValidation& v) {
+    const auto& L = g.links();
+    for (GMapViolation& e : v.examples) {
+        e.face_vertices.clear();
+        if (e.dart < 0 || static_cast<std::size_t>(e.dart) >= L.size()) continue;
+        int d = e.dart;
+        for (int step = 0; step < 16; ++step) {
+            const int vl = static_cast<std::size_t>(d) < vertex_label.size() ? vertex_label[static_cast<std::size_t>(d)] : -1;
+            if (step % 2 == 0 && (e.face_vertices.empty() || e.face_vertices.back() != vl)) e.face_vertices.push_back(vl);
+            const int nx = L[static_cast<std::size_t>(d)][step % 2];
+            if (nx < 0 || static_cast<std::size_t>(nx) >= L.size() || nx == d) break;
+            d = nx;
+            if (d == e.dart) break;
+        }
+        if (e.face_vertices.size() > 1 && e.face_vertices.front() == e.face_vertices.back()) e.face_vertices.pop_back();
+    }
 }
 
 std::string GMapValidation::summary() const {

@@ -10,8 +10,19 @@
 
 namespace HexEx {
 
+/// One dart that fails one check of validateHexGMap().
+struct GMapViolation {
+    std::string check;  ///< "not_involution", "open_link", "eq1" .. "eq6"
+    int dart = -1;      ///< the dart (index in the map)
+    /// Output vertices of the dart's face (its <alpha_0, alpha_1> orbit walked from the
+    /// dart), filled by describeViolations() when the mesh is assembled; empty otherwise.
+    std::vector<int> face_vertices;
+};
+
 /// Violations found by validateHexGMap(), counted per dart (or per orbit where noted).
 struct GMapValidation {
+    /// At most this many example darts are kept per check.
+    static constexpr int kExamplesPerCheck = 4;
     long darts = 0;                 ///< alive darts checked
     long not_involution = 0;        ///< darts with alpha_i(alpha_i(d)) != d or linked to an erased dart
     long open_links = 0;            ///< darts with a free alpha_0, alpha_1 or alpha_2 (cell not closed)
@@ -22,6 +33,9 @@ struct GMapValidation {
     long eq5_strip = 0;             ///< darts whose <alpha_0, alpha_1 alpha_2 alpha_1> orbit does not have 8 darts
     long eq6_hex = 0;               ///< darts whose <alpha_0, alpha_1, alpha_2> orbit does not have 48 darts
     long boundary_darts = 0;        ///< darts with free alpha_3 (on the boundary)
+    /// Examples when invalid: for each failing check, its first kExamplesPerCheck darts in
+    /// dart order (so the same for any thread count), in the order of the checks above.
+    std::vector<GMapViolation> examples;
     /// True if no violation was found.
     bool valid() const {
         return not_involution == 0 && open_links == 0 && eq1_edge_connection == 0 && eq2_face_connection == 0 &&
@@ -57,6 +71,11 @@ struct HexOrbitLabels {
 /// the independent orbit labelings of the general case) in parallel; the result does not
 /// depend on it.
 GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1);
+
+/// Output vertices of each example's face: @p vertex_label gives the output vertex of every
+/// dart (-1 for none); the face is walked from the example dart by alpha_0 and alpha_1
+/// (at most 16 steps).
+void describeViolations(const GMap<3>& g, const std::vector<int>& vertex_label, GMapValidation& v);
 
 /// Labels the orbits of @p g for the links in @p mask (bit i = alpha_i): returns a label
 /// per dart (-1 for erased darts), labels numbered 0.. in order of their smallest dart.

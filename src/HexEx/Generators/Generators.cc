@@ -1,6 +1,7 @@
 #include "Generators.hh"
 
 #include "../Predicates/ExactPredicates.hh"
+#include "RandomDraws.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -66,23 +67,6 @@ void requireAtLeast(int value, int minimum, const char* name, const char* fn) {
     if (value < minimum)
         throw std::invalid_argument(std::string(fn) + ": " + name + " must be at least " + std::to_string(minimum) +
                                     ", got " + std::to_string(value));
-}
-
-/// Uniform integer in [0, n) from raw 32-bit draws (rejection sampling; n > 0).
-std::uint32_t uniformBelow(std::mt19937& gen, std::uint32_t n) {
-    const std::uint64_t range = std::uint64_t(1) << 32;
-    const std::uint64_t limit = range - range % n;
-    for (;;) {
-        const std::uint64_t x = static_cast<std::uint32_t>(gen());
-        if (x < limit) return static_cast<std::uint32_t>(x % n);
-    }
-}
-
-/// Uniform double in [0, 1) with 53 random bits from two 32-bit draws.
-double uniform01(std::mt19937& gen) {
-    const std::uint32_t hi = static_cast<std::uint32_t>(gen()) >> 5;  // 27 bits
-    const std::uint32_t lo = static_cast<std::uint32_t>(gen()) >> 6;  // 26 bits
-    return (static_cast<double>(hi) * 67108864.0 + static_cast<double>(lo)) * (1.0 / 9007199254740992.0);
 }
 
 /// Builds a ring of nu x nv x nw boxes, periodic in u. @p twisted glues the seam by a quarter

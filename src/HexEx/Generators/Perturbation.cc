@@ -4,6 +4,7 @@
 #include "Perturbation.hh"
 
 #include "../Preprocessing/Transitions.hh"
+#include "RandomDraws.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -14,13 +15,6 @@
 namespace HexEx {
 
 namespace {
-
-/// Uniform double in [0, 1) with 53 random bits from two 32-bit draws.
-double uniform01(std::mt19937& rng) {
-    const std::uint64_t hi = static_cast<std::uint32_t>(rng()) >> 5;  // 27 bits
-    const std::uint64_t lo = static_cast<std::uint32_t>(rng()) >> 6;  // 26 bits
-    return static_cast<double>((hi << 26) | lo) * (1.0 / 9007199254740992.0);
-}
 
 /// Local index of @p v in cell @p c, or -1.
 int cornerOf(const TetMesh& mesh, CellHandle c, VertexHandle v) {

@@ -163,6 +163,21 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("eq6_hex", v.eq6_hex);
             w.num("boundary_darts", v.boundary_darts);
             w.raw("summary", jsonQuote(v.summary()));
+            if (!v.examples.empty()) {
+                // Bounded: GMapValidation::kExamplesPerCheck darts per failing check.
+                std::string list = "[";
+                for (std::size_t k = 0; k < v.examples.size(); ++k) {
+                    const GMapViolation& e = v.examples[k];
+                    std::string face = "[";
+                    for (std::size_t i = 0; i < e.face_vertices.size(); ++i)
+                        face += (i ? ", " : "") + std::to_string(e.face_vertices[i]);
+                    face += "]";
+                    list += std::string(k ? "," : "") + "\n      {\"check\": " + jsonQuote(e.check) +
+                            ", \"dart\": " + std::to_string(e.dart) + ", \"face_vertices\": " + face + "}";
+                }
+                list += "\n    ]";
+                w.raw("violations", list);
+            }
         }));
         std::string warnings = "[";
         bool first = true;

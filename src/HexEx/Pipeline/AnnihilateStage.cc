@@ -13,7 +13,7 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
     const std::size_t nd = in.alpha->size();
     out.alive.assign(nd, 1);
     if (in.merge) {
-        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive);
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir);
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;
     } else {

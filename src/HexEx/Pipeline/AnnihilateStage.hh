@@ -8,6 +8,7 @@
 #include "../GMap/GMap.hh"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace HexEx {
@@ -27,6 +28,9 @@ struct AnnihilateOutput {
     int n_alive = 0;               ///< survivors
     long pairs = 0;                ///< annihilated regular/anti pairs
     long remaining_anti = 0;       ///< anti darts left
+    /// (removed dart, surviving dart that inherits its h-vertex) pairs, ascending (see
+    /// annihilateDarts()); empty without merge.
+    std::vector<std::pair<int, int>> heir;
 };
 
 /// Annihilates (if merge) and numbers the surviving darts in order.

@@ -287,17 +287,28 @@ HexArcs arcStage(const ArcInput& in) {
         }
     });
 
-    // Concatenate in chunk order (a single chunk is moved).
+    // Concatenate in chunk order (a single chunk is moved; otherwise each chunk is freed
+    // once copied, so the peak is the output plus one chunk).
+    std::size_t nArc = 0, nPatch = 0, nTri = 0;
+    for (const ChunkResult& R : parts) {
+        nArc += R.arc_points.size();
+        nPatch += R.patch_points.size();
+        nTri += R.triangles.size();
+    }
     if (parts.size() == 1) {
         out.arc_points = std::move(parts[0].arc_points);
         out.patch_points = std::move(parts[0].patch_points);
         out.patch_triangles = std::move(parts[0].triangles);
+    } else {
+        out.arc_points.reserve(nArc);
+        out.patch_points.reserve(nPatch);
+        out.patch_triangles.reserve(nTri);
     }
     out.arc_offset.reserve(out.edges.size() + 1);
     out.patch_offset.reserve(out.faces.size() + 1);
     out.arc_offset.assign(1, 0);
     out.patch_offset.assign(1, 0);
-    for (const ChunkResult& R : parts) {
+    for (ChunkResult& R : parts) {
         for (std::size_t k = 0; k < R.arc_size.size(); ++k) {
             if (R.arc_size[k] == 0) out.failed_edges.push_back(static_cast<int>(out.arc_offset.size() - 1));
             out.arc_offset.push_back(out.arc_offset.back() + R.arc_size[k]);
@@ -311,6 +322,7 @@ HexArcs arcStage(const ArcInput& in) {
         const int base = static_cast<int>(out.patch_points.size());
         for (auto t : R.triangles) out.patch_triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
         out.patch_points.insert(out.patch_points.end(), R.patch_points.begin(), R.patch_points.end());
+        R = ChunkResult();  // free the chunk
     }
     return out;
 }

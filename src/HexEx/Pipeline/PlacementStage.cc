@@ -50,6 +50,26 @@ DartGeometry placementStage(const PlacementInput& in) {
             geo.placement.point[dk] = run;
         }
     });
+    if (in.heir && !in.heir->empty()) {
+        // Removed regular darts with an heir: one extra placed point per (tet, grid point)
+        // run and heir, in dart order.
+        int lastTet = -1, lastHeir = -1;
+        Vec3i lastZ(0, 0, 0);
+        for (const auto& [d, h] : *in.heir) {
+            const Dart& D = ds.darts[static_cast<std::size_t>(d)];
+            const bool flipped = D.sign < 0;
+            if (D.tet == lastTet && samePoint(D.z, lastZ) && h == lastHeir) continue;
+            lastTet = D.tet;
+            lastZ = D.z;
+            lastHeir = h;
+            std::array<int, 3> bhf = {-1, -1, -1};
+            geo.placement.position.push_back(gridPointPosition(*in.mesh, *in.tets, ds, D.tet, D.z, &bhf));
+            geo.placement.boundary_hf.push_back(bhf);
+            geo.placement.extra_dart.push_back(newIndex[static_cast<std::size_t>(h)]);
+            geo.placement.extra_point.push_back(static_cast<int>(geo.placement.position.size()) - 1);
+            geo.placement.extra_flipped.push_back(flipped ? 1 : 0);
+        }
+    }
     return geo;
 }
 

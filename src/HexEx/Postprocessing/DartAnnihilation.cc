@@ -1,13 +1,32 @@
 #include "DartAnnihilation.hh"
 
+#include "../Core/UnionFind.hh"
+
+#include <algorithm>
 #include <deque>
+#include <unordered_map>
+#include <utility>
 
 namespace HexEx {
 
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
-                                  std::vector<char>& alive) {
+                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs) {
     AnnihilationStats st;
     const long n = static_cast<long>(alpha.size());
+    // Union-find over the darts the annihilation touches only (local ids), so that maps
+    // with few folds pay nothing per dart.
+    UnionFind sameVertex(0);
+    std::unordered_map<long, int> local;
+    std::vector<long> touched;  // dart per local id
+    auto idOf = [&](long d) {
+        const auto it = local.find(d);
+        if (it != local.end()) return it->second;
+        const int id = static_cast<int>(touched.size());
+        local.emplace(d, id);
+        touched.push_back(d);
+        sameVertex.parent.push_back(id);
+        return id;
+    };
     std::deque<long> work;
     std::vector<char> queued(static_cast<std::size_t>(n), 0);
     for (long d = 0; d < n; ++d)
@@ -27,6 +46,17 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
             if (r >= 0 && r != anti && alive[static_cast<std::size_t>(r)] && sign[static_cast<std::size_t>(r)] > 0) reg = r;
         }
         if (reg < 0) continue;
+        if (heirs) {
+            // The pair's h-vertices merge (paper 4.4.2: a pair linked by alpha_0 joins the
+            // vertices of its two darts), and each dart stays with the darts around its
+            // h-vertex (alpha_1..alpha_3 partners).
+            sameVertex.unite(idOf(reg), idOf(anti));
+            for (int j = 1; j < 4; ++j)
+                for (const long self : {reg, anti}) {
+                    const long x = A(self)[j];
+                    if (x >= 0 && x != reg && x != anti) sameVertex.unite(idOf(self), idOf(x));
+                }
+        }
         for (int j = 0; j < 4; ++j) {
             const long x = A(reg)[j], y = A(anti)[j];
             if (x == anti) continue;
@@ -55,6 +85,22 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
     }
     for (long d = 0; d < n; ++d)
         if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) ++st.remaining_anti;
+    if (heirs) {
+        // Smallest surviving dart per group, then (removed dart, heir) in dart order.
+        heirs->clear();
+        std::vector<long> heirOf(touched.size(), -1);  // per root
+        for (std::size_t k = 0; k < touched.size(); ++k) {
+            if (!alive[static_cast<std::size_t>(touched[k])]) continue;
+            long& h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(k)))];
+            if (h < 0 || touched[k] < h) h = touched[k];
+        }
+        for (std::size_t k = 0; k < touched.size(); ++k) {
+            if (alive[static_cast<std::size_t>(touched[k])]) continue;
+            const long h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(k)))];
+            if (h >= 0) heirs->emplace_back(static_cast<int>(touched[k]), static_cast<int>(h));
+        }
+        std::sort(heirs->begin(), heirs->end());
+    }
     return st;
 }
 

@@ -1,5 +1,7 @@
 #include "HexMeshAssembly.hh"
 
+#include "VertexPreimageChoice.hh"
+
 #include "../Core/Parallel.hh"
 #include "../Core/UnionFind.hh"
 #include "../GMap/GMapValidator.hh"
@@ -87,7 +89,9 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (long o = 0; o < nocc; ++o)
             if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(nk + static_cast<int>(o));
     }
-    out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads);
+    if (stats.violations) describeViolations(g, vlabel, *stats.violations);
+    VertexCandidates candidates;
+    out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads, &candidates);
     if (implicit) {
         // Classes without darts: position of their occurrence.
         std::vector<char> hasDart(static_cast<std::size_t>(nv), 0);
@@ -236,6 +240,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         stats.quads = (cellFaces + stats.boundary_quads) / 2;
     }
     stats.non_hex_cells = static_cast<long>(out.polyhedra.size()) + stats.collapsed_cells;
+    stats.ambiguous_vertices = static_cast<long>(candidates.vertex.size());
+    chooseVertexPreimages(out, candidates);
     return out;
 }
 

@@ -22,6 +22,10 @@ struct AssemblyStats {
     long non_hex_cells = 0;   ///< cells written as polyhedra
     long degenerate_faces = 0;  ///< faces of non-hex cells with fewer than 3 distinct vertices (left out)
     long collapsed_cells = 0;   ///< non-hex cells without any proper face (reported, not written)
+    long ambiguous_vertices = 0;  ///< vertices with several distinct preimages (chooseVertexPreimages())
+    /// If set by the caller, the validation whose violation examples get the output vertices
+    /// of their faces (describeViolations()).
+    GMapValidation* violations = nullptr;
 };
 
 /// Per-dart input of the assembly.

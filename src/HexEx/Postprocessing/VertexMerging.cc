@@ -31,6 +31,7 @@ std::vector<Vec3d> distinctPositions(std::vector<Vec3d> p, double tol) {
     return out;
 }
 
+/// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
     for (const auto& x : p) c += x;
@@ -40,7 +41,7 @@ Vec3d centroid(const std::vector<Vec3d>& p) {
 } // namespace
 
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts, int threads) {
+                                         const DartPlacement& darts, int threads, VertexCandidates* candidates) {
     // Group darts by class (counting sort keeps darts ascending within a class).
     const auto nc = static_cast<std::size_t>(n_classes);
     std::vector<int> off(nc + 1, 0);
@@ -53,6 +54,22 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         for (std::size_t d = 0; d < label.size(); ++d)
             if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
     }
+    // Extra placed points (removed regular darts) per class, in order.
+    std::vector<int> xoff(nc + 1, 0), xidx(darts.extra_dart.size());
+    std::vector<char> xflip(darts.extra_dart.size(), 0);
+    for (int d : darts.extra_dart)
+        if (label[static_cast<std::size_t>(d)] >= 0) ++xoff[static_cast<std::size_t>(label[static_cast<std::size_t>(d)]) + 1];
+    for (std::size_t l = 0; l < nc; ++l) xoff[l + 1] += xoff[l];
+    {
+        std::vector<int> fill(xoff.begin(), xoff.end() - 1);
+        for (std::size_t k = 0; k < darts.extra_dart.size(); ++k) {
+            const int l = label[static_cast<std::size_t>(darts.extra_dart[k])];
+            if (l < 0) continue;
+            const auto at = static_cast<std::size_t>(fill[static_cast<std::size_t>(l)]++);
+            xidx[at] = darts.extra_point[k];
+            xflip[at] = k < darts.extra_flipped.size() ? darts.extra_flipped[k] : 0;
+        }
+    }
     // Tolerance for "same h-vertex": relative to the mesh size.
     Vec3d lo = mesh.n_vertices() ? mesh.position(VertexHandle(0)) : Vec3d(0, 0, 0), hi = lo;
     for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
@@ -62,33 +79,65 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
 
     std::vector<Vec3d> out(nc);
-    // Classes are independent: parallel chunks, each with its own scratch buffers.
+    // Classes are independent: parallel chunks, each with its own scratch buffers and its
+    // own list of ambiguous classes (concatenated in chunk order: ascending classes).
     const int chunks = std::max(1, std::min(threads, n_classes / 1024));
-    parallelChunks(nc, chunks, [&](int, std::size_t lb, std::size_t le) {
+    std::vector<VertexCandidates> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(nc, chunks, [&](int part, std::size_t lb, std::size_t le) {
+        VertexCandidates& cand = parts[static_cast<std::size_t>(part)];
         std::vector<Vec3d> all, bnd;
         std::vector<int> planes;
+        std::vector<Vec3d> flippedPts;  // positions of annihilated anti darts of the class
+        std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
             all.clear();
             bnd.clear();
             planes.clear();
-            for (int k = off[l]; k < off[l + 1]; ++k) {
-                const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
-                const auto q = static_cast<std::size_t>(darts.point[d]);
+            auto addPoint = [&](std::size_t q) {
                 all.push_back(darts.position[q]);
                 if (darts.boundary_hf[q][0] >= 0) {
                     bnd.push_back(darts.position[q]);
                     for (int hf : darts.boundary_hf[q])
                         if (hf >= 0) planes.push_back(hf);
                 }
+            };
+            flippedPts.clear();
+            for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
+                if (xflip[static_cast<std::size_t>(k)]) flippedPts.push_back(darts.position[static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)])]);
+                else addPoint(static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]));
+            }
+            for (int k = off[l]; k < off[l + 1]; ++k) {
+                const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
+                addPoint(static_cast<std::size_t>(darts.point[d]));
             }
             if (all.empty()) continue;
+            // Distinct anti-dart positions not among @p known (last-resort candidates).
+            auto flippedExtras = [&](const std::vector<Vec3d>& known) {
+                std::vector<Vec3d> extra;
+                if (flippedPts.empty()) return extra;
+                for (const Vec3d& p : distinctPositions(flippedPts, tol)) {
+                    bool dup = false;
+                    for (const Vec3d& q : known) dup = dup || (p - q).norm() <= tol;
+                    if (!dup) extra.push_back(p);
+                }
+                return extra;
+            };
             if (bnd.empty()) {
                 const auto dist = distinctPositions(all, tol);
-                out[l] = dist.size() == 1 ? dist[0] : centroid(dist);
+                out[l] = dist[0];
+                const auto extra = flippedExtras(dist);
+                if (dist.size() > 1 || !extra.empty()) {
+                    cand.vertex.push_back(static_cast<int>(l));
+                    cand.preferred.push_back(static_cast<int>(dist.size()));
+                    cand.offset.push_back(static_cast<int>(cand.position.size()));
+                    cand.position.insert(cand.position.end(), dist.begin(), dist.end());
+                    cand.position.insert(cand.position.end(), extra.begin(), extra.end());
+                }
                 continue;
             }
-            const auto dist = distinctPositions(bnd, tol);
-            if (dist.size() == 1) {
+            std::vector<Vec3d> dist = distinctPositions(bnd, tol);
+            const std::vector<Vec3d> allDist = distinctPositions(all, tol);
+            if (dist.size() == 1 && allDist.size() == 1 && flippedPts.empty()) {
                 out[l] = dist[0];
                 continue;
             }
@@ -99,6 +148,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             const Vec3d c = centroid(dist);
             Eigen::Matrix3d M = Eigen::Matrix3d::Identity() * 1e-8;
             Eigen::Vector3d rhs(c[0] * 1e-8, c[1] * 1e-8, c[2] * 1e-8);
+            normals.clear();
             for (int hf : planes) {
                 const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
                 const Vec3d a = mesh.position(v[0]);
@@ -106,18 +156,72 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 const double len = n.norm();
                 if (!(len > 0)) continue;
                 n /= len;
+                normals.emplace_back(n, n | a);
                 const Eigen::Vector3d ne(n[0], n[1], n[2]);
                 M += ne * ne.transpose();
                 rhs += ne * (n | a);
             }
             const Eigen::Vector3d x = M.ldlt().solve(rhs);
             const Vec3d target(x[0], x[1], x[2]);
-            std::size_t best = 0;
-            for (std::size_t k = 1; k < dist.size(); ++k)
-                if ((dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()) best = k;
+            // Candidates that lie on all the planes as well as any other (equal residual up
+            // to rounding) are equally good for the rule: boundary h-vertices, and interior
+            // ones that lie on the planes too (a grid point at a boundary vertex of the tet
+            // mesh seen from a tet that touches the boundary only there). The one nearest the
+            // least-squares point comes first, the others of that group next, then the rest.
+            auto residualOf = [&](const Vec3d& p) {
+                double r = 0;
+                for (const auto& [n, off] : normals) r += ((n | p) - off) * ((n | p) - off);
+                return r;
+            };
+            double minRes = residualOf(dist[0]);
+            for (const Vec3d& p : dist) minRes = std::min(minRes, residualOf(p));
+            const double resTol = minRes + 4.0 * tol * tol * static_cast<double>(normals.size() + 1);
+            for (const Vec3d& p : allDist) {
+                bool known = false;
+                for (const Vec3d& q : dist) known = known || (p - q).norm() <= tol;
+                if (!known && residualOf(p) <= resTol) dist.push_back(p);
+            }
+            std::vector<Vec3d> extra;
+            for (const Vec3d& p : flippedExtras(dist))
+                if (residualOf(p) <= resTol) extra.push_back(p);
+            if (dist.size() == 1 && extra.empty()) {
+                out[l] = dist[0];
+                continue;
+            }
+            std::vector<double> residual(dist.size(), 0.0);
+            for (std::size_t k = 0; k < dist.size(); ++k) residual[k] = residualOf(dist[k]);
+            std::size_t best = dist.size();
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (residual[k] <= resTol &&
+                    (best == dist.size() || (dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()))
+                    best = k;
             out[l] = dist[best];
+            cand.vertex.push_back(static_cast<int>(l));
+            cand.offset.push_back(static_cast<int>(cand.position.size()));
+            cand.position.push_back(dist[best]);
+            int preferred = 1;
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (k != best && residual[k] <= resTol) {
+                    cand.position.push_back(dist[k]);
+                    ++preferred;
+                }
+            cand.preferred.push_back(preferred);
+            for (std::size_t k = 0; k < dist.size(); ++k)
+                if (k != best && residual[k] > resTol) cand.position.push_back(dist[k]);
+            cand.position.insert(cand.position.end(), extra.begin(), extra.end());
         }
     });
+    if (candidates) {
+        *candidates = VertexCandidates();
+        for (const VertexCandidates& c : parts) {
+            const int base = static_cast<int>(candidates->position.size());
+            candidates->vertex.insert(candidates->vertex.end(), c.vertex.begin(), c.vertex.end());
+            candidates->preferred.insert(candidates->preferred.end(), c.preferred.begin(), c.preferred.end());
+            for (int o : c.offset) candidates->offset.push_back(base + o);
+            candidates->position.insert(candidates->position.end(), c.position.begin(), c.position.end());
+        }
+        candidates->offset.push_back(static_cast<int>(candidates->position.size()));
+    }
     return out;
 }
 

@@ -17,15 +17,46 @@ struct DartPlacement {
     std::vector<int> point;                        ///< per dart: index of its placed point
     std::vector<Vec3d> position;                   ///< per placed point: 3D position of the grid point in its tet
     std::vector<std::array<int, 3>> boundary_hf;   ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
+    /// Extra placed points of removed regular darts (annihilation), each attached to the
+    /// surviving dart extra_dart[k] that inherited its h-vertex: another preimage of the
+    /// same grid point, used as a position candidate of that dart's vertex.
+    std::vector<int> extra_dart;
+    std::vector<int> extra_point;  ///< placed point of each extra (index into position)
+    /// Per extra: 1 if it comes from an anti dart (a preimage in the flipped part of the
+    /// map): such positions are candidates only after all others.
+    std::vector<char> extra_flipped;
 };
 
-/// Merged position per class: the centroid of the class's distinct h-vertex positions if
-/// none lies on the boundary; otherwise the point closest (least squares, Eigen) to the
-/// planes of the boundary faces incident to its boundary h-vertices, replaced by the
-/// boundary h-vertex nearest to it so the vertex stays on the input boundary.
+/// Classes whose h-vertices lie at several distinct positions (preimages of one grid point,
+/// e.g. a proper one and fold copies), with those positions as candidates.
+struct VertexCandidates {
+    std::vector<int> vertex;        ///< the classes that have more than one candidate, ascending
+    /// Per listed class: how many leading candidates its placement rule rates equally (all
+    /// for interior classes; for boundary classes those closest to the boundary planes).
+    std::vector<int> preferred;
+    std::vector<int> offset;        ///< candidates of vertex[k]: position[offset[k] .. offset[k + 1])
+    /// Candidate positions: distinct h-vertex positions, sorted by x, y, z; for boundary
+    /// classes the boundary h-vertices, the boundary rule's choice first, then the others
+    /// closest to the planes, then the rest.
+    std::vector<Vec3d> position;
+};
+
+/// Merged position per class, always the position of one of its h-vertices (a true
+/// preimage of the class's grid point, never an average). Positions of annihilated anti
+/// darts (DartPlacement::extra_flipped) are appended to a class's candidates after all
+/// others and never preferred. Interior classes (no h-vertex
+/// on the boundary): the only distinct position if there is one; otherwise the first
+/// candidate, and the class is listed in @p candidates (if given) so that
+/// chooseVertexPreimages() can pick by the quality of the incident hexes. Boundary
+/// classes: the point closest (least squares, Eigen) to the planes of the boundary faces
+/// incident to its boundary h-vertices, replaced by the boundary h-vertex nearest to it so
+/// the vertex stays on the input boundary (paper 4.4.2), among the boundary h-vertices
+/// closest to those planes (smallest sum of squared distances, up to rounding); if it has
+/// several boundary h-vertices it is listed too, with that choice first.
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
-                                         const DartPlacement& darts, int threads = 1);
+                                         const DartPlacement& darts, int threads = 1,
+                                         VertexCandidates* candidates = nullptr);
 
 } // namespace HexEx

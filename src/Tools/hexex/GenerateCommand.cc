@@ -1,11 +1,16 @@
 /// @file GenerateCommand.cc
 /// `hexex generate cube|cylinder|ring|twisted-ring [shape options] [--chart-noise SEED]
-/// [--fp-noise A] -o OUT.hexex`: procedural test inputs with known hex meshes.
+/// [--fp-noise A] -o OUT.hexex`: procedural test inputs with known hex meshes; and
+/// `hexex generate from-hex MESH [--perturb A] [--seed S] [--scale K] -o OUT.hexex`: a map
+/// whose expected hex mesh is a given one.
 
 #include "ArgParser.hh"
 #include "Commands.hh"
 
+#include <HexEx/Core/Error.hh>
 #include <HexEx/Generators/Generators.hh>
+#include <HexEx/Generators/MapFromHexMesh.hh>
+#include <HexEx/IO/HexMeshReaders.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/MapStatistics.hh>
 
@@ -28,10 +33,16 @@ const char* kGenerateUsage =
     "                ring periodic in the first parameter; L*W*H hexes\n"
     "  twisted-ring  --length L [8] --width W [2] --nu NU [8] --nv NV [2]\n"
     "                square ring glued with a quarter turn (NV even); L*W*W hexes\n"
+    "  from-hex MESH --perturb A [0] --seed S [1] --scale K [1]\n"
+    "                MESH (any all-hex file hexex validate reads) as a map: each hex split into\n"
+    "                24 tets in its own random chart, face/cell centres moved by up to A grid\n"
+    "                units; the expected output is MESH (refined K times per axis)\n"
     "common options:\n"
     "  --chart-noise SEED  re-express every tet in a random grid chart (non-trivial transitions)\n"
     "  --fp-noise A        add uniform noise in [-A, A] to every corner parameter (seed 1)\n"
-    "  --quiet             print nothing but errors\n";
+    "  --quiet             print nothing but errors\n"
+    "2D shapes (triangle meshes with vt parameters, written as OBJ; see hexex generate square --help):\n"
+    "  square, cone-disk, torus, quarter-seam\n";
 
 /// Usage lines of one shape.
 std::string shapeUsage(const std::string& shape) {
@@ -48,14 +59,17 @@ constexpr long kMaxSize = 100000;  ///< upper bound for any size argument (guard
 } // namespace
 
 int runGenerate(const Args& args) {
+    if (!args.empty() && isShape2D(args[0])) return runGenerate2D(args);
     const std::vector<OptionSpec> spec = {
         {"--output", true, "-o"}, {"--chart-noise", true, ""}, {"--fp-noise", true, ""}, {"--quiet", false, "-q"},
         {"--n", true, ""},        {"--scale", true, ""},       {"--valence", true, ""},  {"--radius", true, ""},
         {"--height", true, ""},   {"--m", true, ""},           {"--length", true, ""},   {"--width", true, ""},
-        {"--nu", true, ""},       {"--nv", true, ""},          {"--nw", true, ""},
+        {"--nu", true, ""},       {"--nv", true, ""},          {"--nw", true, ""},      {"--perturb", true, ""},
+        {"--seed", true, ""},
     };
     std::string shape;
-    if (!args.empty() && (args[0] == "cube" || args[0] == "cylinder" || args[0] == "ring" || args[0] == "twisted-ring"))
+    if (!args.empty() && (args[0] == "cube" || args[0] == "cylinder" || args[0] == "ring" || args[0] == "twisted-ring" ||
+                          args[0] == "from-hex"))
         shape = args[0];  // so that early usage errors show this shape's options
     try {
         const ParsedArgs pa = parseArgs(args, spec);
@@ -64,17 +78,21 @@ int runGenerate(const Args& args) {
             return 0;
         }
         if (pa.positional.empty()) throw UsageError("no shape given");
-        if (pa.positional.size() > 1) throw UsageError("unexpected argument '" + pa.positional[1] + "'");
         shape = pa.positional[0];
+        const std::size_t positionals = shape == "from-hex" ? 2 : 1;
+        if (pa.positional.size() < positionals) throw UsageError("no hex mesh file given");
+        if (pa.positional.size() > positionals)
+            throw UsageError("unexpected argument '" + pa.positional[positionals] + "'");
         // Options each shape accepts.
         std::vector<std::string> allowed;
         if (shape == "cube") allowed = {"--n", "--scale"};
         else if (shape == "cylinder") allowed = {"--valence", "--radius", "--height", "--n", "--m"};
         else if (shape == "ring") allowed = {"--length", "--width", "--height", "--nu", "--nv", "--nw"};
         else if (shape == "twisted-ring") allowed = {"--length", "--width", "--nu", "--nv"};
+        else if (shape == "from-hex") allowed = {"--perturb", "--seed", "--scale"};
         else {
             shape.clear();
-            throw UsageError("unknown shape '" + pa.positional[0] + "' (cube, cylinder, ring, twisted-ring)");
+            throw UsageError("unknown shape '" + pa.positional[0] + "' (cube, cylinder, ring, twisted-ring, from-hex)");
         }
         for (const auto& kv : pa.values) {
             const std::string& k = kv.first;
@@ -100,6 +118,24 @@ int runGenerate(const Args& args) {
             } else if (shape == "ring") {
                 pm = HexEx::generateRing(sz("--length", 6), sz("--width", 2), sz("--height", 2), sz("--nu", 6),
                                          sz("--nv", 2), sz("--nw", 2));
+            } else if (shape == "from-hex") {
+                HexEx::MapFromHexOptions o;
+                o.perturb = pa.getDouble("--perturb", 0, 0, 0.999);
+                o.seed = static_cast<unsigned>(
+                    pa.getInt("--seed", 1, 0, static_cast<long>(std::numeric_limits<unsigned>::max())));
+                o.scale = sz("--scale", 1);
+                HexEx::HexMesh source;
+                try {
+                    source = HexEx::readHexMesh(pa.positional[1]);
+                    HexEx::MapFromHexResult r = HexEx::mapFromHexMesh(source, o);
+                    if (r.negative_tets_3d > 0 && !quiet)
+                        std::cerr << "hexex generate: warning: " << r.negative_tets_3d
+                                  << " tets are not positively oriented in 3D (inverted or warped source hexes)\n";
+                    pm = std::move(r.map);
+                } catch (const HexEx::InputError& e) {
+                    std::cerr << "hexex generate: error: " << e.what() << "\n";
+                    return 2;
+                }
             } else {
                 pm = HexEx::generateTwistedRing(sz("--length", 8), sz("--width", 2), sz("--nu", 8), sz("--nv", 2));
             }
