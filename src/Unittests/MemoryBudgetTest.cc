@@ -171,7 +171,7 @@ TEST(MemoryBudget, BadAllocBecomesAResourceErrorNamingTheStage) {
 
 TEST(MemoryBudget, VolumeLimitNamesTheLargestImagesToo) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(1e8, pm)) GTEST_SKIP() << "../shared/data/sphere.hexex not present";
+    if (!sphereWithBadParameter(1e8, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     HexMesh hm;
     try {
         extractHexMesh(pm, hm);
