@@ -13,7 +13,7 @@ BUILD_TYPE="${BUILD_TYPE:-Release}"
 
 PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev libgtest-dev
           libpugixml-dev zlib1g-dev
-          doxygen xz-utils python3 python3-numpy python3-meshio)
+          doxygen xz-utils python3 python3-numpy python3-meshio python3-venv python3-dev)
 
 missing_packages() {
     local p status

@@ -5,10 +5,11 @@
 /// Usage:
 /// ```
 /// extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]
-///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--list]
+///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--list]
 /// ```
-/// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, read_cube20,
-/// write_cylinder6 (the cylinder6 extraction, then writeHexMesh() to .vtu in each encoding).
+/// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, sphere_1e5,
+/// sphere_1e6, read_cube20, write_cylinder6 (the cylinder6 extraction, then writeHexMesh()
+/// to .vtu in each encoding).
 /// `--quick` runs small versions of every case as a smoke test.
 ///
 /// Every measurement (one case at one thread count) runs in a child process made with
@@ -18,11 +19,14 @@
 /// adjacency (timed, "adjacency"), runs extractHexMesh() (timed, "total", with the report's
 /// per-stage timings) and sends one line of `key=value` fields back through a pipe.
 /// A crash, an out-of-memory kill or a `--timeout` is reported as that row's status; the
-/// other rows still run.
+/// other rows still run. A refusal by the memory budget (HexEx::ResourceError) is the
+/// status "refused", with the time and peak memory until the refusal.
 
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/Generators/Perturbation.hh>
 #include <HexEx/HexEx.hh>
+#include <HexEx/Core/Error.hh>
+#include <HexEx/Core/Memory.hh>
 #include <HexEx/Core/Parallel.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
@@ -85,6 +89,7 @@ struct Options {
     std::string data_dir = std::string(HEXEX_SOURCE_DIR) + "/../shared/data";  ///< real inputs
     bool quick = false;              ///< small inputs only
     double timeout_s = 0;            ///< per-measurement time limit, 0 for none
+    std::uint64_t max_memory = 0;    ///< ExtractionOptions::max_memory (0: the library's default)
 };
 
 /// The published numbers a case is compared with (NaN / empty where the table has none).
@@ -121,6 +126,10 @@ const std::vector<CaseDef>& caseDefs() {
          {113683, 84347, 47.6, NAN, NAN, "", "HexHex refuses the input"}},
         {"perturbed", "generateCube(24, 12) + perturbParameters(a=1, seed=1)",
          "generateCube(8, 4) + perturbParameters(a=1, seed=1)", false, {}},
+        {"sphere_1e5", "sphere.hexex, tet 10 corner 2 v = 1e5 (one bad parameter)",
+         "sphere.hexex, tet 10 corner 2 v = 1e3", false, {}},
+        {"sphere_1e6", "sphere.hexex, tet 10 corner 2 v = 1e6 (one bad parameter)",
+         "sphere.hexex, tet 10 corner 2 v = 1e4", false, {}},
         {"read_cube20", "readHexExFile of generateCube(40, 20)", "readHexExFile of generateCube(10, 5)", true,
          {384000, 0, 10.0, 5.0, NAN, "", "31 MB .hexex; HexHex time is its reader"}},
         {"write_cylinder6", "writeHexMesh(.vtu) of the cylinder6 output", "writeHexMesh(.vtu) of generateCylinder(6, 8, 8, 1, 1)",
@@ -139,7 +148,7 @@ const CaseDef* findCase(const std::string& name) {
 struct Result {
     std::string name;          ///< case name
     int threads = 0;           ///< requested thread count (0 = all)
-    std::string status = "ok"; ///< "ok", "skipped", "error", "crashed", "timeout"
+    std::string status = "ok"; ///< "ok", "skipped", "refused", "error", "crashed", "timeout"
     std::string message;       ///< reason for a status other than ok
     std::string input;         ///< what the input was
     std::map<std::string, double> num;  ///< numeric fields (see kNumericFields)
@@ -207,6 +216,7 @@ bool fileExists(const std::string& path) {
 
 /// Path of the real input file of @p def (empty if the case is generated).
 std::string dataFile(const CaseDef& def, const Options& opt) {
+    if (def.name.rfind("sphere_", 0) == 0) return opt.data_dir + "/sphere.hexex";
     if (def.name != "s1x2") return {};
     return opt.data_dir + "/" + (opt.quick ? def.quick : def.description);
 }
@@ -227,6 +237,13 @@ HexEx::ParametrizedTetMesh buildInput(const CaseDef& def, const Options& opt, Re
         const int R = opt.quick ? 8 : 64;
         r.num["expected_hexes"] = 6.0 * R * R * R;
         return HexEx::generateCylinder(6, R, R, 1, 1);
+    }
+    if (def.name.rfind("sphere_", 0) == 0) {
+        // One corrupted number: a needle tet that sanitization spreads to the tets around
+        // the vertex (see Documentation/performance.md, "One bad parameter").
+        HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(dataFile(def, opt));
+        pm.params[10][2][1] = def.name == "sphere_1e5" ? (opt.quick ? 1e3 : 1e5) : (opt.quick ? 1e4 : 1e6);
+        return pm;
     }
     if (def.name == "s1x2") {
         const std::string path = dataFile(def, opt);
@@ -264,8 +281,18 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     HexEx::HexMesh out;
     HexEx::ExtractionOptions eo;
     eo.threads = threads;
+    eo.max_memory = opt.max_memory;
     t0 = Clock::now();
-    const HexEx::ExtractionReport rep = HexEx::extractHexMesh(pm, out, eo);
+    HexEx::ExtractionReport rep;
+    try {
+        rep = HexEx::extractHexMesh(pm, out, eo);
+    } catch (const HexEx::ResourceError& e) {
+        r.num["total_s"] = secondsSince(t0);
+        r.num["peak_rss_mb"] = procStatusKb("VmHWM") / 1024.0;
+        r.status = "refused";
+        r.message = e.what();
+        return;
+    }
     const double total = secondsSince(t0);
     r.num["peak_rss_mb"] = procStatusKb("VmHWM") / 1024.0;
 
@@ -521,6 +548,11 @@ void printTables(const Options& opt, const std::vector<Result>& results) {
                 "tets", "exp.hex", "hexes", "vertices", "valid", "adj", "pre", "verts", "darts", "connect", "post",
                 "asm", "total_s", "peakMB", "tets/s", "hexes/s");
     for (const Result& r : results) {
+        if (r.status == "refused") {
+            std::printf("%-11s %3d  refused after %s s, peak %s MB: %s\n", r.name.c_str(), r.threads,
+                        fmtNum(r, "total_s", "%.3f").c_str(), fmtNum(r, "peak_rss_mb", "%.0f").c_str(), r.message.c_str());
+            continue;
+        }
         if (r.status != "ok") {
             std::printf("%-11s %3d  %s: %s\n", r.name.c_str(), r.threads, r.status.c_str(), r.message.c_str());
             continue;
@@ -627,13 +659,15 @@ bool writeJson(const Options& opt, const std::vector<Result>& results, const std
 
 const char* const kUsage =
     "usage: extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]\n"
-    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--list]\n"
+    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--list]\n"
     "  --case NAME      run only this case (repeatable; default: all, see --list)\n"
     "  --threads LIST   comma-separated thread counts, 0 = all hardware threads (default 1,2)\n"
     "  --json FILE      also write the results and the reference numbers as JSON\n"
     "  --data-dir DIR   directory of the real inputs (default <repo>/../shared/data)\n"
     "  --quick          small inputs: a smoke test that runs in seconds\n"
     "  --timeout S      kill a measurement after S seconds (default: no limit)\n"
+    "  --max-memory SZ  memory budget of every extraction, e.g. 2G (default: the library's,\n"
+    "                   half of the available memory); a refusal is the status 'refused'\n"
     "  --list           list the cases and exit\n";
 
 /// Parses "1,2,4" into thread counts; throws std::invalid_argument.
@@ -679,6 +713,8 @@ int main(int argc, char** argv) {
                 char* end = nullptr;
                 opt.timeout_s = std::strtod(v.c_str(), &end);
                 if (v.empty() || *end != '\0' || !(opt.timeout_s > 0)) throw std::invalid_argument("bad timeout '" + v + "'");
+            } else if (a == "--max-memory") {
+                opt.max_memory = HexEx::parseByteSize(value());
             } else if (a == "--list") {
                 for (const CaseDef& d : caseDefs())
                     std::printf("%-11s %s   (quick: %s)\n", d.name.c_str(), d.description.c_str(), d.quick.c_str());
@@ -707,6 +743,6 @@ int main(int argc, char** argv) {
         std::printf("\nJSON written to %s\n", opt.json.c_str());
     }
     for (const Result& r : results)
-        if (r.status != "ok" && r.status != "skipped") return 1;
+        if (r.status != "ok" && r.status != "skipped" && r.status != "refused") return 1;
     return 0;
 }

@@ -7,6 +7,8 @@
 
 #include "ToolPath.hh"
 
+#include <HexEx/IO/HexExFile.hh>
+
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -302,6 +304,29 @@ TEST_F(CliEndToEndTest, DestroyedMapStillWritesBestMesh) {
     EXPECT_TRUE(r.status == 0 || r.status == 3) << r.status << "\n" << r.err;
     EXPECT_TRUE(fs::exists(path("r.vtu")));
     expectReportKeys(slurp(path("r.json")));
+}
+
+TEST_F(CliEndToEndTest, MaxMemoryRefusesANeedleWithExitTwo) {
+    const std::string sphere = "../shared/data/sphere.hexex";
+    if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
+    pm.params[10][2][1] = 1e6;  // one corrupted number: a needle tet
+    HexEx::writeHexExFile(path("needle.hexex"), pm);
+    const RunResult r = run({"extract", path("needle.hexex"), "-o", path("out.vtu"), "--max-memory", "300M", "-q"});
+    EXPECT_EQ(r.status, 2) << r.err;
+    EXPECT_NE(r.err.find("more than the budget of 300.0 MB"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("tet 10 ("), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("--max-memory"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("out.vtu")));
+}
+
+TEST_F(CliEndToEndTest, MaxMemoryRejectsABadSize) {
+    generateCube("cube.hexex", 1, 1);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "12X"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--max-memory: memory size '12X': unknown unit"), std::string::npos) << r.err;
+    const RunResult ok = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "64M", "-q"});
+    EXPECT_EQ(ok.status, 0) << ok.err;
 }
 
 // `generate from-hex`: an extracted mesh becomes a folded map whose extraction is that mesh

@@ -4,6 +4,7 @@
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <new>
 #include <string>
@@ -131,7 +132,9 @@ void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di
 } // namespace
 
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
-                     const std::vector<FaceMask>* usable_faces, double expected_cells) {
+                     const std::vector<FaceMask>* usable_faces, double expected_cells, std::size_t max_darts) {
+    std::atomic<std::size_t> extracted{0};  // all chunks together, for the cap
+    constexpr std::size_t kCapCheck = 1u << 16;  // darts of one tet before its own count is checked against the cap
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
@@ -194,7 +197,11 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
             const bool flagged = di && !di->flags.empty();
             std::size_t l = 0;  // local index of (x, y, zc) in the box
             for (int x = ilo[0]; x <= ihi[0]; ++x)
-                for (int y = ilo[1]; y <= ihi[1]; ++y)
+                for (int y = ilo[1]; y <= ihi[1]; ++y) {
+                    // A tet with a huge image must not outgrow the budget before it is done.
+                    if (out.size() - before > kCapCheck && extracted.load(std::memory_order_relaxed) + (out.size() - before) > max_darts)
+                        throw ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
+                                            " darts, the most the memory budget allows");
                     for (int zc = ilo[2]; zc <= ihi[2]; ++zc, ++l) {
                         if (di) di->offset.push_back(static_cast<std::uint32_t>(out.size() - before));
                         std::array<int, 4> oz;
@@ -234,7 +241,11 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                             out.push_back(d);
                         }
                     }
+            }
             count[c] = out.size() - before;
+            if (extracted.fetch_add(count[c], std::memory_order_relaxed) + count[c] > max_darts)
+                throw ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
+                                    " darts, the most the memory budget allows");
             if (di) di->offset.push_back(static_cast<std::uint32_t>(count[c]));
         }
     });

@@ -107,8 +107,10 @@ using FaceMask = std::uint8_t;
 /// j set in @p usable_faces[t] (the caller allows boundary faces and faces shared with a
 /// proper tet, where vertices can be joined across; without masks only strictly interior
 /// corners are used). @p expected_cells (e.g. the parametric volume) only sizes buffers.
+/// Throws ResourceError as soon as more than @p max_darts darts have been extracted (the
+/// outcome does not depend on the thread count: the total does not).
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
                      bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
-                     double expected_cells = 0);
+                     double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1));
 
 } // namespace HexEx

@@ -4,6 +4,7 @@
 
 #include "../GMap/GMapValidator.hh"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -29,6 +30,13 @@ struct ExtractionOptions {
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
     double max_hexes = 4e7;
+    /// Memory budget in bytes; 0 = automatic: defaultMemoryBudget() at the call (half of
+    /// the memory available then). Before allocating per-grid-point and per-dart data the
+    /// extractor estimates the memory it needs and throws ResourceError at once, naming the
+    /// tets with the largest parametric images, if the estimate exceeds the budget; dart
+    /// extraction also stops with ResourceError when the darts themselves exceed it.
+    /// std::bad_alloc anywhere in the extraction becomes a ResourceError too.
+    std::uint64_t max_memory = 0;
     /// Optional rotation index (0..23) per halfface instead of inferring transitions (the
     /// paper's assumption that matchings are known). If null, an `int` halfface property
     /// named kGivenRotationProperty on the tet mesh is used when present.

@@ -1,16 +1,21 @@
 #include "../HexEx.hh"
 
+#include "../Core/Error.hh"
+#include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
 #include "../Pipeline/AnnihilateStage.hh"
 #include "../Pipeline/AssembleStage.hh"
 #include "../Pipeline/ConnectStage.hh"
 #include "../Pipeline/DartStage.hh"
 #include "../Pipeline/ImplicitCellPath.hh"
+#include "../Pipeline/MemoryBudget.hh"
 #include "../Pipeline/PlacementStage.hh"
 #include "../Pipeline/PreprocessStage.hh"
 #include "../Pipeline/ReportStage.hh"
 
 #include <chrono>
+#include <new>
+#include <string>
 #include <utility>
 
 namespace HexEx {
@@ -40,10 +45,18 @@ void release(std::vector<T>& v) {
 
 const char* version() { return "0.1.0"; }
 
+namespace {
+/// Where the pipeline is, for the message of an allocation failure.
+struct PipelineState {
+    const char* stage = "preprocess";  ///< stage running now
+    MemoryEstimate estimate;           ///< the memory estimate, once made
+};
+
 // The pipeline (Documentation/algorithm.md, "Stages"): every stage is a function of
 // src/HexEx/Pipeline with a plain input and output struct; its counts go into the report
 // as they come.
-ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt) {
+ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt,
+                             PipelineState& state) {
     ExtractionReport rep;
     const TetMesh& mesh = input.mesh;
     const int threads = resolveThreadCount(opt.threads);
@@ -51,26 +64,32 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     auto progress = [&](const char* phase, double f) {
         if (opt.progress) opt.progress(phase, f);
     };
+    auto enter = [&](const char* stage) {
+        state.stage = stage;
+        progress(stage, 0);
+    };
     StageClock clock;
 
-    progress("preprocess", 0);
+    enter("preprocess");
     const PreprocessOutput pre = preprocess({&input, opt.given_rotations, opt.epsilon, opt.max_hexes, threads});
     addToReport(pre, rep);
+    const bool implicit = useImplicitCells(opt.implicit_cells, pre.stats.flipped_tets);
+    state.estimate = estimateMemory(pre, implicit, opt.max_memory ? opt.max_memory : defaultMemoryBudget());
+    checkMemoryBudget(state.estimate);
     rep.timings_s.preprocess = clock.lap();
 
-    progress("darts", 0);
-    const bool implicit = useImplicitCells(opt.implicit_cells, pre.stats.flipped_tets);
-    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads});
+    enter("darts");
+    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads, &state.estimate});
     addToReport(darts, rep);
     rep.timings_s.darts = clock.lap();
 
-    progress("connect", 0);
+    enter("connect");
     ConnectOutput links = connectStage({&mesh, &pre.transitions, &pre.tets, &darts.darts, threads,
                                         [&](double f) { progress("connect", f); }});
     addToReport(links, rep);
     rep.timings_s.connect = clock.lap();
 
-    progress("postprocess", 0);
+    enter("postprocess");
     AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti});
     addToReport(survivors, rep);
     ImplicitCells cells;
@@ -80,7 +99,7 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     addToReport(map, rep);
     rep.timings_s.postprocess = clock.lap();
 
-    progress("vertices", 0);
+    enter("vertices");
     const DartGeometry geo = placementStage({&mesh, &pre.tets, &darts.darts, &survivors.alive, &survivors.new_index, survivors.n_alive, threads, &survivors.heir});
     if (implicit) {
         cells.dart_occurrence = implicitDartOccurrences(darts.darts, survivors.alive, survivors.new_index, survivors.n_alive, threads);
@@ -95,13 +114,29 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
     release(survivors.alive);
     release(survivors.new_index);
 
-    progress("assemble", 0);
+    enter("assemble");
     AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads});
     addToReport(assembled, rep);
     output = std::move(assembled.mesh);
     rep.timings_s.assemble = clock.lap();
     progress("done", 1);
     return rep;
+}
+} // namespace
+
+ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt) {
+    PipelineState state;
+    try {
+        return runPipeline(input, output, opt, state);
+    } catch (const std::bad_alloc&) {
+        // Whatever failed to allocate has been freed by the unwinding: there is room for the message.
+        const MemoryEstimate& est = state.estimate;
+        std::string cause = std::string("out of memory (std::bad_alloc) in the ") + state.stage + " stage";
+        if (est.budget > 0 || est.bytes > 0)
+            cause += " (memory budget " + (est.budget ? formatBytes(static_cast<double>(est.budget)) : std::string("none")) +
+                     ", estimated need " + formatBytes(est.bytes) + ")";
+        throw ResourceError(memoryRefusal(cause, est.largest_tets.empty() ? nullptr : &est));
+    }
 }
 
 } // namespace HexEx

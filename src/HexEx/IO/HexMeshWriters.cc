@@ -17,10 +17,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
-#include <unordered_map>
-#include <map>
+#include <type_traits>
 
 namespace HexEx {
 
@@ -40,34 +38,20 @@ public:
         return *this;
     }
     /// Appends an integer.
-    Out& operator<<(long long v) {
+    template <class I, class = std::enable_if_t<std::is_integral_v<I>>>
+    Out& operator<<(I v) {
         char tmp[32];
-        const auto res = std::to_chars(tmp, tmp + sizeof tmp, v);
-        buf_.append(tmp, res.ptr);
+        buf_.append(tmp, std::to_chars(tmp, tmp + sizeof tmp, v).ptr);
         return *this;
     }
-    /// Appends an integer.
-    Out& operator<<(int v) { return *this << static_cast<long long>(v); }
-    /// Appends an integer.
-    Out& operator<<(long v) { return *this << static_cast<long long>(v); }
-    /// Appends an integer.
-    Out& operator<<(std::size_t v) { return *this << static_cast<long long>(v); }
     /// Appends a double with 17 significant digits.
     Out& num(double x) {
         char tmp[40];
-        const int n = std::snprintf(tmp, sizeof tmp, "%.17g", x);
-        buf_.append(tmp, static_cast<std::size_t>(n > 0 ? n : 0));
+        buf_.append(tmp, static_cast<std::size_t>(std::max(0, std::snprintf(tmp, sizeof tmp, "%.17g", x))));
         return *this;
     }
     /// Appends "x y z".
-    Out& vec(const Vec3d& p) {
-        num(p[0]);
-        buf_ += ' ';
-        num(p[1]);
-        buf_ += ' ';
-        num(p[2]);
-        return *this;
-    }
+    Out& vec(const Vec3d& p) { return num(p[0]) << ' ', num(p[1]) << ' ', num(p[2]); }
     /// The text.
     const std::string& str() const { return buf_; }
 

@@ -5,6 +5,7 @@
 #include "HexMeshReaders.hh"
 #include "TextParsing.hh"
 #include "VtkCells.hh"
+#include "VtkDataBlocks.hh"
 
 #include <cstdint>
 #include <cstring>
@@ -31,7 +32,6 @@ int binarySize(std::string_view type) {
 template <class T>
 std::vector<T> readValues(detail::Lexer& lx, bool binary, std::string_view type, long long n, const std::string& what) {
     std::vector<T> out;
-    const bool real = iequals(type, "float") || iequals(type, "double");
     if (!binary) {
         out.reserve(static_cast<std::size_t>(std::min<long long>(n, static_cast<long long>(lx.remaining()))));
         for (long long i = 0; i < n; ++i) {
@@ -46,27 +46,11 @@ std::vector<T> readValues(detail::Lexer& lx, bool binary, std::string_view type,
         lx.fail(lx.line(), what + ": " + std::to_string(n) + " values do not fit in the rest of the file");
     const long long line = lx.line();
     const std::string_view b = lx.bytes(static_cast<std::size_t>(n) * static_cast<std::size_t>(size), what);
-    const bool isSigned = !(type.rfind("unsigned", 0) == 0 || iequals(type, "vtktypeuint64"));
-    out.resize(static_cast<std::size_t>(n));
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        std::uint64_t v = 0;
-        for (int k = 0; k < size; ++k) v = (v << 8) | static_cast<unsigned char>(b[i * size + k]);
-        if (real) {
-            double x = 0;
-            if (size == 8) std::memcpy(&x, &v, 8);
-            else {
-                float f = 0;
-                const auto v32 = static_cast<std::uint32_t>(v);
-                std::memcpy(&f, &v32, 4);
-                x = f;
-            }
-            if (!std::isfinite(x)) lx.fail(line, what + " " + std::to_string(i) + " is not finite");
-            out[i] = static_cast<T>(x);
-        } else {
-            long long x = static_cast<long long>(v);
-            if (isSigned && size < 8 && (v >> (8 * size - 1))) x -= 1LL << (8 * size);  // sign extension
-            out[i] = static_cast<T>(x);
-        }
+    try {
+        out = detail::decodeNumbers<T>(b, size, iequals(type, "float") || iequals(type, "double"),
+                                       !(type.rfind("unsigned", 0) == 0 || iequals(type, "vtktypeuint64")), true);
+    } catch (const detail::BlockError& e) {
+        lx.fail(line, what + ": " + e.what());
     }
     return out;
 }

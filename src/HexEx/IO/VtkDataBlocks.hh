@@ -4,10 +4,13 @@
 /// writes them), a byte-count header of UInt32 or UInt64, and zlib compression in blocks
 /// (`vtkZLibDataCompressor`).
 
+#include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace HexEx {
 namespace detail {
@@ -42,6 +45,34 @@ private:
 /// header values are big-endian if @p bigEndian.
 /// @throws BlockError for truncated, oversized or corrupt data.
 std::string readVtkBlock(BlockSource& source, int headerBytes, bool compressed, bool bigEndian = false);
+
+/// Decodes @p bytes as consecutive numbers of @p size bytes (1, 2, 4 or 8): IEEE floats if
+/// @p real, else integers (two's complement if @p isSigned), big-endian if @p bigEndian.
+/// @throws BlockError for a size that is not a multiple of @p size or a non-finite value.
+template <class T>
+std::vector<T> decodeNumbers(std::string_view bytes, int size, bool real, bool isSigned, bool bigEndian) {
+    if (bytes.size() % static_cast<std::size_t>(size))
+        throw BlockError(std::to_string(bytes.size()) + " bytes, not a multiple of " + std::to_string(size));
+    std::vector<T> out(bytes.size() / static_cast<std::size_t>(size));
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        std::uint64_t u = 0;
+        for (int k = 0; k < size; ++k)
+            u = (u << 8) | static_cast<unsigned char>(bytes[i * static_cast<std::size_t>(size) + static_cast<std::size_t>(bigEndian ? k : size - 1 - k)]);
+        if (real) {
+            float f = 0;
+            const auto u32 = static_cast<std::uint32_t>(u);
+            double x = (std::memcpy(&f, &u32, 4), f);
+            if (size == 8) std::memcpy(&x, &u, 8);
+            if (!std::isfinite(x)) throw BlockError("value " + std::to_string(i) + " is not finite");
+            out[i] = static_cast<T>(x);
+        } else {
+            long long x = static_cast<long long>(u);
+            if (isSigned && size < 8 && (u >> (8 * size - 1))) x -= 1LL << (8 * size);  // sign extension
+            out[i] = static_cast<T>(x);
+        }
+    }
+    return out;
+}
 
 /// @p data as one VTK block with a UInt64 header (zlib-compressed in 32 KiB blocks if
 /// @p compress), raw bytes.

@@ -91,33 +91,11 @@ std::vector<T> readArray(const VtuFile& f, const pugi::xml_node& a, const std::s
     } catch (const detail::BlockError& e) {
         f.fail(a, "DataArray " + what + " (" + format + (format == "appended" ? std::string(" at offset ") + a.attribute("offset").value() : "") + "): " + e.what());
     }
-    if (bytes.size() % static_cast<std::size_t>(size))
-        f.fail(a, "DataArray " + what + " has " + std::to_string(bytes.size()) + " bytes, not a multiple of " + std::to_string(size));
-    out.resize(bytes.size() / static_cast<std::size_t>(size));
-    for (std::size_t i = 0; i < out.size(); ++i) {
-        unsigned char b[8];
-        std::memcpy(b, &bytes[i * size], static_cast<std::size_t>(size));
-        if (f.bigEndian) std::reverse(b, b + size);
-        std::uint64_t u = 0;
-        for (int k = size - 1; k >= 0; --k) u = (u << 8) | b[k];
-        if (type[0] == 'F') {
-            double x = 0;
-            if (size == 8) std::memcpy(&x, &u, 8);
-            else {
-                float g = 0;
-                const auto u32 = static_cast<std::uint32_t>(u);
-                std::memcpy(&g, &u32, 4);
-                x = g;
-            }
-            if (!std::isfinite(x)) f.fail(a, "DataArray " + what + ": value " + std::to_string(i) + " is not finite");
-            out[i] = static_cast<T>(x);
-        } else {
-            long long x = static_cast<long long>(u);
-            if (type[0] == 'I' && size < 8 && (u >> (8 * size - 1))) x -= 1LL << (8 * size);
-            out[i] = static_cast<T>(x);
-        }
+    try {
+        return detail::decodeNumbers<T>(bytes, size, type[0] == 'F', type[0] == 'I', f.bigEndian);
+    } catch (const detail::BlockError& e) {
+        f.fail(a, "DataArray " + what + ": " + e.what());
     }
-    return out;
 }
 
 /// Reads one <Piece>.

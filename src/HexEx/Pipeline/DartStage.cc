@@ -1,6 +1,7 @@
 #include "DartStage.hh"
 
 #include "../Core/Error.hh"
+#include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
 #include "ImplicitCellPath.hh"
 
@@ -13,8 +14,16 @@ DartStageOutput extractDartStage(const DartStageInput& in) {
     out.implicit_cells = in.implicit_cells;
     std::vector<FaceMask> usableFaces;
     if (in.implicit_cells) usableFaces = implicitCellFaces(*in.mesh, *in.tets);
-    out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
-                             in.abs_volume);
+    const std::size_t maxDarts = in.budget ? in.budget->max_darts : static_cast<std::size_t>(-1);
+    try {
+        out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
+                                 in.abs_volume, maxDarts);
+    } catch (const ResourceError&) {
+        throw ResourceError(memoryRefusal("the darts of the map need more than the memory budget of " +
+                                              formatBytes(static_cast<double>(in.budget->budget)) + " (stopped after " +
+                                              std::to_string(maxDarts) + " darts; estimated " + formatBytes(in.budget->bytes) + ")",
+                                          in.budget));
+    }
     if (out.darts.n_occurrences >= std::numeric_limits<int>::max() / 2)
         throw InputError("too many grid points in large tets for 32-bit indices");
     const std::size_t nd = out.darts.darts.size();

@@ -5,6 +5,7 @@
 
 #include "../Extraction/DartExtraction.hh"
 #include "../Mesh/TetMesh.hh"
+#include "MemoryBudget.hh"
 
 #include <vector>
 
@@ -17,6 +18,7 @@ struct DartStageInput {
     double abs_volume = 0;                     ///< unsigned parametric volume (sizes buffers)
     bool implicit_cells = false;               ///< use the implicit-cell fast path (useImplicitCells())
     int threads = 1;                           ///< worker threads (resolved, >= 1)
+    const MemoryEstimate* budget = nullptr;    ///< memory estimate and budget (null: no cap)
 };
 
 /// Output of extractDartStage().
@@ -28,7 +30,8 @@ struct DartStageOutput {
 };
 
 /// Runs the stage. Throws InputError if a tet's image is absurdly large or the implicit
-/// grid points exceed 32-bit indices. Deterministic for any thread count.
+/// grid points exceed 32-bit indices, ResourceError (memoryRefusal()) as soon as the darts
+/// exceed the budget's max_darts. Deterministic for any thread count.
 DartStageOutput extractDartStage(const DartStageInput& in);
 
 } // namespace HexEx

@@ -14,13 +14,33 @@ namespace HexEx {
 namespace {
 /// Tets per block of the deterministic parallel sums.
 constexpr std::size_t kSumBlock = 4096;
+/// Smallest bounding box (grid points) that gets a dense index (as in extractDarts()).
+constexpr double kDenseMinPoints = 64;
+/// Bytes per box point of a dense index: 4 (offset) + 1 (flags).
+constexpr double kBytesPerBoxPoint = 5;
+
+/// Ordering of (tet, volume) entries: larger volume first, then smaller tet.
+bool largerImage(const std::pair<int, double>& a, const std::pair<int, double>& b) {
+    return a.second != b.second ? a.second > b.second : a.first < b.first;
+}
+
+/// Keeps @p top the 5 largest entries (largerImage order) after offering @p e.
+void offerLargest(std::vector<std::pair<int, double>>& top, const std::pair<int, double>& e) {
+    if (top.size() == 5 && !largerImage(e, top.back())) return;
+    top.insert(std::upper_bound(top.begin(), top.end(), e, largerImage), e);
+    if (top.size() > 5) top.pop_back();
+}
+
+/// Area of the triangle a, b, c.
+double area(const Vec3d& a, const Vec3d& b, const Vec3d& c) { return 0.5 * ((b - a) % (c - a)).norm(); }
 
 /// Checks every parameter and returns the unsigned parametric volume. Sums go per fixed
 /// block of tets, then over the blocks in order: the same result for any thread count.
 /// An error names the first bad tet (chunks are rethrown in order).
-double checkedAbsVolume(const CornerParams& params, int threads) {
+double checkedAbsVolume(const CornerParams& params, int threads, std::vector<std::pair<int, double>>& largest) {
     const std::size_t nBlocks = (params.size() + kSumBlock - 1) / kSumBlock;
     std::vector<double> blockSum(nBlocks, 0.0);
+    std::vector<std::vector<std::pair<int, double>>> blockTop(nBlocks);
     parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
         for (std::size_t blk = bb; blk < be; ++blk)
             for (std::size_t c = blk * kSumBlock; c < std::min(params.size(), (blk + 1) * kSumBlock); ++c) {
@@ -32,11 +52,15 @@ double checkedAbsVolume(const CornerParams& params, int threads) {
                             throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
                                              " is out of range (|u| <= 1e9)");
                     }
-                blockSum[blk] += std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
+                const double vol = std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
+                blockSum[blk] += vol;
+                offerLargest(blockTop[blk], {static_cast<int>(c), vol});
             }
     });
     double absVolume = 0;
     for (double v : blockSum) absVolume += v;
+    for (const auto& top : blockTop)
+        for (const auto& e : top) offerLargest(largest, e);
     return absVolume;
 }
 
@@ -55,11 +79,13 @@ void checkGivenRotations(const TetMesh& mesh, const std::vector<int>& given) {
     }
 }
 
-/// Counts flipped and degenerate tets and sums the signed volume (deterministic blocks).
-void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::Input& stats) {
+/// Counts flipped and degenerate tets and sums the signed volume (deterministic blocks);
+/// sums the sizes the memory estimate needs into @p cost.
+void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::Input& stats, TetCostSummary& cost) {
     struct BlockCounts {
         CompensatedSum volume6;
         long flipped = 0, degenerate = 0;
+        double points = 0, pointsImplicit = 0, denseBytes = 0;
     };
     const std::size_t nBlocks = (tets.size() + kSumBlock - 1) / kSumBlock;
     std::vector<BlockCounts> blocks(nBlocks);
@@ -70,7 +96,32 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
                 if (T.vol < 0) ++blocks[blk].flipped;
                 if (T.vol == 0) ++blocks[blk].degenerate;
                 const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
-                blocks[blk].volume6.add((e1 % e2) | e3);
+                const double v6 = (e1 % e2) | e3;
+                blocks[blk].volume6.add(v6);
+                if (T.vol == 0) continue;
+                // Memory estimate: grid cells of the image; with implicit cells, large proper
+                // tets have explicit darts only in a shell along their faces (cells cut by a
+                // face): about 0.2 grid points per unit of face area on the cylinders, 0.5
+                // leaves a margin.
+                const double vol = std::fabs(v6) / 6.0;
+                Vec3d lo = T.p[0], hi = T.p[0];
+                for (int i = 1; i < 4; ++i) {
+                    lo.minimize(T.p[i]);
+                    hi.maximize(T.p[i]);
+                }
+                double box = 1;
+                for (int a = 0; a < 3; ++a) box *= std::max(0.0, std::floor(hi[a]) - std::ceil(lo[a]) + 1);
+                double shell = vol;
+                if (box >= kDenseMinPoints) {
+                    blocks[blk].denseBytes += kBytesPerBoxPoint * box;
+                    if (T.vol > 0) {
+                        const Vec3d* p = T.p;
+                        const double faces = area(p[1], p[2], p[3]) + area(p[0], p[2], p[3]) + area(p[0], p[1], p[3]) + area(p[0], p[1], p[2]);
+                        shell = std::min(vol, 0.5 * faces);
+                    }
+                }
+                blocks[blk].points += vol;
+                blocks[blk].pointsImplicit += shell;
             }
     });
     CompensatedSum volume6;
@@ -78,6 +129,9 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
         stats.flipped_tets += b.flipped;
         stats.degenerate_tets += b.degenerate;
         volume6.add(b.volume6.value());
+        cost.points += b.points;
+        cost.points_implicit += b.pointsImplicit;
+        cost.dense_bytes += b.denseBytes;
     }
     stats.parametric_volume = volume6.value() / 6.0;
 }
@@ -94,7 +148,7 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.stats.boundary_faces = static_cast<long>(mesh.n_boundary_faces());
     out.params = input.params;  // the working copy: sanitization changes it
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
-    out.abs_volume = checkedAbsVolume(out.params, in.threads);
+    out.abs_volume = checkedAbsVolume(out.params, in.threads, out.cost.largest_input);
     if (out.abs_volume > in.max_hexes)
         throw InputError("the map covers a parametric volume of " + std::to_string(out.abs_volume) +
                          " grid cells, more than the limit of " + std::to_string(in.max_hexes) +
@@ -113,7 +167,7 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.stats.singular_edges = static_cast<long>(sing.edges.size());
     out.stats.singular_vertices = static_cast<long>(sing.vertices.size());
     out.tets = buildTetSoS(out.params, in.threads);
-    classify(out.tets, in.threads, out.stats);
+    classify(out.tets, in.threads, out.stats, out.cost);
     if (out.transitions.n_unresolved > 0)
         out.warnings.push_back(std::to_string(out.transitions.n_unresolved) +
                                " transitions on degenerate faces could not be resolved from their neighbours");

@@ -9,6 +9,7 @@
 #include "../Preprocessing/Transitions.hh"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace HexEx {
@@ -22,6 +23,17 @@ struct PreprocessInput {
     int threads = 1;                                    ///< worker threads (resolved, >= 1)
 };
 
+/// What the memory estimate (estimateMemory()) needs from every tet, gathered by the
+/// preprocessing passes that read the parameters anyway (no extra pass over the tets).
+struct TetCostSummary {
+    double points = 0;           ///< sum of the unsigned image volumes of non-degenerate tets (grid cells)
+    double points_implicit = 0;  ///< the same with implicit cells: large proper tets count only a shell along their faces
+    double dense_bytes = 0;      ///< bytes of the dense per-box-point indices of tets with large bounding boxes
+    /// Up to 5 tets with the largest unsigned image volume in the input parameters (before
+    /// sanitization): (tet, volume in grid cells), largest first, ties by smaller tet.
+    std::vector<std::pair<int, double>> largest_input;
+};
+
 /// Output of preprocess(). Move-only: @ref tets points into @ref params (a move keeps
 /// the vector's storage, a copy would not).
 struct PreprocessOutput {
@@ -30,6 +42,7 @@ struct PreprocessOutput {
     std::vector<TetSoS> tets;           ///< symbolic-perturbation data per tet (points into params)
     double abs_volume = 0;              ///< unsigned parametric volume (before sanitization)
     ExtractionReport::Input stats;      ///< the report's input statistics
+    TetCostSummary cost;                ///< per-tet sizes for the memory estimate
     std::vector<std::string> warnings;  ///< warnings of this stage
 
     /// Empty output.

@@ -8,10 +8,7 @@
 
 namespace HexEx {
 
-namespace {
-/// Rounds @p u to multiples of the quantum for magnitude @p bound, then snaps coordinates
-/// within @p epsilon of an integer (counted in @p snapped).
-void quantize(Vec3d& u, double bound, double epsilon, int& snapped) {
+void quantizeParameter(Vec3d& u, double bound, double epsilon, int& snapped) {
     int e = 0;
     std::frexp(bound + 1.0, &e);  // bound + 1 < 2^e
     const double quantum = std::ldexp(1.0, e - 52);
@@ -26,6 +23,7 @@ void quantize(Vec3d& u, double bound, double epsilon, int& snapped) {
     }
 }
 
+namespace {
 /// The common case, without the breadth-first walk: every face around @p v has the
 /// identity transition and every cell holds the same parameter for @p v. Then all copies
 /// get the same quantized value. Returns false (nothing changed) otherwise.
@@ -45,7 +43,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
             if (j != k && !tr.halfface.is_identity(TetMesh::halfface(c, j).uidx())) return false;
     }
     Vec3d u = *first;
-    quantize(u, std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])}), epsilon, snapped);
+    quantizeParameter(u, std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])}), epsilon, snapped);
     if (u == *first) return true;  // already clean: nothing to write
     for (auto it = cells.first; it != cells.second; ++it) {
         const CellHandle c(*it);
@@ -108,7 +106,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
             bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]),
                               umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
         }
-        quantize(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
+        quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
         for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
     }
     });

@@ -22,6 +22,12 @@ struct SanitizeStats {
     int snapped_coordinates = 0;  ///< coordinates moved onto an integer
 };
 
+/// Rounds every coordinate of @p u to a multiple of the quantum for magnitude @p bound
+/// (2^(e-52) with bound + 1 < 2^e, so that adding integers up to @p bound stays exact), then
+/// snaps coordinates within @p epsilon of an integer, counting them in @p snapped. Shared by
+/// the tet (sanitizeParameters()) and the triangle (2D) sanitization.
+void quantizeParameter(Vec3d& u, double bound, double epsilon, int& snapped);
+
 /// Per vertex: takes its parameter in its lowest-index incident tet, truncates it to the
 /// precision that survives every chart of the vertex (the largest exponent over all its
 /// charts), snaps coordinates within epsilon of an integer, and propagates it through the

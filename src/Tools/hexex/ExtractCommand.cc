@@ -7,6 +7,7 @@
 #include "Commands.hh"
 
 #include <HexEx/Core/Error.hh>
+#include <HexEx/Core/Memory.hh>
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/TetMeshInput.hh>
@@ -42,6 +43,8 @@ const char* kExtractUsage =
     "  --threads N             worker threads (0 = all hardware threads, default); output is identical\n"
     "  --epsilon E             snap parameters this close to an integer (default 1e-6)\n"
     "  --no-merge              keep regular/anti dart pairs (skip annihilation and vertex merging)\n"
+    "  --max-memory SIZE       memory budget, e.g. 2G, 500M (default: half of the available memory);\n"
+    "                          maps that would need more are refused at once with the likely cause\n"
     "  --singularities S.vtk   write the singular edges of the input as legacy VTK lines\n"
     "  --param-mesh P.vtk      write the tet mesh in parameter space (4 points per tet, each in\n"
     "                          its own chart) as legacy VTK with cell data 'flipped', 'degenerate'\n"
@@ -195,7 +198,7 @@ int runExtract(const Args& args) {
         {"--output", true, "-o"},   {"--report", true, ""},        {"--threads", true, ""},
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
-        {"--encoding", true, ""},
+        {"--encoding", true, ""},         {"--max-memory", true, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path;
     HexEx::ExtractionOptions opt;
@@ -223,6 +226,13 @@ int runExtract(const Args& args) {
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
         opt.merge = !pa.has("--no-merge");
+        if (pa.has("--max-memory")) {
+            try {
+                opt.max_memory = HexEx::parseByteSize(pa.get("--max-memory"));
+            } catch (const HexEx::InputError& e) {
+                throw UsageError(std::string("--max-memory: ") + e.what());
+            }
+        }
         quiet = pa.has("--quiet");
         surface_path = pa.get("--surface");
         if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))

@@ -40,7 +40,9 @@ const char* kGenerateUsage =
     "common options:\n"
     "  --chart-noise SEED  re-express every tet in a random grid chart (non-trivial transitions)\n"
     "  --fp-noise A        add uniform noise in [-A, A] to every corner parameter (seed 1)\n"
-    "  --quiet             print nothing but errors\n";
+    "  --quiet             print nothing but errors\n"
+    "2D shapes (triangle meshes with vt parameters, written as OBJ; see hexex generate square --help):\n"
+    "  square, cone-disk, torus, quarter-seam\n";
 
 /// Usage lines of one shape.
 std::string shapeUsage(const std::string& shape) {
@@ -57,6 +59,7 @@ constexpr long kMaxSize = 100000;  ///< upper bound for any size argument (guard
 } // namespace
 
 int runGenerate(const Args& args) {
+    if (!args.empty() && isShape2D(args[0])) return runGenerate2D(args);
     const std::vector<OptionSpec> spec = {
         {"--output", true, "-o"}, {"--chart-noise", true, ""}, {"--fp-noise", true, ""}, {"--quiet", false, "-q"},
         {"--n", true, ""},        {"--scale", true, ""},       {"--valence", true, ""},  {"--radius", true, ""},

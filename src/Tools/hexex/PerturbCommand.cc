@@ -23,7 +23,8 @@ const char* kPerturbUsage =
     "  -a, --amplitude A  move every vertex parameter by uniform noise in [-A, A] per axis,\n"
     "                     the same in all its charts; boundary planes and singular edges stay aligned\n"
     "  --seed S           random seed (default 1); the same seed gives the same output\n"
-    "  --quiet            print nothing but errors\n";
+    "  --quiet            print nothing but errors\n"
+    "  IN.obj (2D map: triangles with vt parameters) is perturbed the same way, cones stay fixed; writes OBJ\n";
 } // namespace
 
 int runPerturb(const Args& args) {
@@ -52,6 +53,8 @@ int runPerturb(const Args& args) {
         std::cerr << "hexex perturb: " << e.what() << "\n" << kPerturbUsage;
         return 2;
     }
+
+    if (input.size() >= 4 && input.compare(input.size() - 4, 4, ".obj") == 0) return runPerturb2D(input, out, a, seed, quiet);
 
     HexEx::ReadReport rr;
     HexEx::ParametrizedTetMesh pm;

@@ -1,0 +1,199 @@
+"""The functions of the hexex package: thin wrappers that check the arguments and call the
+C++ core (hexex._core), which runs the library's own code."""
+
+from __future__ import annotations
+
+import json
+import warnings
+from typing import Optional, Union
+
+import numpy as np
+
+from . import _core
+from ._arrays import as_float_array, as_index_array, as_map_arrays, as_path, as_polyhedra
+from ._types import ExtractionResult, HexMesh, TetMap
+
+
+class HexExWarning(UserWarning):
+    """A warning of the library (reader repairs, writer limits)."""
+
+
+def _warn(messages) -> None:
+    for m in messages:
+        warnings.warn(m, HexExWarning, stacklevel=3)
+
+
+def _check_int(value, name: str, minimum: Optional[int] = None) -> int:
+    if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an int, got {type(value).__name__}")
+    value = int(value)
+    if minimum is not None and value < minimum:
+        raise ValueError(f"{name} must be >= {minimum}, got {value}")
+    if value > 2**31 - 1:
+        raise ValueError(f"{name} is too large: {value}")
+    return value
+
+
+def _check_seed(seed) -> int:
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)):
+        raise TypeError(f"seed must be an int, got {type(seed).__name__}")
+    if not 0 <= int(seed) < 2**32:
+        raise ValueError(f"seed must be in [0, 2**32), got {seed}")
+    return int(seed)
+
+
+def _check_float(value, name: str) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name} must be a number, got {type(value).__name__}")
+    return float(value)
+
+
+def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
+            rotations=None) -> ExtractionResult:
+    """Extracts the hex mesh of a tet mesh with an integer-grid map.
+
+    Args:
+        points: vertex positions, shape (n, 3), float64 (other real dtypes are converted).
+        tets: four vertex indices per tet, shape (m, 4), int32 or int64 (used in place);
+            tets should be positively oriented in 3D.
+        params: parameter of every tet corner in that tet's own chart, shape (m, 4, 3).
+        threads: worker threads, 0 = all hardware threads. The output is identical for
+            any value.
+        epsilon: parameter coordinates this close to an integer are snapped.
+        merge: annihilate regular/anti dart pairs and merge the vertices they duplicate.
+        rotations: optional given transition rotation per halfface, shape (m, 4), values
+            0..23: ``rotations[t, i]`` is the rotation from tet t into its neighbour across
+            the face opposite corner i (ignored on the boundary). By default the
+            transitions are inferred from the parameters.
+
+    Returns:
+        ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
+        ``polyhedra``, ``report`` (dict, the JSON report's keys) and ``valid_all_hex``.
+
+    Raises:
+        TypeError / ValueError for arrays of the wrong dtype or shape; ValueError with the
+        library's message for unusable input (index out of range, repeated vertex,
+        non-manifold mesh, non-finite parameters, ...). Defective maps do not raise: what
+        could not be resolved is in the report, non-hex cells are in ``polyhedra``.
+
+    The GIL is released while the C++ library converts and extracts.
+    """
+    points, tets, params = as_map_arrays(points, tets, params)
+    threads = _check_int(threads, "threads", 0)
+    epsilon = _check_float(epsilon, "epsilon")
+    if rotations is not None:
+        rotations = as_index_array(rotations, "rotations", (tets.shape[0], 4), dtypes=(np.int32,))
+    pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations)
+    return ExtractionResult(pts, hexes, polyhedra, json.loads(report))
+
+
+def read_map(path) -> TetMap:
+    """Reads a tet mesh with its map from ``.hexex`` or OpenVolumeMesh ``.ovm`` (ASCII) /
+    ``.ovmb`` (binary), chosen by extension. Repairs the reader made (e.g. a mirrored mesh reoriented) are
+    issued as :class:`HexExWarning`. Raises ValueError "<file>:<line>: <reason>" for
+    malformed files and "<file>: <reason>" for missing ones."""
+    points, tets, params, messages = _core.read_map(as_path(path))
+    _warn(messages)
+    return TetMap(points, tets, params)
+
+
+def write_map(path, points, tets=None, params=None) -> None:
+    """Writes a tet mesh with its map as ``.hexex``. Pass the three arrays, or a
+    :class:`TetMap` as ``points``: ``write_map("out.hexex", tet_map)``."""
+    path = as_path(path)
+    if tets is None and params is None and isinstance(points, tuple) and len(points) == 3:
+        points, tets, params = points
+    if not path.lower().endswith(".hexex"):
+        raise ValueError(f"{path}: write_map writes the .hexex format only (extension .hexex)")
+    _core.write_map(path, *as_map_arrays(points, tets, params))
+
+
+def map_statistics(points, tets, params) -> dict:
+    """Counts and measures of a map (as ``hexex info``): vertices, tets, boundary_faces,
+    flipped_tets, degenerate_tets, parametric_volume, param_bbox_min, param_bbox_max."""
+    return _core.map_statistics(*as_map_arrays(points, tets, params))
+
+
+def _as_hex_mesh(mesh) -> tuple:
+    for attr in ("points", "hexes"):
+        if not hasattr(mesh, attr):
+            raise TypeError(f"expected a HexMesh (with points, hexes, polyhedra), got {type(mesh).__name__}")
+    points = as_float_array(mesh.points, "points", (None, 3))
+    hexes = as_index_array(mesh.hexes, "hexes", (None, 8), dtypes=(np.int32,))
+    return points, hexes, as_polyhedra(getattr(mesh, "polyhedra", None))
+
+
+def read_hex_mesh(path) -> HexMesh:
+    """Reads a hex mesh (``.vtu``, ``.vtk``, ``.ovm``, ``.ovmb``, ``.mesh``, by extension)."""
+    return HexMesh(*_core.read_hex_mesh(as_path(path)))
+
+
+def write_hex_mesh(path, mesh: HexMesh, *, encoding: str = "binary") -> None:
+    """Writes ``mesh`` (a HexMesh or ExtractionResult) as ``.vtu``, ``.vtk``, ``.ovm``,
+    ``.ovmb`` or ``.mesh`` (by extension), byte for byte as ``hexex extract`` writes it.
+    ``encoding`` is the ``.vtu`` data encoding as ``hexex extract --encoding``: "binary"
+    (raw appended data), "compressed" (zlib) or "ascii". Cells a format cannot store
+    (polyhedra in ``.mesh``) are reported as :class:`HexExWarning`."""
+    if not isinstance(encoding, str):
+        raise TypeError(f"encoding must be a str, got {type(encoding).__name__}")
+    _warn(_core.write_hex_mesh(as_path(path), *_as_hex_mesh(mesh), encoding))
+
+
+def validate(mesh: Union[HexMesh, str, "os.PathLike"]) -> dict:
+    """Checks a hex mesh (a HexMesh, or a path to read) as ``hexex validate`` does: all
+    cells hexes, faces shared by at most two cells, closed 2-manifold boundary, Euler
+    characteristic, quality. Returns a dict of counts with ``valid_all_hex``."""
+    if not hasattr(mesh, "points"):
+        mesh = read_hex_mesh(mesh)
+    return _core.validate(*_as_hex_mesh(mesh))
+
+
+def generate_cube(n: int = 3, scale: int = 3) -> TetMap:
+    """The unit cube split into n^3 boxes of six tets, map = scale * position:
+    scale^3 hexes, (scale+1)^3 vertices."""
+    return TetMap(*_core.generate_cube(_check_int(n, "n", 1), _check_int(scale, "scale", 1)))
+
+
+def generate_cylinder(valence: int = 3, radius: int = 2, height: int = 2, n: int = 2, m: int = 2) -> TetMap:
+    """A cylinder of ``valence`` wedges around a singular edge of that valence:
+    valence * radius^2 * height hexes."""
+    return TetMap(*_core.generate_cylinder(_check_int(valence, "valence", 3), _check_int(radius, "radius", 1),
+                                           _check_int(height, "height", 1), _check_int(n, "n", 1),
+                                           _check_int(m, "m", 1)))
+
+
+def generate_ring(length: int = 6, width: int = 2, height: int = 2, nu: int = 6, nv: int = 2, nw: int = 2) -> TetMap:
+    """A ring periodic in the first parameter (glued by a translation): length * width *
+    height hexes."""
+    return TetMap(*_core.generate_ring(_check_int(length, "length", 1), _check_int(width, "width", 1),
+                                       _check_int(height, "height", 1), _check_int(nu, "nu", 3),
+                                       _check_int(nv, "nv", 1), _check_int(nw, "nw", 1)))
+
+
+def generate_twisted_ring(length: int = 8, width: int = 2, nu: int = 8, nv: int = 2) -> TetMap:
+    """A square ring glued by a quarter turn (nv even): length * width^2 hexes."""
+    return TetMap(*_core.generate_twisted_ring(_check_int(length, "length", 1), _check_int(width, "width", 1),
+                                               _check_int(nu, "nu", 3), _check_int(nv, "nv", 2)))
+
+
+def random_charts(tet_map: TetMap, seed: int) -> TetMap:
+    """A copy of ``tet_map`` with every tet re-expressed in a random grid chart (random
+    rotation and integer translation per tet): same hex mesh, non-trivial transitions."""
+    return TetMap(*_core.random_charts(*as_map_arrays(*tet_map), _check_seed(seed)))
+
+
+def parameter_noise(tet_map: TetMap, amplitude: float, seed: int = 1) -> TetMap:
+    """A copy of ``tet_map`` with uniform noise in [-amplitude, amplitude] added to every
+    corner parameter (coordinates on boundary planes kept)."""
+    return TetMap(*_core.parameter_noise(*as_map_arrays(*tet_map), _check_float(amplitude, "amplitude"),
+                                         _check_seed(seed)))
+
+
+def perturb(tet_map: TetMap, amplitude: float, seed: int = 1, *, return_stats: bool = False):
+    """A copy of ``tet_map`` whose vertex parameters are moved by uniform noise in
+    [-amplitude, amplitude] consistently in all charts (paper section 5.1; boundary planes
+    and singular edges keep their alignment), as ``hexex perturb``. With
+    ``return_stats=True`` returns ``(TetMap, stats dict)``."""
+    *arrays, stats = _core.perturb(*as_map_arrays(*tet_map), _check_float(amplitude, "amplitude"), _check_seed(seed))
+    result = TetMap(*arrays)
+    return (result, stats) if return_stats else result

@@ -1,0 +1,16 @@
+#pragma once
+/// @file Bindings.hh
+/// The groups of functions of the extension module hexex._core, one file each.
+
+#include <nanobind/nanobind.h>
+
+namespace HexExPython {
+
+/// Tet maps: reading and writing `.hexex`/`.ovm`, generators, perturbation, statistics
+/// (MapFunctions.cc).
+void bindMapFunctions(nanobind::module_& m);
+
+/// Hex meshes: reading, writing and validation (HexMeshFunctions.cc).
+void bindHexMeshFunctions(nanobind::module_& m);
+
+} // namespace HexExPython

@@ -1,0 +1,84 @@
+/// @file HexMeshFunctions.cc
+/// hexex._core functions on hex meshes: reading, writing and validation. Meshes travel as
+/// (points float64 (k,3), hexes int32 (h,8), polyhedra list) triples.
+
+#include "ArrayConversions.hh"
+#include "Bindings.hh"
+
+#include <HexEx/IO/HexMeshReaders.hh>
+#include <HexEx/IO/HexMeshWriters.hh>
+#include <HexEx/Mesh/HexMeshCheck.hh>
+
+#include <nanobind/stl/string.h>
+#include <nanobind/stl/vector.h>
+
+#include <string>
+#include <vector>
+
+namespace HexExPython {
+
+namespace {
+
+/// Reads a hex mesh file; returns (points, hexes, polyhedra).
+nb::tuple readHexMeshFile(const std::string& path) {
+    HexEx::HexMesh hm;
+    {
+        nb::gil_scoped_release release;
+        hm = HexEx::readHexMesh(path);
+    }
+    return hexMeshToArrays(std::move(hm));
+}
+
+/// Writes a hex mesh (`.vtu` data in the encoding named @p encoding); returns the writer's warnings.
+std::vector<std::string> writeHexMeshFile(const std::string& path, const DoubleArray& points, const Int32Array& hexes,
+                                          const nb::handle& polyhedra, const std::string& encoding) {
+    const HexEx::VtuEncoding enc = HexEx::vtuEncodingFromName(encoding);
+    const HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+    nb::gil_scoped_release release;
+    return HexEx::writeHexMesh(path, hm, enc);
+}
+
+/// Validates a hex mesh; returns HexMeshCheckResult as a dict.
+nb::dict validateHexMesh(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra) {
+    const HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+    HexEx::HexMeshCheckResult r;
+    {
+        nb::gil_scoped_release release;
+        r = HexEx::checkHexMesh(hm);
+    }
+    nb::dict d;
+    d["valid_all_hex"] = r.valid_all_hex;
+    d["cells"] = r.cells;
+    d["hexes"] = r.hexes;
+    d["non_hex_cells"] = r.non_hex_cells;
+    d["vertices"] = r.vertices;
+    d["edges"] = r.edges;
+    d["faces"] = r.faces;
+    d["quads"] = r.quads;
+    d["boundary_quads"] = r.boundary_quads;
+    d["boundary_faces"] = r.boundary_faces;
+    d["quads_shared_by_more_than_two"] = r.quads_shared_by_more_than_two;
+    d["nonmanifold_boundary_edges"] = r.nonmanifold_boundary_edges;
+    d["nonmanifold_boundary_vertices"] = r.nonmanifold_boundary_vertices;
+    d["invalid_cells"] = r.invalid_cells;
+    d["euler_characteristic"] = r.euler_characteristic;
+    nb::dict q;
+    q["min_scaled_jacobian"] = r.quality.min_scaled_jacobian;
+    q["mean_scaled_jacobian"] = r.quality.mean_scaled_jacobian;
+    q["inverted_hexes"] = r.quality.inverted_hexes;
+    d["quality"] = q;
+    return d;
+}
+
+} // namespace
+
+void bindHexMeshFunctions(nb::module_& m) {
+    m.def("read_hex_mesh", &readHexMeshFile, nb::arg("path"),
+          "Reads .vtu/.vtk/.ovm/.ovmb/.mesh; returns (points, hexes, polyhedra).");
+    m.def("write_hex_mesh", &writeHexMeshFile, nb::arg("path"), nb::arg("points"), nb::arg("hexes"),
+          nb::arg("polyhedra"), nb::arg("encoding"), "Writes a hex mesh (format by extension); returns warnings.");
+    m.def("validate", &validateHexMesh, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
+          "Checks a hex mesh (HexMeshCheck); returns a dict of counts.");
+}
+
+} // namespace HexExPython

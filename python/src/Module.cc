@@ -1,0 +1,91 @@
+/// @file Module.cc
+/// The extension module hexex._core: error translation, version and the extraction itself.
+/// The public Python API (argument checks, result classes) is in python/hexex/.
+
+#include "ArrayConversions.hh"
+#include "Bindings.hh"
+
+#include <HexEx/Core/Error.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/IO/ReportJson.hh>
+#include <HexEx/Mesh/HexMeshQuality.hh>
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+
+#include <chrono>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace HexExPython {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// Seconds since @p t0.
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+/// Extracts the hex mesh of the map given as arrays; returns (points, hexes, polyhedra,
+/// report JSON). The GIL is released from the conversion to the end of the extraction.
+nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const DoubleArray& params, int threads,
+                  double epsilon, bool merge, const std::optional<Int32Array>& rotations) {
+    if (threads < 0) throw std::invalid_argument("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(threads));
+    if (!(epsilon >= 0 && epsilon < 0.5)) throw std::invalid_argument("epsilon must be in [0, 0.5), got " + HexEx::jsonNumber(epsilon));
+    const TetIndices tetIdx = tetIndices(tets);
+    std::vector<int> given;
+    if (rotations) {
+        requireArrayShape("rotations", *rotations, {static_cast<long>(tetIdx.n_tets), 4});
+        given.assign(rotations->data(), rotations->data() + 4 * tetIdx.n_tets);
+    }
+    HexEx::HexMesh hm;
+    std::string json;
+    {
+        nb::gil_scoped_release release;
+        const auto t_start = Clock::now();
+        HexEx::ReportExtras extras;
+        HexEx::ExtractionReport rep;
+        {
+            // The converted mesh lives only in this scope; freeing it counts in the total.
+            const HexEx::ParametrizedTetMesh pm = toTetMesh(points, tetIdx, params);
+            extras.read_s = secondsSince(t_start);
+            HexEx::ExtractionOptions opt;
+            opt.threads = threads;
+            opt.epsilon = epsilon;
+            opt.merge = merge;
+            if (rotations) opt.given_rotations = &given;
+            rep = HexEx::extractHexMesh(pm, hm, opt);
+        }
+        extras.quality = HexEx::computeQuality(hm);
+        extras.total_s = secondsSince(t_start);
+        json = HexEx::reportToJson(rep, extras);
+    }
+    nb::tuple mesh = hexMeshToArrays(std::move(hm));
+    return nb::make_tuple(mesh[0], mesh[1], mesh[2], json);
+}
+
+} // namespace
+
+} // namespace HexExPython
+
+NB_MODULE(_core, m) {
+    namespace nb = nanobind;
+    m.doc() = "C++ core of the hexex package (use the functions of the hexex package, not these).";
+    // Bad input from the library becomes ValueError carrying its message (file, line, reason).
+    nb::register_exception_translator([](const std::exception_ptr& p, void*) {
+        try {
+            std::rethrow_exception(p);
+        } catch (const HexEx::InputError& e) {
+            PyErr_SetString(PyExc_ValueError, e.what());
+        }
+    });
+    m.def("version", &HexEx::version, "Library version string (x.y.z).");
+    m.def("extract", &HexExPython::extract, nb::arg("points"), nb::arg("tets"), nb::arg("params"), nb::arg("threads"),
+          nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(),
+          "Extracts the hex mesh of checked arrays; returns (points, hexes, polyhedra, report_json).");
+    HexExPython::bindMapFunctions(m);
+    HexExPython::bindHexMeshFunctions(m);
+}

@@ -1,0 +1,50 @@
+#pragma once
+/// @file MemoryBudget.hh
+/// Pipeline stage "budget": estimates the memory the extraction will need before any
+/// per-grid-point or per-dart data is allocated, refuses maps that would exceed
+/// ExtractionOptions::max_memory, and words the messages of every memory refusal
+/// (estimate, dart cap, std::bad_alloc) the same way: cause, the tets with the largest
+/// parametric images, what to do.
+
+#include "../Mesh/TetMesh.hh"
+#include "PreprocessStage.hh"
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace HexEx {
+
+/// Bytes one dart costs at the peak of the pipeline, for the estimate and the dart cap
+/// (measured 40-110 B on the benchmark inputs, see Documentation/performance.md).
+constexpr double kBytesPerDart = 64;
+
+/// Result of estimateMemory().
+struct MemoryEstimate {
+    double darts = 0;              ///< estimated number of darts
+    double bytes = 0;              ///< estimated peak bytes of the extraction
+    std::uint64_t budget = 0;      ///< the budget it is checked against (bytes; 0 = none)
+    std::size_t max_darts = 0;     ///< darts the budget allows (cap for the dart extraction)
+    /// Up to 5 tets with the largest parametric images in the input (before sanitization,
+    /// which may carry a wrong parameter into the tets around its vertex): (tet, unsigned
+    /// volume in grid cells), largest first. These are the tets to check.
+    std::vector<std::pair<int, double>> largest_tets;
+};
+
+/// Estimates the darts and bytes of the extraction of @p pre from its TetCostSummary: 48
+/// darts per grid cell of every tet's image (with @p implicit_cells, only a shell along the
+/// faces of large proper tets, 0.5 grid points per unit of face area), dense per-box-point
+/// indices of tets with large bounding boxes, a fixed cost per tet. @p budget (bytes, 0 =
+/// no limit) is stored and turned into max_darts. Constant time.
+MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget);
+
+/// Throws ResourceError (memoryRefusal()) if the estimate exceeds its budget.
+void checkMemoryBudget(const MemoryEstimate& est);
+
+/// The message of a refusal: @p cause, then the largest parametric images of @p est (if
+/// known) and what to do.
+std::string memoryRefusal(const std::string& cause, const MemoryEstimate* est);
+
+} // namespace HexEx

@@ -1,0 +1,84 @@
+#include "ParametrizedTriMesh.hh"
+
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+
+namespace HexEx {
+
+TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
+    const std::size_t nf = m.triangles.size(), nv = m.points.size();
+    if (m.params.size() != nf)
+        throw InputError("triangle mesh: " + std::to_string(m.params.size()) + " parameter triples for " +
+                         std::to_string(nf) + " triangles");
+    if (nf > static_cast<std::size_t>(INT32_MAX / 3) || nv > static_cast<std::size_t>(INT32_MAX))
+        throw InputError("triangle mesh: too many elements");
+    for (std::size_t v = 0; v < nv; ++v)
+        for (int k = 0; k < 3; ++k)
+            if (!std::isfinite(m.points[v][k]))
+                throw InputError("triangle mesh: vertex " + std::to_string(v) + ": position is not finite");
+    TriAdjacency adj;
+    adj.vertex_offset.assign(nv + 1, 0);
+    for (std::size_t f = 0; f < nf; ++f) {
+        const auto& t = m.triangles[f];
+        for (int k = 0; k < 3; ++k) {
+            if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= nv)
+                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": vertex index " +
+                                 std::to_string(t[k]) + " out of range (" + std::to_string(nv) + " vertices)");
+            if (!std::isfinite(m.params[f][k][0]) || !std::isfinite(m.params[f][k][1]))
+                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " +
+                                 std::to_string(k) + " is not finite");
+        }
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
+            throw InputError("triangle mesh: triangle " + std::to_string(f) + ": repeated vertex");
+        for (int k = 0; k < 3; ++k) ++adj.vertex_offset[static_cast<std::size_t>(t[k]) + 1];
+    }
+    for (std::size_t v = 0; v < nv; ++v) adj.vertex_offset[v + 1] += adj.vertex_offset[v];
+    adj.vertex_triangles.resize(3 * nf);
+    {
+        std::vector<int> fill(adj.vertex_offset.begin(), adj.vertex_offset.end() - 1);
+        for (std::size_t f = 0; f < nf; ++f)
+            for (int k = 0; k < 3; ++k)
+                adj.vertex_triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.triangles[f][k])]++)] =
+                    static_cast<int>(f);
+    }
+    // Halfedge 3f+i runs a -> b; its opposite runs b -> a in a triangle around b.
+    adj.opposite.assign(3 * nf, -1);
+    const int chunks = std::max(1, threads);
+    std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+    parallelChunks(nf, chunks, [&](int chunk, std::size_t fb, std::size_t fe) {
+        for (std::size_t f = fb; f < fe && errors[static_cast<std::size_t>(chunk)].empty(); ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = m.triangles[f][(i + 1) % 3], b = m.triangles[f][(i + 2) % 3];
+                int found = -1, count = 0;
+                for (int p = adj.vertex_offset[static_cast<std::size_t>(b)]; p < adj.vertex_offset[static_cast<std::size_t>(b) + 1]; ++p) {
+                    const int g = adj.vertex_triangles[static_cast<std::size_t>(p)];
+                    if (g == static_cast<int>(f)) continue;
+                    const auto& tg = m.triangles[static_cast<std::size_t>(g)];
+                    const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;  // b's corner in g
+                    if (tg[(pb + 1) % 3] == a) {  // g runs b -> a: halfedge opposite corner pb + 2
+                        found = 3 * g + (pb + 2) % 3;
+                        ++count;
+                    } else if (tg[(pb + 2) % 3] == a) {
+                        errors[static_cast<std::size_t>(chunk)] =
+                            "triangle mesh: triangles " + std::to_string(f) + " and " + std::to_string(g) +
+                            " use edge (" + std::to_string(a) + ", " + std::to_string(b) +
+                            ") in the same direction (inconsistent orientation or non-manifold edge)";
+                    }
+                }
+                if (count > 1 && errors[static_cast<std::size_t>(chunk)].empty())
+                    errors[static_cast<std::size_t>(chunk)] = "triangle mesh: edge (" + std::to_string(a) + ", " +
+                                                             std::to_string(b) + ") is shared by more than two triangles";
+                adj.opposite[3 * f + static_cast<std::size_t>(i)] = found;
+            }
+    });
+    for (const auto& e : errors)
+        if (!e.empty()) throw InputError(e);
+    return adj;
+}
+
+} // namespace HexEx

@@ -1,0 +1,152 @@
+#include "QuadExtraction.hh"
+
+#include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
+#include "../Postprocessing/DartAnnihilation.hh"
+#include "QuadAssembly.hh"
+#include "TriangleTracing.hh"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace HexEx {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+/// Parameters beyond this magnitude are refused (grid points must fit in int with room
+/// for translations, and sanitized sums must stay exact).
+constexpr double kMaxParam = 1 << 28;
+} // namespace
+
+QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& out, const QuadExtractionOptions& opt) {
+    QuadExtractionReport rep;
+    const int threads = resolveThreadCount(opt.threads);
+    rep.threads = threads;
+    auto t0 = Clock::now();
+
+    // Preprocessing.
+    const TriAdjacency adj = buildTriAdjacency(in, threads);
+    const std::size_t nf = in.triangles.size();
+    TriParams params(nf);
+    for (std::size_t f = 0; f < nf; ++f)
+        for (int k = 0; k < 3; ++k) {
+            const Vec2d& p = in.params[f][k];
+            if (std::fabs(p[0]) > kMaxParam || std::fabs(p[1]) > kMaxParam)
+                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " +
+                                 std::to_string(k) + " is larger than 2^28 in magnitude");
+            params[f][k] = Vec3d(p[0], p[1], 0);
+        }
+    const TriTransitions tr = computeTriTransitions(in, adj, params, opt.given_quarter_turns, threads);
+    rep.input.snapped_coordinates = sanitizeTriParams(in, adj, params, tr, opt.epsilon, threads);
+    const std::vector<signed char> sign = classifyTriangles(params);
+    rep.input.vertices = static_cast<long>(in.points.size());
+    rep.input.triangles = static_cast<long>(nf);
+    for (int o : adj.opposite)
+        if (o < 0) ++rep.input.boundary_edges;
+    double area = 0, unsignedArea = 0;
+    for (std::size_t f = 0; f < nf; ++f) {
+        if (sign[f] < 0) ++rep.input.flipped_triangles;
+        if (sign[f] == 0) ++rep.input.degenerate_triangles;
+        const auto& p = params[f];
+        const double a = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        area += a;
+        unsignedArea += std::fabs(a);
+    }
+    rep.input.parametric_area = area;
+    rep.input.ambiguous_transitions = tr.ambiguous;
+    rep.input.unresolved_transitions = tr.unresolved;
+    for (int h : vertexHolonomy(in, adj, tr))
+        if (h > 0) ++rep.input.cones;
+    if (!(unsignedArea <= opt.max_quads))
+        throw InputError("parameter map too large: unsigned parametric area " + std::to_string(unsignedArea) +
+                         " exceeds the limit of " + std::to_string(opt.max_quads) + " quads");
+    if (tr.unresolved > 0)
+        rep.warnings.push_back(std::to_string(tr.unresolved) +
+                               " interior edges of (nearly) zero parametric length have no determined rotation (best fit kept)");
+    rep.timings_s.preprocess = since(t0);
+
+    // Darts.
+    t0 = Clock::now();
+    const TriDartSet ds = extractTriDarts(params, sign, 16.0 * opt.max_quads + 1e6, threads);
+    rep.darts.extracted = static_cast<long>(ds.darts.size());
+    rep.darts.anti = ds.anti;
+    rep.timings_s.darts = since(t0);
+
+    // Connections.
+    t0 = Clock::now();
+    TriTraceStats ts;
+    std::vector<std::array<int, 4>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
+    rep.darts.asymmetric_links = ts.asymmetric;
+    rep.timings_s.connect = since(t0);
+
+    // Annihilation (the 3D function: alpha_3 is free throughout) and the final map.
+    t0 = Clock::now();
+    const std::size_t n = ds.darts.size();
+    std::vector<char> alive(n, 1);
+    if (opt.merge) {
+        std::vector<signed char> dsign(n);
+        for (std::size_t d = 0; d < n; ++d) dsign[d] = ds.darts[d].sign;
+        const AnnihilationStats as = annihilateDarts(links, dsign, alive);
+        rep.darts.annihilated_pairs = as.pairs;
+        rep.darts.remaining_anti = as.remaining_anti;
+    } else {
+        rep.darts.remaining_anti = ds.anti;
+    }
+    std::vector<int> newIndex(n, -1);
+    std::vector<TriDart> kept;
+    kept.reserve(n);
+    for (std::size_t d = 0; d < n; ++d)
+        if (alive[d]) {
+            newIndex[d] = static_cast<int>(kept.size());
+            kept.push_back(ds.darts[d]);
+        }
+    std::vector<std::array<int, 3>> glinks(kept.size());
+    for (std::size_t d = 0; d < n; ++d) {
+        if (!alive[d]) continue;
+        const int nd = newIndex[d];
+        for (int i = 0; i < 3; ++i) {
+            const int p = links[d][static_cast<std::size_t>(i)];
+            const int np = (p >= 0 && alive[static_cast<std::size_t>(p)]) ? newIndex[static_cast<std::size_t>(p)] : -1;
+            if (np < 0) {
+                if (p < 0 || !alive[static_cast<std::size_t>(p)]) ++rep.output.unconnected_darts;
+                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
+            } else {
+                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+            }
+        }
+    }
+    links.clear();
+    links.shrink_to_fit();
+    GMap<2> g;
+    g.assign_links(std::move(glinks));
+    rep.timings_s.postprocess = since(t0);
+
+    // Validation and assembly.
+    t0 = Clock::now();
+    QuadOrbitLabels labels;
+    rep.validation = validateQuadGMap(g, &labels);
+    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out);
+    rep.output.vertices = static_cast<long>(out.vertices.size());
+    rep.output.quads = as.quads;
+    rep.output.non_quad_faces = as.polygons;
+    rep.output.dropped_faces = as.dropped_faces;
+    rep.output.edges = labels.n_edges;
+    rep.output.boundary_edges = as.boundary_edges;
+    rep.timings_s.assemble = since(t0);
+
+    if (rep.output.unconnected_darts > 0)
+        rep.warnings.push_back(std::to_string(rep.output.unconnected_darts) + " dart links could not be traced");
+    if (rep.darts.remaining_anti > 0)
+        rep.warnings.push_back(std::to_string(rep.darts.remaining_anti) + " anti darts remain after annihilation");
+    if (as.polygons > 0) rep.warnings.push_back(std::to_string(as.polygons) + " faces are not quads (written as polygons)");
+    if (as.dropped_faces > 0)
+        rep.warnings.push_back(std::to_string(as.dropped_faces) + " faces with fewer than three vertices were left out");
+    if (!rep.validation.valid()) rep.warnings.push_back("validation: " + rep.validation.summary());
+    rep.valid_all_quad = rep.validation.valid() && as.polygons == 0 && as.dropped_faces == 0 && rep.darts.remaining_anti == 0;
+    return rep;
+}
+
+} // namespace HexEx

@@ -1,0 +1,41 @@
+#pragma once
+/// @file QuadGMapValidator.hh
+/// The validator of paper section 3.1 in 2D, for generalized maps of quad meshes (GMap<2>):
+/// involutions, closed faces, edges connected as a whole (the 2D form of equation 1) and
+/// quad faces (equation 3); the 3D-only equations (2, 4-6) have no 2D counterpart.
+
+#include "../GMap/GMap.hh"
+
+#include <string>
+#include <vector>
+
+namespace HexEx {
+
+/// Violations found by validateQuadGMap(), counted per dart.
+struct QuadGMapValidation {
+    long darts = 0;                ///< alive darts checked
+    long not_involution = 0;       ///< darts with alpha_i(alpha_i(d)) != d or linked to an erased dart
+    long open_links = 0;           ///< darts with a free alpha_0 or alpha_1 (face not closed)
+    long eq1_edge_connection = 0;  ///< (alpha_0 alpha_2)^2 != id where alpha_2 is not free
+    long eq3_quad = 0;             ///< darts whose <alpha_0, alpha_1> orbit does not have 8 darts
+    long boundary_darts = 0;       ///< darts with free alpha_2 (on the boundary)
+    /// True if no violation was found.
+    bool valid() const { return not_involution == 0 && open_links == 0 && eq1_edge_connection == 0 && eq3_quad == 0; }
+    /// One-line human-readable summary.
+    std::string summary() const;
+};
+
+/// Orbit labels of a GMap<2>, numbered 0.. in order of their smallest dart (-1 for erased darts).
+struct QuadOrbitLabels {
+    std::vector<int> face;    ///< <alpha_0, alpha_1> orbit per dart
+    std::vector<int> vertex;  ///< <alpha_1, alpha_2> orbit per dart
+    std::vector<int> edge;    ///< <alpha_0, alpha_2> orbit per dart
+    int n_faces = 0;          ///< number of face orbits
+    int n_vertices = 0;       ///< number of vertex orbits
+    int n_edges = 0;          ///< number of edge orbits
+};
+
+/// Checks every alive dart of @p g; fills @p labels if given. Linear time.
+QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels = nullptr);
+
+} // namespace HexEx

@@ -1,0 +1,199 @@
+#include "TriangleTracing.hh"
+
+#include "../Core/Parallel.hh"
+#include "../Predicates/ExactPredicates.hh"
+
+#include <algorithm>
+#include <utility>
+
+namespace HexEx {
+
+namespace {
+
+/// Steps after which a trace gives up (far more than any unit grid edge crosses in a
+/// sensible map).
+constexpr int kMaxSteps = 4096;
+
+/// A dart description in the current chart.
+struct Desc {
+    int x, y;
+    AxisDir d1, d2;
+};
+
+/// sign(a x b) of two axis directions.
+int crossDirs(AxisDir a, AxisDir b) {
+    const Vec3i u = dirVec(a), v = dirVec(b);
+    const int c = u[0] * v[1] - u[1] * v[0];
+    return (c > 0) - (c < 0);
+}
+
+/// Sign of (b - a) x d for an axis direction d (exact comparison).
+int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
+    auto sgn = [](double lo, double hi) { return lo < hi ? 1 : (lo > hi ? -1 : 0); };
+    switch (d) {
+        case 0: return sgn(b[1], a[1]);
+        case 1: return sgn(a[1], b[1]);
+        case 2: return sgn(a[0], b[0]);
+        default: return sgn(b[0], a[0]);
+    }
+}
+
+/// Side of point p of the perturbed grid line {q + s*w} + (infinitesimal offset):
+/// sign(w x (p - q)), or @p tie if p lies on the unperturbed line. Exact (q, q + w are
+/// integer points).
+int lineSide(const Vec3d& p, const Vec3i& q, const Vec3i& w, int tie) {
+    int s;
+    if (w[1] == 0) {  // along u: w x (p - q) = w_u (p_v - q_v)
+        s = p[1] > q[1] ? w[0] : (p[1] < q[1] ? -w[0] : 0);
+    } else if (w[0] == 0) {  // along v: w x (p - q) = -w_v (p_u - q_u)
+        s = p[0] > q[0] ? -w[1] : (p[0] < q[0] ? w[1] : 0);
+    } else {
+        s = orient2dAxis(toVec3d(q), toVec3d(q + w), p, 2);
+    }
+    return s != 0 ? s : tie;
+}
+
+/// sign((b - a) x w) for an edge (a, b) that contains the grid point q (exact): the sign of
+/// (b - q) x w, or of (q - a) x w when b == q.
+int crossEdgeThrough(const Vec3d& a, const Vec3d& b, const Vec3i& q, const Vec3i& w) {
+    const Vec3d z = toVec3d(q), zw = toVec3d(q + w);
+    if (b != z) return -orient2dAxis(z, zw, b, 2);
+    return orient2dAxis(z, zw, a, 2);
+}
+
+Desc mapDesc(const GridTransform& g, const Desc& d) {
+    const Vec3i z = g.apply(Vec3i(d.x, d.y, 0));
+    return {z[0], z[1], g.R.apply(d.d1), g.R.apply(d.d2)};
+}
+
+/// Everything a trace reads.
+struct Tracer {
+    const ParametrizedTriMesh& m;
+    const TriAdjacency& adj;
+    const TriParams& params;
+    const TriTransitions& tr;
+    const std::vector<signed char>& sign;
+    const TriDartSet& ds;
+
+    /// Partner or -1; @p boundary set if the trace left the surface.
+    int lookup(int f, const Desc& d) const { return sign[static_cast<std::size_t>(f)] ? findTriDart(ds, f, d.x, d.y, d.d1, d.d2) : -1; }
+
+    /// alpha_i: walk from the dart's perturbed point z + e d1 + e^2 d2 to the partner's along
+    /// a straight path, across triangles, and look the partner up in every triangle passed:
+    /// alpha_0 runs along the grid edge (z + e^2 d2 + s d1), alpha_1 turns about z inside the
+    /// quadrant (from z + e d1 + e^2 d2 towards z + e d2 + e^2 d1, direction d2 - d1) and
+    /// alpha_2 crosses the grid edge (z + e d1 - s d2). The exit edge is the one the
+    /// perturbed path crosses (in the start triangle the one it leaves through; afterwards
+    /// the other crossed edge, which also steps across flat triangles). Between proper and
+    /// flipped triangles the walk runs backwards (start and target swap), as in Algorithm 2.
+    int trace(int dart, int i, bool& boundary) const {
+        const TriDart& s = ds.darts[static_cast<std::size_t>(dart)];
+        Desc from{s.x, s.y, s.d1, s.d2}, to{};
+        Vec3i q(s.x, s.y, 0), w;
+        int tie = 0;
+        const Vec3i e1 = dirVec(s.d1), e2 = dirVec(s.d2);
+        if (i == 0) {
+            to = {s.x + e1[0], s.y + e1[1], dirNeg(s.d1), s.d2};
+            w = e1;
+            tie = crossDirs(s.d2, s.d1);
+        } else if (i == 1) {
+            to = {s.x, s.y, s.d2, s.d1};
+            w = e2 - e1;
+            tie = crossDirs(s.d1, s.d2);
+        } else {
+            to = {s.x, s.y, s.d1, dirNeg(s.d2)};
+            w = -e2;
+            tie = crossDirs(s.d1, dirNeg(s.d2));
+        }
+        int f = s.tri, entry = -1, lastSign = s.sign;
+        for (int step = 0; step < kMaxSteps; ++step) {
+            const int r = lookup(f, to);
+            if (r >= 0 && r != dart) return r;
+            const auto& p = params[static_cast<std::size_t>(f)];
+            const int sf = sign[static_cast<std::size_t>(f)];
+            int exit = -1;
+            for (int e = 0; e < 3 && exit < 0; ++e) {
+                if (e == entry) continue;
+                const Vec3d& a = p[(e + 1) % 3];
+                const Vec3d& b = p[(e + 2) % 3];
+                if (lineSide(a, q, w, tie) == lineSide(b, q, w, tie)) continue;
+                // The crossing must lie on the traced segment (between the two grid points;
+                // on the edge through z for alpha_1 and alpha_2).
+                const int oa = orient2dAxis(a, b, Vec3d(from.x, from.y, 0), 2);
+                if (i > 0 ? oa != 0 : oa * orient2dAxis(a, b, Vec3d(to.x, to.y, 0), 2) > 0) continue;
+                if (entry < 0 && sf * crossEdgeThrough(a, b, Vec3i(from.x, from.y, 0), w) >= 0 && i > 0) continue;
+                if (entry < 0 && i == 0 && sf * crossEdgeDir(a, b, s.d1) >= 0) continue;
+                exit = e;
+            }
+            if (exit < 0) return -1;
+            const std::size_t h = 3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(exit);
+            const int o = adj.opposite[h];
+            if (o < 0) {
+                boundary = true;
+                return -1;
+            }
+            const GridTransform& g = tr.halfedge[h];
+            if (!g.is_identity()) {
+                from = mapDesc(g, from);
+                to = mapDesc(g, to);
+                q = g.apply(q);
+                w = g.R.apply(w);
+            }
+            f = o / 3;
+            entry = o % 3;
+            const int sn = sign[static_cast<std::size_t>(f)];
+            if (sn != 0 && sn != lastSign) {  // between proper and flipped: the walk runs backwards
+                std::swap(from, to);
+                w = -w;
+                tie = -tie;
+                lastSign = sn;
+            }
+        }
+        return -1;
+    }
+};
+
+} // namespace
+
+std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
+                                                    const TriParams& params, const TriTransitions& tr,
+                                                    const std::vector<signed char>& sign, const TriDartSet& ds, int threads,
+                                                    TriTraceStats* stats) {
+    const std::size_t n = ds.darts.size();
+    std::vector<std::array<int, 4>> links(n);
+    const Tracer T{m, adj, params, tr, sign, ds};
+    const int chunks = std::max(1, threads);
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            const int di = static_cast<int>(d);
+            bool boundary0 = false, boundary1 = false, boundary2 = false;
+            links[d][0] = T.trace(di, 0, boundary0);
+            links[d][1] = T.trace(di, 1, boundary1);
+            const int a2 = T.trace(di, 2, boundary2);
+            links[d][2] = a2 >= 0 ? a2 : (boundary2 ? di : -1);
+            links[d][3] = di;
+        }
+    });
+    // Keep only mutual links (decided on the traced links, then applied).
+    std::vector<std::array<char, 3>> drop(n, {0, 0, 0});
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d)
+            for (int i = 0; i < 3; ++i) {
+                const int p = links[d][i];
+                if (p >= 0 && p != static_cast<int>(d) && links[static_cast<std::size_t>(p)][i] != static_cast<int>(d)) drop[d][i] = 1;
+            }
+    });
+    TriTraceStats st;
+    for (std::size_t d = 0; d < n; ++d)
+        for (int i = 0; i < 3; ++i) {
+            if (drop[d][i]) {
+                links[d][i] = -1;
+                ++st.asymmetric;
+            }
+            if (links[d][i] < 0) ++st.unconnected;
+        }
+    if (stats) *stats = st;
+    return links;
+}
+
+} // namespace HexEx
