@@ -16,6 +16,8 @@
 #   sphere.png             the bundled example Examples/data/sphere.hexex
 #   perturbed-cube.png     6x6x6 cube whose map was perturbed until many tets flipped
 #   s1-polycube.png        the real input ../shared/data/S1_polycube_scale1.hexex.xz, if present
+#   arcs-perturbed-cylinder.png  edge arcs (hexex extract --edge-arcs) of a perturbed cylinder
+#                          drawn over its tet mesh (scripts/render_arcs.py)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -84,5 +86,15 @@ if [[ -f "$S1" ]]; then
 else
     echo "make-pictures.sh: $S1 not found, skipping s1-polycube.png"
 fi
+
+# 5. Edge arcs of a perturbed cylinder (some tets flipped) over its tet mesh.
+"$HEXEX" generate cylinder --valence 3 --radius 2 --height 2 --n 2 --m 1 -o "$WORK/arcs-cylinder.hexex"
+"$HEXEX" perturb "$WORK/arcs-cylinder.hexex" -a 0.9 --seed 3 -o "$WORK/arcs-perturbed.hexex"
+flipped="$("$HEXEX" info "$WORK/arcs-perturbed.hexex" --json | sed -n 's/.*"flipped_tets": *\([0-9]*\).*/\1/p')"
+tets="$("$HEXEX" info "$WORK/arcs-perturbed.hexex" --json | sed -n 's/.*"tets": *\([0-9]*\).*/\1/p')"
+"$HEXEX" extract "$WORK/arcs-perturbed.hexex" -o "$WORK/arcs-perturbed.vtu" --edge-arcs "$WORK/arcs.vtu"
+"$PYTHON" "$ROOT/scripts/render_arcs.py" "$WORK/arcs-perturbed.hexex" "$WORK/arcs.vtu" \
+    "$IMAGES/arcs-perturbed-cylinder.png" --view 35,-50 \
+    --title "edge arcs of a valence-3 cylinder, map perturbed until $flipped of $tets tets flipped"
 
 ls -l "$IMAGES"/*.png

@@ -23,13 +23,13 @@ def _warn(messages) -> None:
         warnings.warn(m, HexExWarning, stacklevel=3)
 
 
-def _check_int(value, name: str, minimum: Optional[int] = None) -> int:
+def _check_int(value, name: str, minimum: Optional[int] = None, maximum: int = 2**31 - 1) -> int:
     if isinstance(value, bool) or not isinstance(value, (int, np.integer)):
         raise TypeError(f"{name} must be an int, got {type(value).__name__}")
     value = int(value)
     if minimum is not None and value < minimum:
         raise ValueError(f"{name} must be >= {minimum}, got {value}")
-    if value > 2**31 - 1:
+    if value > maximum:
         raise ValueError(f"{name} is too large: {value}")
     return value
 
@@ -49,7 +49,7 @@ def _check_float(value, name: str) -> float:
 
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
-            rotations=None) -> ExtractionResult:
+            rotations=None, max_memory: int = 0) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
     Args:
@@ -65,6 +65,10 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             0..23: ``rotations[t, i]`` is the rotation from tet t into its neighbour across
             the face opposite corner i (ignored on the boundary). By default the
             transitions are inferred from the parameters.
+        max_memory: memory budget in bytes; 0 = half of the memory available at the call.
+            The extractor estimates what it needs before allocating and raises
+            ``MemoryError`` (naming the tets with the largest parametric images) if the
+            estimate exceeds the budget.
 
     Returns:
         ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
@@ -73,7 +77,8 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     Raises:
         TypeError / ValueError for arrays of the wrong dtype or shape; ValueError with the
         library's message for unusable input (index out of range, repeated vertex,
-        non-manifold mesh, non-finite parameters, ...). Defective maps do not raise: what
+        non-manifold mesh, non-finite parameters, ...); MemoryError if the memory budget
+        would be exceeded. Defective maps do not raise: what
         could not be resolved is in the report, non-hex cells are in ``polyhedra``.
 
     The GIL is released while the C++ library converts and extracts.
@@ -83,7 +88,9 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     epsilon = _check_float(epsilon, "epsilon")
     if rotations is not None:
         rotations = as_index_array(rotations, "rotations", (tets.shape[0], 4), dtypes=(np.int32,))
-    pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations)
+    max_memory = _check_int(max_memory, "max_memory", 0, maximum=2**64 - 1)
+    pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
+                                                  max_memory)
     return ExtractionResult(pts, hexes, polyhedra, json.loads(report))
 
 

@@ -15,6 +15,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -32,7 +33,7 @@ double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>
 /// Extracts the hex mesh of the map given as arrays; returns (points, hexes, polyhedra,
 /// report JSON). The GIL is released from the conversion to the end of the extraction.
 nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const DoubleArray& params, int threads,
-                  double epsilon, bool merge, const std::optional<Int32Array>& rotations) {
+                  double epsilon, bool merge, const std::optional<Int32Array>& rotations, std::uint64_t max_memory) {
     if (threads < 0) throw std::invalid_argument("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(threads));
     if (!(epsilon >= 0 && epsilon < 0.5)) throw std::invalid_argument("epsilon must be in [0, 0.5), got " + HexEx::jsonNumber(epsilon));
     const TetIndices tetIdx = tetIndices(tets);
@@ -56,6 +57,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
             opt.threads = threads;
             opt.epsilon = epsilon;
             opt.merge = merge;
+            opt.max_memory = max_memory;
             if (rotations) opt.given_rotations = &given;
             rep = HexEx::extractHexMesh(pm, hm, opt);
         }
@@ -74,17 +76,20 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
 NB_MODULE(_core, m) {
     namespace nb = nanobind;
     m.doc() = "C++ core of the hexex package (use the functions of the hexex package, not these).";
-    // Bad input from the library becomes ValueError carrying its message (file, line, reason).
+    // Bad input from the library becomes ValueError carrying its message (file, line, reason);
+    // an exceeded memory budget (ResourceError, a kind of InputError) becomes MemoryError.
     nb::register_exception_translator([](const std::exception_ptr& p, void*) {
         try {
             std::rethrow_exception(p);
+        } catch (const HexEx::ResourceError& e) {
+            PyErr_SetString(PyExc_MemoryError, e.what());
         } catch (const HexEx::InputError& e) {
             PyErr_SetString(PyExc_ValueError, e.what());
         }
     });
     m.def("version", &HexEx::version, "Library version string (x.y.z).");
     m.def("extract", &HexExPython::extract, nb::arg("points"), nb::arg("tets"), nb::arg("params"), nb::arg("threads"),
-          nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(),
+          nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(), nb::arg("max_memory"),
           "Extracts the hex mesh of checked arrays; returns (points, hexes, polyhedra, report_json).");
     HexExPython::bindMapFunctions(m);
     HexExPython::bindHexMeshFunctions(m);

@@ -151,3 +151,11 @@ def test_random_input_never_crashes():
         except ValueError:
             outcomes.add("error")
     assert outcomes == {"ok", "error"}
+
+
+def test_memory_budget_raises_memory_error():
+    m = hexex.generate_cube(2, 40)  # 64,000 hexes from 48 tets
+    with pytest.raises(MemoryError, match=r"memory|budget"):
+        hexex.extract(*m, max_memory=1_000_000)
+    with pytest.raises(ValueError, match=r"^max_memory must be >= 0, got -1$"):
+        hexex.extract(*m, max_memory=-1)

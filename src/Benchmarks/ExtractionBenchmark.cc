@@ -5,7 +5,7 @@
 /// Usage:
 /// ```
 /// extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]
-///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--list]
+///                      [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--arcs] [--list]
 /// ```
 /// Cases (default: all): cube20, cube30, cube40, cylinder6, s1x2, perturbed, sphere_1e5,
 /// sphere_1e6, read_cube20, write_cylinder6 (the cylinder6 extraction, then writeHexMesh()
@@ -43,6 +43,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <ctime>
 #include <fstream>
 #include <functional>
 #include <map>
@@ -89,6 +90,7 @@ struct Options {
     std::string data_dir = std::string(HEXEX_SOURCE_DIR) + "/../shared/data";  ///< real inputs
     bool quick = false;              ///< small inputs only
     double timeout_s = 0;            ///< per-measurement time limit, 0 for none
+    bool arcs = false;               ///< also compute edge arcs and face patches (ExtractionOptions::arcs)
     std::uint64_t max_memory = 0;    ///< ExtractionOptions::max_memory (0: the library's default)
 };
 
@@ -161,6 +163,7 @@ const char* const kNumericFields[] = {
     "adjacency_s", "preprocess_s", "vertices_s", "darts_s", "connect_s", "postprocess_s", "assemble_s",
     "total_s", "read_s", "input_rss_mb", "peak_rss_mb", "tets_per_s", "hexes_per_s",
     "write_binary_s", "write_compressed_s", "write_ascii_s", "binary_mb", "compressed_mb", "ascii_mb",
+    "cpu_s", "arcs_s", "arc_edges", "failed_arcs", "failed_patches",
 };
 
 /// Replaces tabs and line breaks so that @p s fits in one field of a result line.
@@ -279,10 +282,13 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     r.num["input_rss_mb"] = procStatusKb("VmRSS") / 1024.0;
 
     HexEx::HexMesh out;
+    HexEx::HexArcs arcs;
     HexEx::ExtractionOptions eo;
     eo.threads = threads;
+    if (opt.arcs) eo.arcs = &arcs;
     eo.max_memory = opt.max_memory;
     t0 = Clock::now();
+    const std::clock_t c0 = std::clock();
     HexEx::ExtractionReport rep;
     try {
         rep = HexEx::extractHexMesh(pm, out, eo);
@@ -294,6 +300,8 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
         return;
     }
     const double total = secondsSince(t0);
+    // Processor time of all threads (steadier than wall time on a shared machine).
+    r.num["cpu_s"] = static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
     r.num["peak_rss_mb"] = procStatusKb("VmHWM") / 1024.0;
 
     r.num["threads_used"] = rep.threads;
@@ -311,6 +319,12 @@ void measureExtraction(const CaseDef& def, const Options& opt, int threads, Resu
     r.num["connect_s"] = rep.timings_s.connect;
     r.num["postprocess_s"] = rep.timings_s.postprocess;
     r.num["assemble_s"] = rep.timings_s.assemble;
+    if (opt.arcs) {
+        r.num["arcs_s"] = rep.timings_s.arcs;
+        r.num["arc_edges"] = static_cast<double>(rep.arcs.edges);
+        r.num["failed_arcs"] = static_cast<double>(rep.arcs.failed_edges);
+        r.num["failed_patches"] = static_cast<double>(rep.arcs.failed_faces);
+    }
     r.num["total_s"] = total;
     r.num["tets_per_s"] = total > 0 ? static_cast<double>(pm.mesh.n_cells()) / total : 0;
     r.num["hexes_per_s"] = total > 0 ? static_cast<double>(out.hexes.size()) / total : 0;
@@ -659,13 +673,14 @@ bool writeJson(const Options& opt, const std::vector<Result>& results, const std
 
 const char* const kUsage =
     "usage: extraction_benchmark [--case NAME]... [--threads 1,2] [--json OUT.json]\n"
-    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--list]\n"
+    "                            [--data-dir DIR] [--quick] [--timeout SECONDS] [--max-memory SIZE] [--arcs] [--list]\n"
     "  --case NAME      run only this case (repeatable; default: all, see --list)\n"
     "  --threads LIST   comma-separated thread counts, 0 = all hardware threads (default 1,2)\n"
     "  --json FILE      also write the results and the reference numbers as JSON\n"
     "  --data-dir DIR   directory of the real inputs (default <repo>/../shared/data)\n"
     "  --quick          small inputs: a smoke test that runs in seconds\n"
     "  --timeout S      kill a measurement after S seconds (default: no limit)\n"
+    "  --arcs           also compute the edge arcs and face patches (ExtractionOptions::arcs)\n"
     "  --max-memory SZ  memory budget of every extraction, e.g. 2G (default: the library's,\n"
     "                   half of the available memory); a refusal is the status 'refused'\n"
     "  --list           list the cases and exit\n";
@@ -708,6 +723,8 @@ int main(int argc, char** argv) {
                 opt.data_dir = value();
             } else if (a == "--quick") {
                 opt.quick = true;
+            } else if (a == "--arcs") {
+                opt.arcs = true;
             } else if (a == "--timeout") {
                 const std::string v = value();
                 char* end = nullptr;

@@ -3,6 +3,7 @@
 /// The one-call API: extract a hex mesh from a tet mesh with an integer-grid map.
 
 #include "Extraction/ExtractionReport.hh"
+#include "Mesh/HexArcs.hh"
 #include "Mesh/HexMesh.hh"
 #include "Mesh/ParametrizedTetMesh.hh"
 

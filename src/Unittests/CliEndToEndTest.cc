@@ -306,8 +306,37 @@ TEST_F(CliEndToEndTest, DestroyedMapStillWritesBestMesh) {
     expectReportKeys(slurp(path("r.json")));
 }
 
+TEST_F(CliEndToEndTest, EdgeArcsAndFacePatches) {
+    generateCube("cube.hexex", 2, 3);  // 27 hexes: 3*3*16 = 144 edges, 3*9*4 = 108 faces
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtu"), "--edge-arcs", path("a.vtu"),
+                             "--face-patches", path("p.vtu"), "--report", path("r.json")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote 144 edge arcs to"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("wrote 108 face patches to"), std::string::npos) << r.err;
+    const std::string arcs = slurp(path("a.vtu")), patches = slurp(path("p.vtu"));
+    EXPECT_NE(arcs.find("NumberOfCells=\"144\""), std::string::npos);
+    EXPECT_NE(arcs.find("Name=\"edge_id\""), std::string::npos);
+    EXPECT_NE(patches.find("Name=\"face_id\""), std::string::npos);
+    const std::string json = slurp(path("r.json"));
+    EXPECT_TRUE(std::regex_search(json, std::regex("\"arcs\": \\{\\s*\"edges\": 144,\\s*\"faces\": 108,\\s*\"failed_edges\": 0,"
+                                                   "\\s*\"failed_faces\": 0,")))
+        << json;
+    // Without the options the report has no arcs object.
+    const RunResult plain = run({"extract", path("cube.hexex"), "-o", path("cube.vtu"), "--report", path("r2.json")});
+    ASSERT_EQ(plain.status, 0) << plain.err;
+    EXPECT_EQ(slurp(path("r2.json")).find("\"arcs\""), std::string::npos);
+}
+
+TEST_F(CliEndToEndTest, EdgeArcsNeedVtu) {
+    generateCube("cube.hexex", 1, 1);
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtu"), "--edge-arcs", path("a.vtk")});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--edge-arcs: '" + path("a.vtk") + "' must end in .vtu"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(path("cube.vtu")));
+}
+
 TEST_F(CliEndToEndTest, MaxMemoryRefusesANeedleWithExitTwo) {
-    const std::string sphere = "../shared/data/sphere.hexex";
+    const std::string sphere = "Examples/data/sphere.hexex";
     if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
     HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
     pm.params[10][2][1] = 1e6;  // one corrupted number: a needle tet

@@ -37,9 +37,9 @@ HexMesh sourceMesh(const std::string& name) {
     if (name == "cylinder5") return HexExTest::extracted(generateCylinder(5, 2, 1, 2, 1));
     if (name == "twisted") return HexExTest::extracted(generateTwistedRing(6, 2, 6, 2));
     if (name == "sphere") {
-        std::ifstream probe("../shared/data/sphere.hexex");
+        std::ifstream probe("Examples/data/sphere.hexex");
         if (!probe) return HexMesh();
-        return HexExTest::extracted(readHexExFile("../shared/data/sphere.hexex"));
+        return HexExTest::extracted(readHexExFile("Examples/data/sphere.hexex"));
     }
     const std::string path = name;
     return readHexMesh(path);
@@ -115,7 +115,7 @@ TEST(FoldedHexMaps, SourceMeshBackUnderFolds) {
     for (const std::string& name : names) {
         const HexMesh src = sourceMesh(name);
         if (src.hexes.empty()) {
-            std::cout << "skipping " << name << ": ../shared/data/sphere.hexex not found\n";
+            std::cout << "skipping " << name << ": Examples/data/sphere.hexex not found\n";
             continue;
         }
         for (double a : {0.3, 0.5, 0.6, 0.7})

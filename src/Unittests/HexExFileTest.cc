@@ -404,7 +404,7 @@ TEST(HexExFileTest, FileRoundTrip) {
 }
 
 TEST(HexExFileTest, ReadsSphere) {
-    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/../shared/data/sphere.hexex";
+    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "test data not found: " << path;
     ReadReport report;
     const auto pm = readHexExFile(path, &report);

@@ -61,7 +61,7 @@ TEST(MapStatisticsTest, EmptyMesh) {
 }
 
 TEST(MapStatisticsTest, Sphere) {
-    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/../shared/data/sphere.hexex";
+    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex";
     if (!std::filesystem::exists(path)) GTEST_SKIP() << "test data not found: " << path;
     const MapStatistics s = computeMapStatistics(readHexExFile(path));
     EXPECT_EQ(s.vertices, 41u);

@@ -20,10 +20,10 @@ using namespace HexEx;
 
 namespace {
 
-/// ../shared/data/sphere.hexex with parameter y of corner 2 of tet 10 set to @p value
+/// Examples/data/sphere.hexex with parameter y of corner 2 of tet 10 set to @p value
 /// (a needle tet: one corrupted number); false if the file is absent.
 bool sphereWithBadParameter(double value, ParametrizedTetMesh& pm) {
-    const std::string path = "../shared/data/sphere.hexex";
+    const std::string path = "Examples/data/sphere.hexex";
     if (!std::ifstream(path)) return false;
     pm = readHexExFile(path);
     pm.params[10][2][1] = value;
@@ -115,7 +115,7 @@ TEST(MemoryBudget, EstimateDoesNotDependOnTheThreadCount) {
 
 TEST(MemoryBudget, RefusesTheNeedleAtOnceNamingTheTet) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(1e6, pm)) GTEST_SKIP() << "../shared/data/sphere.hexex not present";
+    if (!sphereWithBadParameter(1e6, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     ExtractionOptions opt;
     opt.threads = 2;
     opt.max_memory = 256ull << 20;
@@ -129,7 +129,7 @@ TEST(MemoryBudget, RefusesTheNeedleAtOnceNamingTheTet) {
 
 TEST(MemoryBudget, TheSameNeedleRunsWithinAnAmpleBudget) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(300, pm)) GTEST_SKIP() << "../shared/data/sphere.hexex not present";
+    if (!sphereWithBadParameter(300, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     ExtractionOptions opt;
     opt.threads = 2;
     opt.max_memory = 1ull << 30;
@@ -167,4 +167,20 @@ TEST(MemoryBudget, BadAllocBecomesAResourceErrorNamingTheStage) {
     EXPECT_NE(msg.find("out of memory (std::bad_alloc) in the connect stage (memory budget "), std::string::npos) << msg;
     EXPECT_NE(msg.find("largest parametric images in the input: tet "), std::string::npos) << msg;
     EXPECT_NE(msg.find("--max-memory"), std::string::npos) << msg;
+}
+
+TEST(MemoryBudget, VolumeLimitNamesTheLargestImagesToo) {
+    ParametrizedTetMesh pm;
+    if (!sphereWithBadParameter(1e8, pm)) GTEST_SKIP() << "../shared/data/sphere.hexex not present";
+    HexMesh hm;
+    try {
+        extractHexMesh(pm, hm);
+        FAIL() << "no refusal";
+    } catch (const InputError& e) {
+        const std::string msg = e.what();
+        EXPECT_NE(msg.find("(ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
+                           "parametric images: tet 10 ("),
+                  std::string::npos)
+            << msg;
+    }
 }

@@ -1,5 +1,5 @@
 // OpenVolumeMesh files: the fixtures written by OpenVolumeMesh 3.4.1 itself
-// (../shared/data/ovm), the .ovmb writer (byte-identical to OpenVolumeMesh's own output),
+// (bundled copies in src/Unittests/data/ovm; S1 from ../shared/data/ovm), the .ovmb writer (byte-identical to OpenVolumeMesh's own output),
 // the hexahedral-kernel layout, and `hexex convert`.
 
 #include "TestMeshChecks.hh"
@@ -29,7 +29,8 @@ using HexExTest::extracted;
 
 namespace {
 
-const std::string kOvmDir = "../shared/data/ovm/";
+/// Bundled copies of the small OpenVolumeMesh-written fixtures (see data/ovm/README.md).
+const std::string kOvmDir = "src/Unittests/data/ovm/";
 
 std::string fileBytes(const std::string& path) {
     std::ifstream in = detail::openInputFile(path);
@@ -101,7 +102,7 @@ TEST(OvmFiles, SphereAsciiWithSixDigitsExtractsAllHex) {
 TEST(OvmFiles, SphereBinaryReadsExactlyTheHexexMap) {
     if (!std::filesystem::exists(kOvmDir + "sphere.ovmb")) GTEST_SKIP() << "fixture " << kOvmDir << "sphere.ovmb absent";
     const ParametrizedTetMesh fromOvmb = readOvmTetMesh(kOvmDir + "sphere.ovmb");
-    const ParametrizedTetMesh fromHexex = readHexExFile("../shared/data/sphere.hexex");
+    const ParametrizedTetMesh fromHexex = readHexExFile("Examples/data/sphere.hexex");
     ASSERT_EQ(fromOvmb.mesh.n_cells(), 76u);
     for (std::size_t c = 0; c < 76; ++c) {
         const CellHandle ch(static_cast<int>(c));
@@ -117,11 +118,11 @@ TEST(OvmFiles, SphereBinaryReadsExactlyTheHexexMap) {
 
 TEST(OvmFiles, TetWriterIsByteIdenticalToOpenVolumeMesh) {
     if (!std::filesystem::exists(kOvmDir + "sphere.ovmb")) GTEST_SKIP() << "fixture " << kOvmDir << "sphere.ovmb absent";
-    const OvmModel m = ovmFromTetMesh(readHexExFile("../shared/data/sphere.hexex"));
+    const OvmModel m = ovmFromTetMesh(readHexExFile("Examples/data/sphere.hexex"));
     EXPECT_EQ(writeOvmBinary(m), fileBytes(kOvmDir + "sphere.ovmb"));
     // The ASCII writer keeps all digits; its map reads back exactly.
     const ParametrizedTetMesh back = readOvmTetBuffer(writeOvmAscii(m), "sphere17.ovm");
-    EXPECT_EQ(back.params, readHexExFile("../shared/data/sphere.hexex").params);
+    EXPECT_EQ(back.params, readHexExFile("Examples/data/sphere.hexex").params);
 }
 
 TEST(OvmFiles, HexKernelFileValidatesAndItsLayoutIsOurs) {
@@ -157,7 +158,7 @@ TEST(OvmFiles, HexKernelFileValidatesAndItsLayoutIsOurs) {
 }
 
 TEST(OvmFiles, PolycubeFromOvmbExtractsBitIdenticallyToHexex) {
-    const std::string ovmb = kOvmDir + "S1_polycube_scale1.ovmb.xz", hexex = "../shared/data/S1_polycube_scale1.hexex.xz";
+    const std::string ovmb = std::string("../shared/data/ovm/S1_polycube_scale1.ovmb.xz"), hexex = "../shared/data/S1_polycube_scale1.hexex.xz";
     if (!std::filesystem::exists(ovmb) || !std::filesystem::exists(hexex)) GTEST_SKIP() << "fixture " << ovmb << " absent";
     const std::string a = capture("xz -dc '" + ovmb + "'"), b = capture("xz -dc '" + hexex + "'");
     if (a.empty() || b.empty()) GTEST_SKIP() << "xz not available";

@@ -139,7 +139,7 @@ TEST(PipelineStages, SameAsExtractorOnPerturbedCubeWithFolds) {
 }
 
 TEST(PipelineStages, SameAsExtractorOnSphere) {
-    const std::string path = "../shared/data/sphere.hexex";
+    const std::string path = "Examples/data/sphere.hexex";
     if (!std::ifstream(path)) GTEST_SKIP() << path << " not present";
     expectSameAsExtractor(readHexExFile(path), 2);
 }

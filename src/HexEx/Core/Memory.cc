@@ -30,6 +30,17 @@ std::uint64_t cgroupValue(const char* path) {
     if (!(in >> text) || text.empty() || !std::isdigit(static_cast<unsigned char>(text[0]))) return 0;
     return static_cast<std::uint64_t>(std::strtoull(text.c_str(), nullptr, 10));
 }
+
+/// The page cache of the cgroup ("file" in memory.stat): counted in memory.current but
+/// reclaimable, like the cache that MemAvailable counts as available. 0 if unknown.
+std::uint64_t cgroupFileCache() {
+    std::ifstream in("/sys/fs/cgroup/memory.stat");
+    std::string key;
+    std::uint64_t value = 0;
+    while (in >> key >> value)
+        if (key == "file") return value;
+    return 0;
+}
 } // namespace
 
 std::uint64_t availableMemoryBytes() {
@@ -40,7 +51,8 @@ std::uint64_t availableMemoryBytes() {
     }
     const std::uint64_t limit = cgroupValue("/sys/fs/cgroup/memory.max");
     if (limit > 0) {
-        const std::uint64_t used = cgroupValue("/sys/fs/cgroup/memory.current");
+        const std::uint64_t current = cgroupValue("/sys/fs/cgroup/memory.current"), cache = cgroupFileCache();
+        const std::uint64_t used = current > cache ? current - cache : 0;
         const std::uint64_t free = limit > used ? limit - used : 0;
         if (avail == 0 || free < avail) avail = free;
     }

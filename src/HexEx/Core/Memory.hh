@@ -9,7 +9,8 @@ namespace HexEx {
 
 /// Bytes this process can allocate now without pushing others out: MemAvailable of
 /// /proc/meminfo (Linux), lowered to the free part of a cgroup v2 limit
-/// (/sys/fs/cgroup/memory.max minus memory.current) if there is one; otherwise the free
+/// (/sys/fs/cgroup/memory.max minus memory.current, not counting the cgroup's reclaimable
+/// page cache) if there is one; otherwise the free
 /// physical memory from sysconf(); 0 if none of these is known.
 std::uint64_t availableMemoryBytes();
 

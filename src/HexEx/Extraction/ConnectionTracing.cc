@@ -193,6 +193,16 @@ int exitFaceDegenerate(int i, const TetSoS& T, const Desc& s, int entry, const T
 
 constexpr int kMaxSteps = 4096;
 
+} // namespace
+
+int edgeTraceExitFace(const TetMesh& mesh, const TetSoS& T, int tet, const Vec3i& z, const std::array<AxisDir, 3>& d,
+                      int entry) {
+    const Desc s{z, d};
+    return T.vol != 0 ? exitFace(0, T, s, entry) : exitFaceDegenerate(0, T, s, entry, mesh, tet);
+}
+
+namespace {
+
 long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 
 /// Number of distinct frame codes (frameCode()).

@@ -33,6 +33,13 @@ struct TraceStats {
     long split_alpha0 = 0;               ///< darts of such groups that left the shared walk at a tie-break depending on d2, d3
 };
 
+/// Local index of the face through which the trace of an edge leaves tet @p tet: the line
+/// z + e^2 d[1] + e^3 d[2] (e > 0 infinitesimal), followed along d[0], with the symbolic
+/// tie-breaking of the alpha_0 tracing (degenerate tets included). @p entry is the face it
+/// came in through (-1 at the start). Returns -1 if no face qualifies.
+int edgeTraceExitFace(const TetMesh& mesh, const TetSoS& T, int tet, const Vec3i& z, const std::array<AxisDir, 3>& d,
+                      int entry);
+
 /// Traces all four alpha links of every dart. alpha[d][3] == d marks a boundary face;
 /// kUnconnected marks a failure; values <= -2 are partners in implicit cells
 /// (implicitPartnerOccurrence()). Deterministic for any thread count. Throws InputError if

@@ -4,6 +4,7 @@
 
 #include "../GMap/GMapValidator.hh"
 
+#include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -14,6 +15,8 @@ namespace HexEx {
 /// Name of the optional `int` halfface property holding the given rotation (0..23) of
 /// each halfface's transition into its neighbour.
 inline constexpr const char* kGivenRotationProperty = "hexex:rotation";
+
+struct HexArcs;  // Mesh/HexArcs.hh
 
 /// Options of extractHexMesh().
 struct ExtractionOptions {
@@ -41,6 +44,10 @@ struct ExtractionOptions {
     /// paper's assumption that matchings are known). If null, an `int` halfface property
     /// named kGivenRotationProperty on the tet mesh is used when present.
     const std::vector<int>* given_rotations = nullptr;
+    /// Optional: if set, receives the exact image of every hex edge (a polyline, "arc") and
+    /// hex face (a triangulated "patch") in the input (Documentation/arcs.md). Off (null) by
+    /// default, and then costs nothing.
+    HexArcs* arcs = nullptr;
     /// Optional progress callback: (phase name, fraction done in [0, 1]).
     std::function<void(const std::string&, double)> progress;
 };
@@ -80,6 +87,17 @@ struct ExtractionReport {
         long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
         long implicit_cells = 0;     ///< hexes built from the grid inside one tet, without darts
     } darts;  ///< dart statistics
+    /// Edge arcs and face patches (only with ExtractionOptions::arcs).
+    struct Arcs {
+        /// At most this many ids are listed in failed_edge_ids / failed_face_ids.
+        static constexpr std::size_t kMaxListed = 20;
+        long edges = 0;                      ///< hex edges (each has an arc unless it failed)
+        long faces = 0;                      ///< hex faces (each has a patch unless it failed)
+        long failed_edges = 0;               ///< edges whose arc could not be formed
+        long failed_faces = 0;               ///< faces whose patch could not be formed or is incomplete
+        std::vector<int> failed_edge_ids;    ///< the first kMaxListed failed edge ids
+        std::vector<int> failed_face_ids;    ///< the first kMaxListed failed face ids
+    } arcs;  ///< arcs and patches
     /// Wall-clock seconds per stage.
     struct Timings {
         double preprocess = 0;   ///< transitions, sanitization, classification
@@ -88,6 +106,7 @@ struct ExtractionReport {
         double connect = 0;      ///< tracing of the alpha links
         double postprocess = 0;  ///< annihilation, face repair, map construction
         double assemble = 0;     ///< validation and hex mesh assembly
+        double arcs = 0;         ///< edge arcs and face patches (ExtractionOptions::arcs)
     } timings_s;  ///< timings
     GMapValidation validation;           ///< validator result on the final map
     bool valid_all_hex = false;          ///< every cell a hex and the map valid

@@ -4,6 +4,7 @@
 #include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
 #include "../Pipeline/AnnihilateStage.hh"
+#include "../Pipeline/ArcStage.hh"
 #include "../Pipeline/AssembleStage.hh"
 #include "../Pipeline/ConnectStage.hh"
 #include "../Pipeline/DartStage.hh"
@@ -107,18 +108,30 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
         addToReport(cells, rep);
     }
     rep.timings_s.vertices = clock.lap();
+    // The arcs stage (optional) walks from the darts of the hexes: keep them until then.
+    const bool arcs = opt.arcs != nullptr;
+    std::vector<int> origin;
+    if (arcs) origin = mapDartOrigins(survivors.new_index, survivors.n_alive);
     // The extracted darts are not needed any more (the implicit cells keep the dense
     // index): free them before the assembly allocates its labels (peak memory).
-    release(darts.darts.darts);
+    if (!arcs) release(darts.darts.darts);
     release(darts.sign);
     release(survivors.alive);
     release(survivors.new_index);
 
     enter("assemble");
-    AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads});
+    AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads, arcs});
     addToReport(assembled, rep);
     output = std::move(assembled.mesh);
     rep.timings_s.assemble = clock.lap();
+
+    if (arcs) {
+        enter("arcs");
+        *opt.arcs = arcStage({&mesh, &pre.transitions, &pre.tets, &output, &map.map, &assembled.hex_darts, &darts.darts,
+                              &origin, implicit ? &cells : nullptr, threads});
+        addToReport(*opt.arcs, rep);
+        rep.timings_s.arcs = clock.lap();
+    }
     progress("done", 1);
     return rep;
 }

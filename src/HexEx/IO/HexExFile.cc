@@ -14,15 +14,9 @@
 #include <charconv>
 #include <climits>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
-#include <filesystem>
 #include <fstream>
-#include <iostream>
-#include <iterator>
-#include <sstream>
 #include <stdexcept>
-#include <system_error>
 #include <utility>
 
 namespace HexEx {
@@ -38,50 +32,21 @@ using detail::quoteToken;
 /// Whitespace as understood by the format.
 inline bool isSpace(char ch) { return detail::isFormatSpace(ch); }
 
-
-/// Splits the text into whitespace-separated tokens, tracking line numbers, and parses
-/// them; every failure becomes an InputError "<name>:<line>: <reason>".
-class Parser {
+/// The tokenizer of the text readers with this format's messages for numbers and counts;
+/// every failure becomes an InputError "<name>:<line>: <reason>".
+class Parser : public detail::Lexer {
 public:
-    Parser(std::string_view text, const std::string& name) : text_(text), name_(name) {}
-
-    /// Throws InputError at @p line with @p reason.
-    [[noreturn]] void fail(int line, const std::string& reason) const {
-        throw InputError(name_ + ":" + std::to_string(line) + ": " + reason);
-    }
-
-    /// Skips whitespace; true if a token follows (then tokenLine() is its line).
-    bool atToken() {
-        while (pos_ < text_.size() && isSpace(text_[pos_])) {
-            if (text_[pos_] == '\n') ++line_;
-            ++pos_;
-        }
-        return pos_ < text_.size();
-    }
-
-    /// Last line of the file (a final line break does not start a new line).
-    int eofLine() const { return !text_.empty() && text_.back() == '\n' && line_ > 1 ? line_ - 1 : line_; }
-
-    /// Line of the current position (of the next token after atToken()).
-    int line() const { return line_; }
+    using Lexer::Lexer;
 
     /// Sets the note added to end-of-file messages (e.g. "file declares 5 vertices").
     void setNote(std::string note) { note_ = std::move(note); }
 
-    /// Bytes not yet consumed.
-    std::size_t remaining() const { return text_.size() - pos_; }
-
-    /// Current byte offset.
-    std::size_t position() const { return pos_; }
-
     /// Next token; @p what() describes the expected item for the end-of-file message.
     template <class What>
     std::string_view token(const What& what) {
-        if (!atToken())
+        if (!more())
             fail(eofLine(), "unexpected end of file: expected " + what() + (note_.empty() ? "" : " (" + note_ + ")"));
-        const std::size_t start = pos_;
-        while (pos_ < text_.size() && !isSpace(text_[pos_])) ++pos_;
-        return text_.substr(start, pos_ - start);
+        return next(std::string()).text;
     }
 
     /// Next token as a signed integer (no range check beyond long long).
@@ -90,8 +55,8 @@ public:
         const std::string_view tok = token(what);
         long long value = 0;
         const detail::NumberParse r = detail::parseInteger(tok, value);
-        if (r == detail::NumberParse::OutOfRange) fail(line_, "integer " + quoteToken(tok) + " out of range for " + what());
-        if (r != detail::NumberParse::Ok) fail(line_, "expected an integer for " + what() + ", got " + quoteToken(tok));
+        if (r == detail::NumberParse::OutOfRange) fail(line(), "integer " + quoteToken(tok) + " out of range for " + what());
+        if (r != detail::NumberParse::Ok) fail(line(), "expected an integer for " + what() + ", got " + quoteToken(tok));
         return value;
     }
 
@@ -102,41 +67,28 @@ public:
         double value = 0;
         const detail::NumberParse r = detail::parseReal(tok, value);
         if (r == detail::NumberParse::OutOfRange)
-            fail(line_, "number " + quoteToken(tok) + " out of double range for " + what());
-        if (r != detail::NumberParse::Ok) fail(line_, "expected a number for " + what() + ", got " + quoteToken(tok));
-        if (!std::isfinite(value)) fail(line_, "NaN or infinite value " + quoteToken(tok) + " for " + what());
+            fail(line(), "number " + quoteToken(tok) + " out of double range for " + what());
+        if (r != detail::NumberParse::Ok) fail(line(), "expected a number for " + what() + ", got " + quoteToken(tok));
+        if (!std::isfinite(value)) fail(line(), "NaN or infinite value " + quoteToken(tok) + " for " + what());
         return value;
     }
 
     /// Next token as a count in [0, maxCount].
     long long count(const char* what, long long maxCount) {
-        const auto desc = [&] { return std::string(what); };
-        const long long n = integer(desc);
-        if (n < 0) fail(line_, "negative " + std::string(what) + " " + std::to_string(n));
+        const long long n = integer([&] { return std::string(what); });
+        if (n < 0) fail(line(), "negative " + std::string(what) + " " + std::to_string(n));
         if (n > maxCount)
-            fail(line_, std::string(what) + " " + std::to_string(n) + " too large (at most " +
-                            std::to_string(maxCount) + ")");
+            fail(line(), std::string(what) + " " + std::to_string(n) + " too large (at most " +
+                             std::to_string(maxCount) + ")");
         return n;
     }
 
 private:
-    std::string_view text_;
-    const std::string& name_;
-    std::size_t pos_ = 0;
-    int line_ = 1;
     std::string note_;
 };
 
 const char* const kAxisName[3] = {"x", "y", "z"};
 const char* const kParamName[3] = {"u", "v", "w"};
-
-/// Swaps corners 2 and 3 of every tet and of its parameters.
-void reorientAll(std::vector<std::array<int, 4>>& cells, CornerParams& params) {
-    for (std::size_t c = 0; c < cells.size(); ++c) {
-        std::swap(cells[c][2], cells[c][3]);
-        std::swap(params[c][2], params[c][3]);
-    }
-}
 
 /// Appends "tet K (line L), ..." for up to five tets of @p list.
 std::string listTets(const std::vector<std::size_t>& list, const std::vector<int>& lines) {
@@ -267,7 +219,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     constexpr long long kParallelMinTets = 20000;
     const int nThreads = resolveThreadCount(threads);
     const bool parsed = nc >= kParallelMinTets && nThreads > 1 &&
-                        parseTetsParallel(text, in.position(), in.line(), nv, nc, cells, params, lines, nThreads);
+                        parseTetsParallel(text, in.offset(), static_cast<int>(in.line()), nv, nc, cells, params, lines, nThreads);
     if (!parsed) {
         cells.clear();
         params.clear();
@@ -281,10 +233,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         std::array<int, 4> cv;
         for (int i = 0; i < 4; ++i) {
             const auto desc = [&] { return "vertex index " + std::to_string(i) + " of " + tetDesc(); };
-            if (i == 0) {
-                in.atToken();
-                lines.push_back(in.line());
-            }
+            if (i == 0 && in.more()) lines.push_back(static_cast<int>(in.line()));
             const long long idx = in.integer(desc);
             if (idx < 0 || idx >= nv)
                 in.fail(in.line(), "vertex index " + std::to_string(idx) + " of tet " + std::to_string(c) +
@@ -304,7 +253,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         cells.push_back(cv);
         params.push_back(cp);
     }
-    if (!parsed && in.atToken()) in.fail(in.line(), "unexpected data after last tet");
+    if (!parsed && in.more()) in.fail(in.line(), "unexpected data after last tet");
 
     // 3D orientation (exact): all positive, or all negative (mirrored), nothing else.
     std::vector<std::size_t> negative, positive;
@@ -317,7 +266,10 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     std::vector<std::string> warnings;
     bool reoriented = false;
     if (positive.empty()) {
-        reorientAll(cells, params);
+        for (std::size_t c = 0; c < cells.size(); ++c) {  // swap corners 2 and 3 (and their parameters)
+            std::swap(cells[c][2], cells[c][3]);
+            std::swap(params[c][2], params[c][3]);
+        }
         reoriented = true;
         warnings.push_back(name + ": mesh is mirrored: all " + std::to_string(cells.size()) +
                            " tets were negatively oriented and have been reoriented");
@@ -362,91 +314,37 @@ ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, R
 }
 
 ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report) {
-    std::ifstream in = detail::openInputFile(path);
-    std::string text;
-    in.seekg(0, std::ios::end);
-    const std::streamoff size = in.tellg();
-    if (size >= 0) {
-        text.resize(static_cast<std::size_t>(size));
-        in.seekg(0, std::ios::beg);
-        in.read(text.data(), size);
-        if (in.gcount() != size) throw InputError(path + ": read error");
-    } else {
-        in.clear();
-        in.seekg(0, std::ios::beg);
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-        if (in.bad()) throw InputError(path + ": read error");
-    }
-    return readHexExBuffer(text, path, report);
+    return readHexExBuffer(detail::readWholeFile(path), path, report);
 }
-
-namespace {
-
-/// Output buffer that flushes to a stream in large chunks.
-class Writer {
-public:
-    explicit Writer(std::ostream& out) : out_(out) { buf_.reserve(kChunk + 512); }
-    ~Writer() = default;
-
-    void put(double x) {
-        char tmp[64];
-        const auto res = std::to_chars(tmp, tmp + sizeof tmp, x);  // shortest round-trip form
-        buf_.append(tmp, res.ptr);
-    }
-    void put(long long x) {
-        char tmp[32];
-        const auto res = std::to_chars(tmp, tmp + sizeof tmp, x);
-        buf_.append(tmp, res.ptr);
-    }
-    void put(char ch) {
-        buf_ += ch;
-        if (ch == '\n' && buf_.size() >= kChunk) flush();
-    }
-    void flush() {
-        out_.write(buf_.data(), static_cast<std::streamsize>(buf_.size()));
-        buf_.clear();
-    }
-
-private:
-    static constexpr std::size_t kChunk = 1 << 20;
-    std::ostream& out_;
-    std::string buf_;
-};
-
-} // namespace
 
 void writeHexExStream(std::ostream& out, const ParametrizedTetMesh& pm) {
     const TetMesh& mesh = pm.mesh;
     if (pm.params.size() != mesh.n_cells())
         throw std::invalid_argument("writeHexExStream: " + std::to_string(pm.params.size()) +
                                     " parameter sets for " + std::to_string(mesh.n_cells()) + " tets");
-    Writer w(out);
-    w.put(static_cast<long long>(mesh.n_vertices()));
-    w.put('\n');
+    // Numbers in their shortest round-trip form, the text flushed to @p out in ~1 MiB chunks.
+    std::string buf;
+    const auto put = [&](auto x, char separator) {
+        char tmp[64];
+        buf.append(tmp, std::to_chars(tmp, tmp + sizeof tmp, x).ptr);
+        buf += separator;
+        if (buf.size() >= (1u << 20) && separator == '\n') {
+            out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
+            buf.clear();
+        }
+    };
+    put(mesh.n_vertices(), '\n');
     for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
         const Vec3d& p = mesh.position(VertexHandle(static_cast<int>(v)));
-        w.put(p[0]);
-        w.put(' ');
-        w.put(p[1]);
-        w.put(' ');
-        w.put(p[2]);
-        w.put('\n');
+        for (int k = 0; k < 3; ++k) put(p[k], k == 2 ? '\n' : ' ');
     }
-    w.put(static_cast<long long>(mesh.n_cells()));
-    w.put('\n');
+    put(mesh.n_cells(), '\n');
     for (std::size_t c = 0; c < mesh.n_cells(); ++c) {
-        const auto& cv = mesh.cell_vertices(CellHandle(static_cast<int>(c)));
-        for (int i = 0; i < 4; ++i) {
-            w.put(static_cast<long long>(cv[i].idx()));
-            w.put(' ');
-        }
+        for (const VertexHandle v : mesh.cell_vertices(CellHandle(static_cast<int>(c)))) put(v.idx(), ' ');
         for (int i = 0; i < 4; ++i)
-            for (int k = 0; k < 3; ++k) {
-                w.put(pm.params[c][i][k]);
-                w.put(i == 3 && k == 2 ? '\n' : ' ');
-            }
+            for (int k = 0; k < 3; ++k) put(pm.params[c][i][k], i == 3 && k == 2 ? '\n' : ' ');
     }
-    w.flush();
+    out.write(buf.data(), static_cast<std::streamsize>(buf.size()));
     out.flush();
 }
 

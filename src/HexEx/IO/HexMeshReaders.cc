@@ -114,8 +114,7 @@ HexMesh readHexMeshBuffer(std::string_view text, HexMeshFormat format, const std
 
 HexMesh readHexMesh(const std::string& path) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
-    std::ifstream in = detail::openInputFile(path);
-    return readHexMeshBuffer(detail::readWholeStream(in, path), format, path);
+    return readHexMeshBuffer(detail::readWholeFile(path), format, path);
 }
 
 } // namespace HexEx

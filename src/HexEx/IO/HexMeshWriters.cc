@@ -182,6 +182,13 @@ void writeVtu(std::ostream& out, const HexMesh& m, VtuEncoding enc) {
     w.finish(out);
 }
 
+/// The header of an ASCII legacy VTK file titled @p title and its POINTS section.
+void vtkHeader(Out& o, const char* title, const char* dataset, const std::vector<Vec3d>& points) {
+    o << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET " << dataset << "\nPOINTS " << points.size()
+      << " double\n";
+    for (const auto& p : points) o.vec(p) << '\n';
+}
+
 void writeVtk(Out& o, const HexMesh& m) {
     const std::size_t nh = m.hexes.size();
     std::size_t ncells = nh, size = 9 * nh;
@@ -189,12 +196,7 @@ void writeVtk(Out& o, const HexMesh& m) {
         ncells += p.faces.size();
         for (const auto& f : p.faces) size += 1 + f.size();
     }
-    o << "# vtk DataFile Version 3.0\n"
-      << "HexEx hex mesh\n"
-      << "ASCII\n"
-      << "DATASET UNSTRUCTURED_GRID\n"
-      << "POINTS " << m.vertices.size() << " double\n";
-    for (const auto& p : m.vertices) o.vec(p) << '\n';
+    vtkHeader(o, "HexEx hex mesh", "UNSTRUCTURED_GRID", m.vertices);
     o << "CELLS " << ncells << ' ' << size << '\n';
     for (const auto& h : m.hexes) {
         o << "8";
@@ -308,12 +310,7 @@ void writeSingularEdgesVtk(const std::string& path, const std::vector<Vec3d>& po
                                             " references point " + std::to_string(v) + " (" + std::to_string(np) +
                                             " points)");
     Out o;
-    o << "# vtk DataFile Version 3.0\n"
-      << "HexEx singular edges\n"
-      << "ASCII\n"
-      << "DATASET POLYDATA\n"
-      << "POINTS " << points.size() << " double\n";
-    for (const auto& p : points) o.vec(p) << '\n';
+    vtkHeader(o, "HexEx singular edges", "POLYDATA", points);
     o << "LINES " << segments.size() << ' ' << 3 * segments.size() << '\n';
     for (const auto& s : segments) o << "2 " << s[0] << ' ' << s[1] << '\n';
     o << "CELL_DATA " << segments.size() << '\n' << "SCALARS valence int 1\n" << "LOOKUP_TABLE default\n";

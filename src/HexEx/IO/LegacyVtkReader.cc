@@ -7,8 +7,6 @@
 #include "VtkCells.hh"
 #include "VtkDataBlocks.hh"
 
-#include <cstdint>
-#include <cstring>
 
 namespace HexEx {
 

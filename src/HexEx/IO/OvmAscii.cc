@@ -80,8 +80,9 @@ public:
         if (!std::isfinite(value)) fail(line(), "NaN or infinite value " + quoteToken(token(i)) + " for " + what);
         return value;
     }
-    /// Reads the section keyword line @p keyword and the count line after it.
-    long long section(const char* keyword, long long maxCount) {
+    /// Reads the section keyword line @p keyword and the count line after it; the count must
+    /// fit the rest of the file with at least @p minBytes bytes per entity.
+    long long section(const char* keyword, long long maxCount, std::size_t minBytes) {
         require(std::string("section '") + keyword + "'");
         if (size() != 1 || lower(token(0)) != lower(keyword))
             fail(line(), std::string("expected section '") + keyword + "', got " + quoteToken(text()));
@@ -90,8 +91,7 @@ public:
         expectTokens(1, what);
         const long long n = integer(0, what);
         if (n < 0) fail(line(), "negative " + what + " " + std::to_string(n));
-        // Every entity takes at least one line of two bytes.
-        if (n > maxCount || n > static_cast<long long>(remainingBytes() / 2) + 1)
+        if (n > maxCount || n > static_cast<long long>(remainingBytes() / minBytes) + 1)
             fail(line(), what + " " + std::to_string(n) + " too large for the file");
         return n;
     }
@@ -182,7 +182,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     if (in.size() != 2 || lower(in.token(0)) != "ovm" || lower(in.token(1)) != "ascii")
         in.fail(in.line(), "not an OpenVolumeMesh ASCII file: expected header 'OVM ASCII', got " + quoteToken(in.text()));
 
-    const long long nv = in.section("Vertices", INT_MAX);
+    const long long nv = in.section("Vertices", INT_MAX, 6);
     if (nv == 0) in.fail(in.line(), "mesh has no vertices (vertex count is 0)");
     m.vertices.resize(static_cast<std::size_t>(nv));
     for (long long v = 0; v < nv; ++v) {
@@ -193,7 +193,7 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
                                          std::string(1, "xyz"[k]) + " coordinate of vertex " + std::to_string(v));
     }
 
-    const long long ne = in.section("Edges", INT_MAX / 2);
+    const long long ne = in.section("Edges", INT_MAX / 2, 4);
     m.edges.resize(static_cast<std::size_t>(ne));
     for (long long e = 0; e < ne; ++e) {
         in.require("edge " + std::to_string(e) + " (file declares " + std::to_string(ne) + ")");
@@ -206,38 +206,29 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
                                    " to itself");
     }
 
-    const long long nf = in.section("Faces", INT_MAX / 2);
-    m.faces.resize(static_cast<std::size_t>(nf));
-    m.facePos.resize(static_cast<std::size_t>(nf));
-    for (long long f = 0; f < nf; ++f) {
-        const std::string fdesc = "face " + std::to_string(f);
-        in.require(fdesc + " (file declares " + std::to_string(nf) + ")");
-        const long long valence = in.integer(0, "valence of " + fdesc);
-        if (valence < 3 || valence + 1 != static_cast<long long>(in.size()))
-            in.expectTokens(static_cast<std::size_t>(std::max<long long>(valence, 3) + 1),
-                            fdesc + " (valence and " + std::to_string(valence) + " halfedges)");
-        for (long long k = 0; k < valence; ++k)
-            m.faces[f].push_back(in.index(static_cast<std::size_t>(k + 1), 2 * ne,
-                                          "halfedge " + std::to_string(k) + " of " + fdesc));
-        m.facePos[f] = in.line();
-    }
-
-    const long long nc = in.section("Polyhedra", INT_MAX / 8);
+    // Faces (closed loops of >= 3 halfedges) and polyhedra (>= 1 halfface): valence, then items.
+    const auto readLists = [&in](const std::string& what, long long n, long long minValence, const std::string& item,
+                                 long long nItems, std::vector<std::vector<int>>& lists, std::vector<long long>& pos) {
+        lists.resize(static_cast<std::size_t>(n));
+        pos.resize(static_cast<std::size_t>(n));
+        for (long long i = 0; i < n; ++i) {
+            const std::string desc = what + " " + std::to_string(i);
+            in.require(desc + " (file declares " + std::to_string(n) + ")");
+            const long long valence = in.integer(0, "valence of " + desc);
+            if (valence < minValence || valence + 1 != static_cast<long long>(in.size()))
+                in.expectTokens(static_cast<std::size_t>(std::max(valence, minValence) + 1),
+                                desc + " (valence and " + std::to_string(valence) + " " + item + "s)");
+            for (long long k = 0; k < valence; ++k)
+                lists[i].push_back(in.index(static_cast<std::size_t>(k + 1), nItems,
+                                            item + " " + std::to_string(k) + " of " + desc));
+            pos[i] = in.line();
+        }
+    };
+    const long long nf = in.section("Faces", INT_MAX / 2, 8);
+    readLists("face", nf, 3, "halfedge", 2 * ne, m.faces, m.facePos);
+    const long long nc = in.section("Polyhedra", INT_MAX / 8, 4);
     if (nc == 0) in.fail(in.line(), "polyhedron count is 0: the mesh has no tets or other cells");
-    m.cells.resize(static_cast<std::size_t>(nc));
-    m.cellPos.resize(static_cast<std::size_t>(nc));
-    for (long long c = 0; c < nc; ++c) {
-        const std::string cdesc = "polyhedron " + std::to_string(c);
-        in.require(cdesc + " (file declares " + std::to_string(nc) + ")");
-        const long long valence = in.integer(0, "valence of " + cdesc);
-        if (valence < 1 || valence + 1 != static_cast<long long>(in.size()))
-            in.expectTokens(static_cast<std::size_t>(std::max<long long>(valence, 1) + 1),
-                            cdesc + " (valence and " + std::to_string(valence) + " halffaces)");
-        for (long long k = 0; k < valence; ++k)
-            m.cells[c].push_back(in.index(static_cast<std::size_t>(k + 1), 2 * nf,
-                                          "halfface " + std::to_string(k) + " of " + cdesc));
-        m.cellPos[c] = in.line();
-    }
+    readLists("polyhedron", nc, 1, "halfface", 2 * nf, m.cells, m.cellPos);
     readProperties(in, m);
     m.endPos = in.eofLine();
     return m;

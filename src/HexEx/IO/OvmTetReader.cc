@@ -10,7 +10,6 @@
 #include "../Predicates/ExactPredicates.hh"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
 
 namespace HexEx {
@@ -176,13 +175,8 @@ ParametrizedTetMesh readOvmTetBuffer(std::string_view data, const std::string& n
     return tetMeshFromOvm(parseOvm(data, name), report);
 }
 
-ParametrizedTetMesh readOvmTetStream(std::istream& in, const std::string& name, ReadReport* report) {
-    return readOvmTetBuffer(detail::readWholeStream(in, name), name, report);
-}
-
 ParametrizedTetMesh readOvmTetMesh(const std::string& path, ReadReport* report) {
-    std::ifstream in = detail::openInputFile(path);
-    return readOvmTetStream(in, path, report);
+    return readOvmTetBuffer(detail::readWholeFile(path), path, report);
 }
 
 void writeOvmTetMesh(const std::string& path, const ParametrizedTetMesh& pm, bool binary) {

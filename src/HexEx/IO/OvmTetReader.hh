@@ -79,7 +79,6 @@
 #include "HexExFile.hh"
 #include "OvmModel.hh"
 
-#include <iosfwd>
 #include <string>
 #include <string_view>
 
@@ -91,10 +90,6 @@ namespace HexEx {
 /// convention is not a repair).
 /// @throws InputError as described in the file overview.
 ParametrizedTetMesh readOvmTetMesh(const std::string& path, ReadReport* report = nullptr);
-
-/// Reads OpenVolumeMesh ASCII data from a stream; @p name is used in error messages.
-/// @throws InputError as readOvmTetMesh().
-ParametrizedTetMesh readOvmTetStream(std::istream& in, const std::string& name, ReadReport* report = nullptr);
 
 /// Reads OpenVolumeMesh ASCII data held in memory; @p name is used in error messages.
 /// @throws InputError as readOvmTetMesh().

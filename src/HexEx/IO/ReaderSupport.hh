@@ -1,7 +1,7 @@
 #pragma once
 /// @file ReaderSupport.hh
-/// Steps shared by the readers and writers: reading a whole stream, opening an input file
-/// with a clear error, writing a whole file, and finishing a tet mesh (adjacency and
+/// Steps shared by the readers and writers: reading a whole stream or file, opening an input
+/// file with a clear error, writing a whole file, and finishing a tet mesh (adjacency and
 /// manifoldness).
 
 #include "../Core/Error.hh"
@@ -32,6 +32,23 @@ inline std::ifstream openInputFile(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path + ": cannot open file: " + std::strerror(errno));
     return in;
+}
+
+/// The whole file @p path (read in one piece when its size is known); InputError
+/// "<path>: cannot open file: <reason>" or "<path>: read error".
+inline std::string readWholeFile(const std::string& path) {
+    std::ifstream in = openInputFile(path);
+    in.seekg(0, std::ios::end);
+    const std::streamoff size = in.tellg();
+    if (size < 0) {  // not seekable (e.g. a pipe)
+        in.clear();
+        in.seekg(0, std::ios::beg);
+        return readWholeStream(in, path);
+    }
+    std::string text(static_cast<std::size_t>(size), '\0');
+    in.seekg(0, std::ios::beg);
+    if (!in.read(text.data(), size)) throw InputError(path + ": read error");
+    return text;
 }
 
 /// Writes @p bytes to @p path; InputError naming the path if it cannot be written.

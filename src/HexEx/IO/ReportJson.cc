@@ -114,6 +114,23 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("remaining_anti", d.remaining_anti);
             w.num("asymmetric_links", d.asymmetric_links);
         }));
+        if (r.arcs.edges > 0 || r.arcs.faces > 0) {
+            // Only with ExtractionOptions::arcs (hexex extract --edge-arcs / --face-patches).
+            auto list = [](const std::vector<int>& ids) {
+                std::string s = "[";
+                for (std::size_t k = 0; k < ids.size(); ++k) s += (k ? ", " : "") + std::to_string(ids[k]);
+                return s + "]";
+            };
+            top.raw("arcs", object(2, [&](ObjectWriter& w) {
+                w.num("edges", r.arcs.edges);
+                w.num("faces", r.arcs.faces);
+                w.num("failed_edges", r.arcs.failed_edges);
+                w.num("failed_faces", r.arcs.failed_faces);
+                w.raw("failed_edge_ids", list(r.arcs.failed_edge_ids));
+                w.raw("failed_face_ids", list(r.arcs.failed_face_ids));
+                w.num("seconds", r.timings_s.arcs);
+            }));
+        }
         top.boolean("valid_all_hex", r.valid_all_hex);
         top.raw("quality", object(2, [&](ObjectWriter& w) {
             w.num("min_scaled_jacobian", x.quality.min_scaled_jacobian);

@@ -156,11 +156,9 @@ public:
     /// Reads a count of items of at least @p bytesPerItem bytes each that the rest of the text can hold.
     long long count(const std::string& what, long long bytesPerItem = 2) {
         const long long limit = static_cast<long long>(remaining() / static_cast<std::size_t>(std::max(bytesPerItem, 1LL)));
-        const Token t = next(what);
-        long long v = 0;
-        if (parseInteger(t.text, v) != NumberParse::Ok) fail(t.line, "expected " + what + ", got " + quoteToken(t.text));
-        if (v < 0) fail(t.line, what + " is negative (" + std::to_string(v) + ")");
-        if (v > limit + 1 || v > INT_MAX) fail(t.line, what + " " + std::to_string(v) + " is larger than the file can hold");
+        const long long v = integer(what);
+        if (v < 0) fail(line(), what + " is negative (" + std::to_string(v) + ")");
+        if (v > limit + 1 || v > INT_MAX) fail(line(), what + " " + std::to_string(v) + " is larger than the file can hold");
         return v;
     }
     /// Reads a finite real number.

@@ -11,8 +11,6 @@
 
 #include <pugixml.hpp>
 
-#include <cstdint>
-#include <cstring>
 
 namespace HexEx {
 

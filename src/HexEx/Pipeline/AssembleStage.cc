@@ -7,7 +7,8 @@ AssembleOutput assembleStage(const AssembleInput& in) {
     HexOrbitLabels labels;
     out.validation = validateHexGMap(*in.map, &labels, in.threads);
     out.stats.violations = &out.validation;
-    out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads);
+    out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
+                               in.want_hex_darts ? &out.hex_darts : nullptr);
     out.stats.violations = nullptr;
     if (out.stats.degenerate_faces > 0)
         out.warnings.push_back(std::to_string(out.stats.degenerate_faces) +

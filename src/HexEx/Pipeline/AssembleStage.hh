@@ -16,6 +16,7 @@ struct AssembleInput {
     const DartGeometry* geometry = nullptr;    ///< placement of its darts
     const ImplicitCells* implicit = nullptr;   ///< implicit cells, or null when the fast path is off
     int threads = 1;                           ///< worker threads (resolved, >= 1)
+    bool want_hex_darts = false;               ///< fill AssembleOutput::hex_darts (for the arcs stage)
 };
 
 /// Output of assembleStage().
@@ -24,6 +25,9 @@ struct AssembleOutput {
     GMapValidation validation;          ///< validator result on the map
     AssemblyStats stats;                ///< counts of the assembly
     std::vector<std::string> warnings;  ///< warnings of this stage
+    /// With AssembleInput::want_hex_darts: per hex built from darts, its dart at corner 0
+    /// whose frame points to corners 1, 3 and 4 (see assembleHexMesh()).
+    std::vector<int> hex_darts;
 };
 
 /// Runs the stage. The result does not depend on the thread count.

@@ -39,13 +39,18 @@ MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, 
     return est;
 }
 
+std::string largestImagesText(const std::vector<std::pair<int, double>>& largest) {
+    std::string text;
+    for (std::size_t k = 0; k < largest.size(); ++k)
+        text += std::string(k ? ", " : "") + "tet " + std::to_string(largest[k].first) + " (" + formatVolume(largest[k].second) +
+                " grid cells)";
+    return text;
+}
+
 std::string memoryRefusal(const std::string& cause, const MemoryEstimate* est) {
     std::string msg = cause;
     if (est && !est->largest_tets.empty()) {
-        msg += ". The tets with the largest parametric images in the input:";
-        for (std::size_t k = 0; k < est->largest_tets.size(); ++k)
-            msg += std::string(k ? "," : "") + " tet " + std::to_string(est->largest_tets[k].first) + " (" +
-                   formatVolume(est->largest_tets[k].second) + " grid cells)";
+        msg += ". The tets with the largest parametric images in the input: " + largestImagesText(est->largest_tets);
         msg += ". A tet whose image is far larger than the others' usually means a wrong parameter: check these tets";
         if (est->bytes > 0) msg += "; otherwise allow more memory, e.g. " + formatBytes(1.25 * est->bytes) + ",";
         else msg += "; otherwise allow more memory";

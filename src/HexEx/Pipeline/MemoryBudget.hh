@@ -43,6 +43,10 @@ MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, 
 /// Throws ResourceError (memoryRefusal()) if the estimate exceeds its budget.
 void checkMemoryBudget(const MemoryEstimate& est);
 
+/// "tet 10 (1.38e+06 grid cells), tet 20 (7.3 grid cells), ...": the entries of
+/// MemoryEstimate::largest_tets / TetCostSummary::largest_input for messages.
+std::string largestImagesText(const std::vector<std::pair<int, double>>& largest);
+
 /// The message of a refusal: @p cause, then the largest parametric images of @p est (if
 /// known) and what to do.
 std::string memoryRefusal(const std::string& cause, const MemoryEstimate* est);

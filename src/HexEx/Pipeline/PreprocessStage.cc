@@ -5,6 +5,7 @@
 #include "../Core/Parallel.hh"
 #include "../Extraction/DartExtraction.hh"
 #include "../Preprocessing/Sanitization.hh"
+#include "MemoryBudget.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -152,7 +153,8 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     if (out.abs_volume > in.max_hexes)
         throw InputError("the map covers a parametric volume of " + std::to_string(out.abs_volume) +
                          " grid cells, more than the limit of " + std::to_string(in.max_hexes) +
-                         " hexes (ExtractionOptions::max_hexes); is the parameter scale right?");
+                         " hexes (ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
+                         "parametric images: " + largestImagesText(out.cost.largest_input));
     const std::vector<int>* given = in.given_rotations;
     if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
     if (given) checkGivenRotations(mesh, *given);

@@ -1,5 +1,8 @@
 #include "ReportStage.hh"
 
+#include <algorithm>
+#include <string>
+
 namespace HexEx {
 
 namespace {
@@ -40,6 +43,22 @@ void addToReport(const AssembleOutput& out, ExtractionReport& rep) {
     rep.output.boundary_quads = out.stats.boundary_quads;
     appendWarnings(out.warnings, rep);
     rep.valid_all_hex = rep.validation.valid() && out.stats.non_hex_cells == 0 && rep.darts.remaining_anti == 0;
+}
+
+void addToReport(const HexArcs& arcs, ExtractionReport& rep) {
+    auto& A = rep.arcs;
+    A.edges = static_cast<long>(arcs.edges.size());
+    A.faces = static_cast<long>(arcs.faces.size());
+    A.failed_edges = static_cast<long>(arcs.failed_edges.size());
+    A.failed_faces = static_cast<long>(arcs.failed_faces.size());
+    const std::size_t ne = std::min(arcs.failed_edges.size(), ExtractionReport::Arcs::kMaxListed);
+    const std::size_t nf = std::min(arcs.failed_faces.size(), ExtractionReport::Arcs::kMaxListed);
+    A.failed_edge_ids.assign(arcs.failed_edges.begin(), arcs.failed_edges.begin() + static_cast<long>(ne));
+    A.failed_face_ids.assign(arcs.failed_faces.begin(), arcs.failed_faces.begin() + static_cast<long>(nf));
+    if (A.failed_edges > 0 || A.failed_faces > 0)
+        rep.warnings.push_back(std::to_string(A.failed_edges) + " of " + std::to_string(A.edges) +
+                               " hex edges have no arc and " + std::to_string(A.failed_faces) + " of " +
+                               std::to_string(A.faces) + " hex faces have no complete patch (defective map there)");
 }
 
 } // namespace HexEx

@@ -5,6 +5,7 @@
 
 #include "../Extraction/ExtractionReport.hh"
 #include "AnnihilateStage.hh"
+#include "ArcStage.hh"
 #include "AssembleStage.hh"
 #include "ConnectStage.hh"
 #include "DartStage.hh"
@@ -27,5 +28,8 @@ void addToReport(const ImplicitCells& cells, ExtractionReport& rep);
 /// Output counts, validation, warnings and the final verdict valid_all_hex (needs the
 /// annihilation counts already in @p rep).
 void addToReport(const AssembleOutput& out, ExtractionReport& rep);
+
+/// Edge and face counts of the arcs stage, its failures and their warning.
+void addToReport(const HexArcs& arcs, ExtractionReport& rep);
 
 } // namespace HexEx

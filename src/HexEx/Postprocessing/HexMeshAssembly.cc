@@ -27,7 +27,7 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit, int threads) {
+                        const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts) {
     HexMesh out;
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -139,6 +139,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     // the chunks' hexes and polyhedra are appended in chunk order.
     struct CellPart {
         std::vector<std::array<int, 8>> hexes;
+        std::vector<int> hexDarts;
         std::vector<Polyhedron> polyhedra;
         long degenerate_faces = 0, collapsed_cells = 0;
     };
@@ -167,6 +168,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 std::sort(s.begin(), s.end());
                 if (std::adjacent_find(s.begin(), s.end()) == s.end()) {
                     P.hexes.push_back(h);
+                    if (hex_darts) P.hexDarts.push_back(d0);
                     continue;
                 }
             }
@@ -215,8 +217,13 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     }
     out.hexes.reserve(nHex + (implicit ? implicit->cells.size() : 0));
     out.polyhedra.reserve(nPoly);
+    if (hex_darts) {
+        hex_darts->clear();
+        hex_darts->reserve(nHex);
+    }
     for (CellPart& P : cellParts) {
         out.hexes.insert(out.hexes.end(), P.hexes.begin(), P.hexes.end());
+        if (hex_darts) hex_darts->insert(hex_darts->end(), P.hexDarts.begin(), P.hexDarts.end());
         std::move(P.polyhedra.begin(), P.polyhedra.end(), std::back_inserter(out.polyhedra));
         stats.degenerate_faces += P.degenerate_faces;
         stats.collapsed_cells += P.collapsed_cells;

@@ -57,7 +57,9 @@ struct ImplicitCells {
 /// With @p implicit, vertex classes also join darts to the occurrences they sit on or link
 /// to, and the implicit cells are appended as hexes.
 /// @p threads lets independent labellings run side by side (the result does not depend on it).
+/// If @p hex_darts is given it receives, per hex built from darts (the hexes before the
+/// implicit cells), the dart at its corner 0 whose frame points to corners 1, 3 and 4.
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit = nullptr, int threads = 1);
+                        const ImplicitCells* implicit = nullptr, int threads = 1, std::vector<int>* hex_darts = nullptr);
 
 } // namespace HexEx

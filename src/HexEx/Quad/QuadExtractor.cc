@@ -58,7 +58,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     rep.input.parametric_area = area;
     rep.input.ambiguous_transitions = tr.ambiguous;
     rep.input.unresolved_transitions = tr.unresolved;
-    for (int h : vertexHolonomy(in, adj, tr))
+    for (int h : vertexHolonomy(in, adj, tr, nullptr, threads))
         if (h > 0) ++rep.input.cones;
     if (!(unsignedArea <= opt.max_quads))
         throw InputError("parameter map too large: unsigned parametric area " + std::to_string(unsignedArea) +

@@ -282,10 +282,11 @@ std::vector<signed char> classifyTriangles(const TriParams& params) {
 }
 
 std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriTransitions& tr,
-                                const std::vector<char>* unknown) {
+                                const std::vector<char>* unknown, int threads) {
     const std::size_t nv = m.points.size();
     std::vector<int> hol(nv, -1);
-    for (std::size_t vi = 0; vi < nv; ++vi) {
+    parallelChunks(nv, std::max(1, threads), [&](int, std::size_t vb, std::size_t ve) {
+    for (std::size_t vi = vb; vi < ve; ++vi) {
         if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
         const int v = static_cast<int>(vi);
         const int f0 = adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])];
@@ -309,6 +310,7 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
         } while (f != f0);
         if (ok) hol[vi] = std::max(0, planarQuarterTurns(R));
     }
+    });
     return hol;
 }
 

@@ -47,7 +47,8 @@ std::vector<signed char> classifyTriangles(const TriParams& params);
 /// composed transitions once around its fan; non-zero marks a cone (valence 4 + k mod 4).
 /// -1 for boundary and isolated vertices and, if @p unknown is given, for vertices with an
 /// edge whose halfedge is flagged there. Exact, unlike angle sums, which folds change.
+/// Vertices are independent: @p threads only changes the speed.
 std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriTransitions& tr,
-                                const std::vector<char>* unknown = nullptr);
+                                const std::vector<char>* unknown = nullptr, int threads = 1);
 
 } // namespace HexEx

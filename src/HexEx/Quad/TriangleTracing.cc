@@ -163,16 +163,43 @@ std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m
     std::vector<std::array<int, 4>> links(n);
     const Tracer T{m, adj, params, tr, sign, ds};
     const int chunks = std::max(1, threads);
+    // Partners have opposite frame orientation (relative to their triangle's sign), so each
+    // link is traced once, from the dart whose frame turns counter-clockwise; the partner
+    // gets the link back unless two darts claim it (then it traces itself, as do darts
+    // nobody claimed). The mutual check below decides as if every dart had traced.
+    auto counterClockwise = [&](std::size_t d) {
+        const TriDart& t = ds.darts[d];
+        return crossDirs(t.d1, t.d2) * t.sign > 0;
+    };
+    constexpr int kUntraced = -2, kContested = -3;
+    auto traceInto = [&](std::size_t d, int i) {
+        const int di = static_cast<int>(d);
+        bool boundary = false;
+        const int p = T.trace(di, i, boundary);
+        links[d][static_cast<std::size_t>(i)] = p >= 0 ? p : (i == 2 && boundary ? di : -1);
+    };
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
-            const int di = static_cast<int>(d);
-            bool boundary0 = false, boundary1 = false, boundary2 = false;
-            links[d][0] = T.trace(di, 0, boundary0);
-            links[d][1] = T.trace(di, 1, boundary1);
-            const int a2 = T.trace(di, 2, boundary2);
-            links[d][2] = a2 >= 0 ? a2 : (boundary2 ? di : -1);
-            links[d][3] = di;
+            links[d][3] = static_cast<int>(d);
+            for (int i = 0; i < 3; ++i) {
+                if (counterClockwise(d)) traceInto(d, i);
+                else links[d][static_cast<std::size_t>(i)] = kUntraced;
+            }
         }
+    });
+    for (std::size_t d = 0; d < n; ++d) {  // claims, in dart order
+        if (!counterClockwise(d)) continue;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const int p = links[d][i];
+            if (p < 0 || p == static_cast<int>(d) || counterClockwise(static_cast<std::size_t>(p))) continue;
+            int& back = links[static_cast<std::size_t>(p)][i];
+            back = back == kUntraced ? static_cast<int>(d) : kContested;
+        }
+    }
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d)
+            for (int i = 0; i < 3; ++i)
+                if (links[d][static_cast<std::size_t>(i)] < 0 && !counterClockwise(d)) traceInto(d, i);
     });
     // Keep only mutual links (decided on the traced links, then applied).
     std::vector<std::array<char, 3>> drop(n, {0, 0, 0});

@@ -9,6 +9,7 @@
 #include <HexEx/Core/Error.hh>
 #include <HexEx/Core/Memory.hh>
 #include <HexEx/HexEx.hh>
+#include <HexEx/IO/ArcWriters.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/IO/TetMeshInput.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
@@ -49,6 +50,9 @@ const char* kExtractUsage =
     "  --param-mesh P.vtk      write the tet mesh in parameter space (4 points per tet, each in\n"
     "                          its own chart) as legacy VTK with cell data 'flipped', 'degenerate'\n"
     "  --surface B.obj|.off|.ply|.stl  write the boundary surface of the hex mesh (OpenMesh IO)\n"
+    "  --edge-arcs A.vtu       write the exact image of every hex edge in the input as VTK polylines\n"
+    "                          (cell data edge_id, vertex0, vertex1)\n"
+    "  --face-patches P.vtu    write the exact image of every hex face as VTK triangles (cell data face_id)\n"
     "  -q, --quiet             print nothing but errors\n"
     "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
@@ -199,8 +203,10 @@ int runExtract(const Args& args) {
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
         {"--encoding", true, ""},         {"--max-memory", true, ""},
+        {"--edge-arcs", true, ""},        {"--face-patches", true, ""},
     };
-    std::string input, output, report_path, sing_path, param_path, surface_path;
+    std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
+    HexEx::HexArcs arcs;
     HexEx::ExtractionOptions opt;
     HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
     bool quiet = false;
@@ -223,6 +229,13 @@ int runExtract(const Args& args) {
         report_path = pa.get("--report");
         sing_path = pa.get("--singularities");
         param_path = pa.get("--param-mesh");
+        arcs_path = pa.get("--edge-arcs");
+        patches_path = pa.get("--face-patches");
+        for (const std::string* p : {&arcs_path, &patches_path})
+            if (!p->empty() && (p->size() < 4 || p->compare(p->size() - 4, 4, ".vtu") != 0))
+                throw UsageError((p == &arcs_path ? "--edge-arcs" : "--face-patches") + std::string(": '") + *p +
+                                 "' must end in .vtu");
+        if (!arcs_path.empty() || !patches_path.empty()) opt.arcs = &arcs;
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
         opt.merge = !pa.has("--no-merge");
@@ -319,6 +332,14 @@ int runExtract(const Args& args) {
     if (!surface_path.empty()) {
         if (!write([&] { return HexEx::writeBoundarySurface(surface_path, hm); })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";
+    }
+    if (!arcs_path.empty()) {
+        if (!write([&] { HexEx::writeEdgeArcsVtu(arcs_path, arcs); return std::vector<std::string>{}; })) return 2;
+        if (!quiet) std::cerr << "hexex extract: wrote " << rep.arcs.edges - rep.arcs.failed_edges << " edge arcs to " << arcs_path << "\n";
+    }
+    if (!patches_path.empty()) {
+        if (!write([&] { HexEx::writeFacePatchesVtu(patches_path, arcs); return std::vector<std::string>{}; })) return 2;
+        if (!quiet) std::cerr << "hexex extract: wrote " << rep.arcs.faces - rep.arcs.failed_faces << " face patches to " << patches_path << "\n";
     }
     extras.write_s = secondsSince(t0);
     progress.update("write", 1);

@@ -1,5 +1,5 @@
 /// @file InfoCommand.cc
-/// `hexex info IN [--json]`: statistics of a tet mesh (.hexex or .ovm) with its map.
+/// `hexex info IN [--json]`: statistics of a tet mesh (.hexex, .ovm or .ovmb) with its map.
 
 #include "ArgParser.hh"
 #include "Commands.hh"
@@ -26,7 +26,7 @@ std::string jsonVec(const HexEx::Vec3d& v) {
     return "[" + jsonNumber(v[0]) + ", " + jsonNumber(v[1]) + ", " + jsonNumber(v[2]) + "]";
 }
 
-const char* kInfoUsage = "usage: hexex info IN.hexex|IN.ovm [--json]\n";
+const char* kInfoUsage = "usage: hexex info IN.hexex|IN.ovm|IN.ovmb [--json]\n";
 
 } // namespace
 

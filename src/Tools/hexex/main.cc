@@ -12,7 +12,7 @@ namespace {
 const char* kUsage =
     "usage: hexex <command> [options]\n"
     "commands:\n"
-    "  info IN [--json]                          statistics of a .hexex tet mesh with its map\n"
+    "  info IN [--json]                          statistics of a tet mesh with its map (.hexex .ovm .ovmb)\n"
     "  extract IN -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
     "                                            extract the hex mesh (.vtu, .vtk, .ovm, .ovmb, .mesh)\n"
     "  convert IN OUT [--encoding E]             convert a map (.hexex .ovm .ovmb) or a hex mesh\n"
