@@ -20,6 +20,9 @@ struct Desc {
     AxisDir d1, d2;
 };
 
+/// sign(a x b) of two planar axis directions (0..3: +u, -u, +v, -v), as a table.
+constexpr int kFrameTurn[4][4] = {{0, 0, 1, -1}, {0, 0, -1, 1}, {-1, 1, 0, 0}, {1, -1, 0, 0}};
+
 /// sign(a x b) of two axis directions.
 int crossDirs(AxisDir a, AxisDir b) {
     const Vec3i u = dirVec(a), v = dirVec(b);
@@ -169,7 +172,7 @@ std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m
     // nobody claimed). The mutual check below decides as if every dart had traced.
     auto counterClockwise = [&](std::size_t d) {
         const TriDart& t = ds.darts[d];
-        return crossDirs(t.d1, t.d2) * t.sign > 0;
+        return kFrameTurn[t.d1][t.d2] * t.sign > 0;
     };
     constexpr int kUntraced = -2, kContested = -3;
     auto traceInto = [&](std::size_t d, int i) {
@@ -187,38 +190,55 @@ std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m
             }
         }
     });
-    for (std::size_t d = 0; d < n; ++d) {  // claims, in dart order
-        if (!counterClockwise(d)) continue;
-        for (std::size_t i = 0; i < 3; ++i) {
-            const int p = links[d][i];
-            if (p < 0 || p == static_cast<int>(d) || counterClockwise(static_cast<std::size_t>(p))) continue;
-            int& back = links[static_cast<std::size_t>(p)][i];
-            back = back == kUntraced ? static_cast<int>(d) : kContested;
+    // Claims, in parallel: the entry of a clockwise dart ends as the claimant if exactly one
+    // counter-clockwise dart claimed it and as kContested if several did, whatever the order
+    // (a compare-and-swap from kUntraced succeeds once; later claimants overwrite with
+    // kContested). Only clockwise entries are written and only counter-clockwise ones read.
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) {
+            if (!counterClockwise(d)) continue;
+            for (std::size_t i = 0; i < 3; ++i) {
+                const int p = links[d][i];
+                if (p < 0 || p == static_cast<int>(d) || counterClockwise(static_cast<std::size_t>(p))) continue;
+                int* back = &links[static_cast<std::size_t>(p)][i];
+                int expected = kUntraced;
+                if (!__atomic_compare_exchange_n(back, &expected, static_cast<int>(d), false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
+                    __atomic_store_n(back, kContested, __ATOMIC_RELAXED);
+            }
         }
-    }
+    });
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 3; ++i)
                 if (links[d][static_cast<std::size_t>(i)] < 0 && !counterClockwise(d)) traceInto(d, i);
     });
     // Keep only mutual links (decided on the traced links, then applied).
-    std::vector<std::array<char, 3>> drop(n, {0, 0, 0});
+    std::vector<unsigned char> drop(n, 0);
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 3; ++i) {
-                const int p = links[d][i];
-                if (p >= 0 && p != static_cast<int>(d) && links[static_cast<std::size_t>(p)][i] != static_cast<int>(d)) drop[d][i] = 1;
+                const int p = links[d][static_cast<std::size_t>(i)];
+                if (p >= 0 && p != static_cast<int>(d) && links[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)] != static_cast<int>(d))
+                    drop[d] = static_cast<unsigned char>(drop[d] | (1u << i));
+            }
+    });
+    std::vector<TriTraceStats> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        TriTraceStats& c = parts[static_cast<std::size_t>(k)];
+        for (std::size_t d = b; d < e; ++d)
+            for (int i = 0; i < 3; ++i) {
+                if (drop[d] & (1u << i)) {
+                    links[d][static_cast<std::size_t>(i)] = -1;
+                    ++c.asymmetric;
+                }
+                if (links[d][static_cast<std::size_t>(i)] < 0) ++c.unconnected;
             }
     });
     TriTraceStats st;
-    for (std::size_t d = 0; d < n; ++d)
-        for (int i = 0; i < 3; ++i) {
-            if (drop[d][i]) {
-                links[d][i] = -1;
-                ++st.asymmetric;
-            }
-            if (links[d][i] < 0) ++st.unconnected;
-        }
+    for (const TriTraceStats& c : parts) {
+        st.asymmetric += c.asymmetric;
+        st.unconnected += c.unconnected;
+    }
     if (stats) *stats = st;
     return links;
 }
