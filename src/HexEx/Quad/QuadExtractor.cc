@@ -6,6 +6,7 @@
 #include "QuadAssembly.hh"
 #include "TriangleTracing.hh"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -70,7 +71,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
 
     // Darts.
     t0 = Clock::now();
-    const TriDartSet ds = extractTriDarts(params, sign, 16.0 * opt.max_quads + 1e6, threads);
+    TriDartSet ds = extractTriDarts(params, sign, 16.0 * opt.max_quads + 1e6, threads);
     rep.darts.extracted = static_cast<long>(ds.darts.size());
     rep.darts.anti = ds.anti;
     rep.timings_s.darts = since(t0);
@@ -85,39 +86,66 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Annihilation (the 3D function: alpha_3 is free throughout) and the final map.
     t0 = Clock::now();
     const std::size_t n = ds.darts.size();
+    const int chunks = std::max(1, threads);
     std::vector<char> alive(n, 1);
     if (opt.merge) {
         std::vector<signed char> dsign(n);
-        for (std::size_t d = 0; d < n; ++d) dsign[d] = ds.darts[d].sign;
+        parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t d = b; d < e; ++d) dsign[d] = ds.darts[d].sign;
+        });
         const AnnihilationStats as = annihilateDarts(links, dsign, alive);
         rep.darts.annihilated_pairs = as.pairs;
         rep.darts.remaining_anti = as.remaining_anti;
     } else {
         rep.darts.remaining_anti = ds.anti;
     }
-    std::vector<int> newIndex(n, -1);
+    // Compaction of the surviving darts, in parallel: per-chunk counts give each chunk
+    // its first new index, so the numbering is the sequential one.
+    std::vector<std::size_t> base(static_cast<std::size_t>(chunks) + 1, 0);
+    parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+        std::size_t k = 0;
+        for (std::size_t d = b; d < e; ++d) k += alive[d] ? 1 : 0;
+        base[static_cast<std::size_t>(c) + 1] = k;
+    });
+    for (int c = 0; c < chunks; ++c) base[static_cast<std::size_t>(c) + 1] += base[static_cast<std::size_t>(c)];
+    const std::size_t nk = base.back();
+    const bool allAlive = nk == n;  // then the numbering is the identity
+    std::vector<int> newIndex(allAlive ? 0 : n, -1);
     std::vector<TriDart> kept;
-    kept.reserve(n);
-    for (std::size_t d = 0; d < n; ++d)
-        if (alive[d]) {
-            newIndex[d] = static_cast<int>(kept.size());
-            kept.push_back(ds.darts[d]);
-        }
-    std::vector<std::array<int, 3>> glinks(kept.size());
-    for (std::size_t d = 0; d < n; ++d) {
-        if (!alive[d]) continue;
-        const int nd = newIndex[d];
-        for (int i = 0; i < 3; ++i) {
-            const int p = links[d][static_cast<std::size_t>(i)];
-            const int np = (p >= 0 && alive[static_cast<std::size_t>(p)]) ? newIndex[static_cast<std::size_t>(p)] : -1;
-            if (np < 0) {
-                if (p < 0 || !alive[static_cast<std::size_t>(p)]) ++rep.output.unconnected_darts;
-                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
-            } else {
-                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+    if (allAlive) {
+        kept = std::move(ds.darts);
+    } else {
+        kept.resize(nk);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            std::size_t k = base[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d)
+                if (alive[d]) {
+                    newIndex[d] = static_cast<int>(k);
+                    kept[k++] = ds.darts[d];
+                }
+        });
+    }
+    auto renumber = [&](int p) { return allAlive ? p : newIndex[static_cast<std::size_t>(p)]; };
+    std::vector<std::array<int, 3>> glinks(nk);
+    std::vector<long> unconnected(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+        long& u = unconnected[static_cast<std::size_t>(c)];
+        for (std::size_t d = b; d < e; ++d) {
+            if (!alive[d]) continue;
+            const int nd = renumber(static_cast<int>(d));
+            for (int i = 0; i < 3; ++i) {
+                const int p = links[d][static_cast<std::size_t>(i)];
+                const int np = (p >= 0 && alive[static_cast<std::size_t>(p)]) ? renumber(p) : -1;
+                if (np < 0) {
+                    if (p < 0 || !alive[static_cast<std::size_t>(p)]) ++u;
+                    glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
+                } else {
+                    glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+                }
             }
         }
-    }
+    });
+    for (long u : unconnected) rep.output.unconnected_darts += u;
     links.clear();
     links.shrink_to_fit();
     GMap<2> g;
@@ -127,8 +155,8 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Validation and assembly.
     t0 = Clock::now();
     QuadOrbitLabels labels;
-    rep.validation = validateQuadGMap(g, &labels);
-    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out);
+    rep.validation = validateQuadGMap(g, &labels, threads);
+    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out, threads);
     rep.output.vertices = static_cast<long>(out.vertices.size());
     rep.output.quads = as.quads;
     rep.output.non_quad_faces = as.polygons;

@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 #include "../Predicates/ExactPredicates.hh"
+#include "PlanarOrientation.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -87,11 +88,10 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
             const std::size_t before = out.size();
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) {
-                    const Vec3d z(x, y, 0);
                     int o[3];
                     bool outside = false, inside = true;
                     for (int i = 0; i < 3; ++i) {
-                        o[i] = s * orient2dAxis(p[(i + 1) % 3], p[(i + 2) % 3], z, 2);
+                        o[i] = s * orient2dUV(p[(i + 1) % 3], p[(i + 2) % 3], x, y);
                         if (o[i] < 0) outside = true;
                         if (o[i] == 0) inside = false;
                     }
