@@ -31,31 +31,59 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Preprocessing.
     const TriAdjacency adj = buildTriAdjacency(in, threads);
     const std::size_t nf = in.triangles.size();
+    const int chunks = std::max(1, threads);
     TriParams params(nf);
-    for (std::size_t f = 0; f < nf; ++f)
-        for (int k = 0; k < 3; ++k) {
-            const Vec2d& p = in.params[f][k];
-            if (std::fabs(p[0]) > kMaxParam || std::fabs(p[1]) > kMaxParam)
-                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " +
-                                 std::to_string(k) + " is larger than 2^28 in magnitude");
-            params[f][k] = Vec3d(p[0], p[1], 0);
-        }
+    {
+        // Per chunk, its first bad parameter; the lowest chunk's is the sequential first.
+        std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+        parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+            for (std::size_t f = fb; f < fe; ++f)
+                for (int k = 0; k < 3; ++k) {
+                    const Vec2d& p = in.params[f][k];
+                    if (std::fabs(p[0]) > kMaxParam || std::fabs(p[1]) > kMaxParam) {
+                        errors[static_cast<std::size_t>(c)] = "triangle mesh: triangle " + std::to_string(f) +
+                                                              ": parameter of corner " + std::to_string(k) +
+                                                              " is larger than 2^28 in magnitude";
+                        return;
+                    }
+                    params[f][k] = Vec3d(p[0], p[1], 0);
+                }
+        });
+        for (const std::string& e : errors)
+            if (!e.empty()) throw InputError(e);
+    }
     const TriTransitions tr = computeTriTransitions(in, adj, params, opt.given_quarter_turns, threads);
     rep.input.snapped_coordinates = sanitizeTriParams(in, adj, params, tr, opt.epsilon, threads);
-    const std::vector<signed char> sign = classifyTriangles(params);
+    const std::vector<signed char> sign = classifyTriangles(params, threads);
     rep.input.vertices = static_cast<long>(in.points.size());
     rep.input.triangles = static_cast<long>(nf);
-    for (int o : adj.opposite)
-        if (o < 0) ++rep.input.boundary_edges;
+    // Counts and signed areas per triangle in parallel; the two area sums stay sequential
+    // (in triangle order), so they are rounded exactly as before for any thread count.
+    std::vector<double> triArea(nf);
+    std::vector<std::array<long, 3>> counts(static_cast<std::size_t>(chunks), {0, 0, 0});
+    parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+        auto& cnt = counts[static_cast<std::size_t>(c)];
+        for (std::size_t f = fb; f < fe; ++f) {
+            if (sign[f] < 0) ++cnt[0];
+            if (sign[f] == 0) ++cnt[1];
+            for (std::size_t h = 3 * f; h < 3 * f + 3; ++h)
+                if (adj.opposite[h] < 0) ++cnt[2];
+            const auto& p = params[f];
+            triArea[f] = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        }
+    });
+    for (const auto& cnt : counts) {
+        rep.input.flipped_triangles += cnt[0];
+        rep.input.degenerate_triangles += cnt[1];
+        rep.input.boundary_edges += cnt[2];
+    }
     double area = 0, unsignedArea = 0;
-    for (std::size_t f = 0; f < nf; ++f) {
-        if (sign[f] < 0) ++rep.input.flipped_triangles;
-        if (sign[f] == 0) ++rep.input.degenerate_triangles;
-        const auto& p = params[f];
-        const double a = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+    for (double a : triArea) {
         area += a;
         unsignedArea += std::fabs(a);
     }
+    triArea.clear();
+    triArea.shrink_to_fit();
     rep.input.parametric_area = area;
     rep.input.ambiguous_transitions = tr.ambiguous;
     rep.input.unresolved_transitions = tr.unresolved;
@@ -86,7 +114,6 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Annihilation (the 3D function: alpha_3 is free throughout) and the final map.
     t0 = Clock::now();
     const std::size_t n = ds.darts.size();
-    const int chunks = std::max(1, threads);
     std::vector<char> alive(n, 1);
     if (opt.merge) {
         std::vector<signed char> dsign(n);

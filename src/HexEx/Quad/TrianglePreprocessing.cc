@@ -274,10 +274,12 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
     return total;
 }
 
-std::vector<signed char> classifyTriangles(const TriParams& params) {
+std::vector<signed char> classifyTriangles(const TriParams& params, int threads) {
     std::vector<signed char> s(params.size());
-    for (std::size_t f = 0; f < params.size(); ++f)
-        s[f] = static_cast<signed char>(orient2dAxis(params[f][0], params[f][1], params[f][2], 2));
+    parallelChunks(params.size(), std::max(1, threads), [&](int, std::size_t fb, std::size_t fe) {
+        for (std::size_t f = fb; f < fe; ++f)
+            s[f] = static_cast<signed char>(orient2dAxis(params[f][0], params[f][1], params[f][2], 2));
+    });
     return s;
 }
 

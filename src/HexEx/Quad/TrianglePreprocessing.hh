@@ -40,8 +40,9 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
 long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, TriParams& params,
                        const TriTransitions& tr, double epsilon, int threads);
 
-/// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0 degenerate.
-std::vector<signed char> classifyTriangles(const TriParams& params);
+/// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0
+/// degenerate. Triangles are independent: @p threads only changes the speed.
+std::vector<signed char> classifyTriangles(const TriParams& params, int threads = 1);
 
 /// Holonomy of every vertex: the rotation (0..3 counter-clockwise quarter turns) of the
 /// composed transitions once around its fan; non-zero marks a cone (valence 4 + k mod 4).
