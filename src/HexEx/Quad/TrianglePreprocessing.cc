@@ -201,6 +201,17 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
         if (!e.empty()) throw InputError(e);
     for (long a : ambiguous) tr.ambiguous += a;
     if (tr.ambiguous > 0) tr.unresolved = resolveByVertexConsistency(m, adj, params, tr, isAmbiguous);
+    tr.kind.resize(nh);
+    std::vector<char> planar(static_cast<std::size_t>(chunks), 1);
+    parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
+        for (std::size_t h = hb; h < he; ++h) {
+            const int q = planarQuarterTurns(tr.halfedge[h].R);
+            if (q < 0) planar[static_cast<std::size_t>(chunk)] = 0;
+            tr.kind[h] = static_cast<unsigned char>((q & 3) | (tr.halfedge[h].is_identity() ? 0 : TriTransitions::kNotIdentity));
+        }
+    });
+    for (char p : planar)
+        if (!p) tr.kind.clear();
     return tr;
 }
 
@@ -209,6 +220,10 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
     const std::size_t nv = m.points.size();
     const int chunks = std::max(1, threads);
     std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
+    const bool compact = tr.kind.size() == tr.halfedge.size();
+    auto isIdentity = [&](std::size_t h) {
+        return compact ? !(tr.kind[h] & TriTransitions::kNotIdentity) : tr.halfedge[h].is_identity();
+    };
     parallelChunks(nv, chunks, [&](int chunk, std::size_t vb, std::size_t ve) {
         int& snap = snapped[static_cast<std::size_t>(chunk)];
         std::vector<int> star;
@@ -226,8 +241,7 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
                 const int k = cornerOf(m, f, v);
                 if (!(params[static_cast<std::size_t>(f)][k] == first)) simple = false;
                 for (int j = 0; j < 3 && simple; ++j)
-                    if (j != k && !tr.halfedge[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j)].is_identity())
-                        simple = false;
+                    if (j != k && !isIdentity(3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j))) simple = false;
             }
             if (simple) {
                 Vec3d u = first;
@@ -287,13 +301,16 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                                 const std::vector<char>* unknown, int threads) {
     const std::size_t nv = m.points.size();
     std::vector<int> hol(nv, -1);
+    const bool compact = tr.kind.size() == tr.halfedge.size();
     parallelChunks(nv, std::max(1, threads), [&](int, std::size_t vb, std::size_t ve) {
     for (std::size_t vi = vb; vi < ve; ++vi) {
         if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
         const int v = static_cast<int>(vi);
         const int f0 = adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])];
         // Around the fan: leave each triangle through the edge at v it was not entered by.
+        // Planar rotations commute, so with the compact copy the quarter turns just add up.
         Rotation R;
+        int turns = 0;
         int f = f0, entry = -1, steps = 0;
         const int limit = adj.vertex_offset[vi + 1] - adj.vertex_offset[vi] + 1;
         bool ok = true;
@@ -306,11 +323,12 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                 ok = false;
                 break;
             }
-            if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
+            if (compact) turns += tr.kind[he] & 3;
+            else if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
             f = oe / 3;
             entry = oe % 3;
         } while (f != f0);
-        if (ok) hol[vi] = std::max(0, planarQuarterTurns(R));
+        if (ok) hol[vi] = compact ? turns % 4 : std::max(0, planarQuarterTurns(R));
     }
     });
     return hol;

@@ -81,6 +81,7 @@ struct Tracer {
     const TriTransitions& tr;
     const std::vector<signed char>& sign;
     const TriDartSet& ds;
+    const bool compact = tr.kind.size() == tr.halfedge.size();  ///< tr.kind is usable
 
     /// Index of dart @p d of triangle @p f or -1 (degenerate triangles own no darts). Keys
     /// are unique per triangle, so a linear scan of a short range finds what the binary
@@ -154,8 +155,8 @@ struct Tracer {
                 boundary = true;
                 return -1;
             }
-            const GridTransform& g = tr.halfedge[h];
-            if (!g.is_identity()) {
+            if (compact ? (tr.kind[h] & TriTransitions::kNotIdentity) != 0 : !tr.halfedge[h].is_identity()) {
+                const GridTransform& g = tr.halfedge[h];
                 from = mapDesc(g, from);
                 to = mapDesc(g, to);
                 const Vec3i qn = g.apply(Vec3i(q.u, q.v, 0)), wn = g.R.apply(Vec3i(w.u, w.v, 0));
