@@ -47,8 +47,55 @@ TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
                     static_cast<int>(f);
     }
     // Halfedge 3f+i runs a -> b; its opposite runs b -> a in a triangle around b.
+    // Fast path: the first such triangle in b's star, then a check that the pairing is
+    // consistent (every match mutual, no boundary halfedge with a twin running the same
+    // way). Any edge used other than once in each direction fails the check (all a -> b
+    // halfedges match the same first b -> a one), and then the full scan below runs and
+    // reports the first defect exactly as it always did.
     adj.opposite.assign(3 * nf, -1);
     const int chunks = std::max(1, threads);
+    auto starOf = [&](int v, auto&& visit) {
+        for (int p = adj.vertex_offset[static_cast<std::size_t>(v)]; p < adj.vertex_offset[static_cast<std::size_t>(v) + 1]; ++p)
+            if (!visit(adj.vertex_triangles[static_cast<std::size_t>(p)])) return;
+    };
+    parallelChunks(nf, chunks, [&](int, std::size_t fb, std::size_t fe) {
+        for (std::size_t f = fb; f < fe; ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = m.triangles[f][(i + 1) % 3], b = m.triangles[f][(i + 2) % 3];
+                int found = -1;
+                starOf(b, [&](int g) {
+                    if (g == static_cast<int>(f)) return true;
+                    const auto& tg = m.triangles[static_cast<std::size_t>(g)];
+                    const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;
+                    if (tg[(pb + 1) % 3] != a) return true;
+                    found = 3 * g + (pb + 2) % 3;
+                    return false;
+                });
+                adj.opposite[3 * f + static_cast<std::size_t>(i)] = found;
+            }
+    });
+    std::vector<char> consistent(static_cast<std::size_t>(chunks), 1);
+    parallelChunks(nf, chunks, [&](int chunk, std::size_t fb, std::size_t fe) {
+        bool ok = true;
+        for (std::size_t h = 3 * fb; h < 3 * fe && ok; ++h) {
+            const int o = adj.opposite[h];
+            if (o >= 0) {
+                ok = adj.opposite[static_cast<std::size_t>(o)] == static_cast<int>(h);
+                continue;
+            }
+            const std::size_t f = h / 3, i = h % 3;
+            const int a = m.triangles[f][(i + 1) % 3], b = m.triangles[f][(i + 2) % 3];
+            starOf(b, [&](int g) {  // a twin a -> b elsewhere?
+                if (g == static_cast<int>(f)) return true;
+                const auto& tg = m.triangles[static_cast<std::size_t>(g)];
+                const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;
+                if (tg[(pb + 2) % 3] == a) ok = false;
+                return ok;
+            });
+        }
+        consistent[static_cast<std::size_t>(chunk)] = ok;
+    });
+    if (std::find(consistent.begin(), consistent.end(), 0) == consistent.end()) return adj;
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
     parallelChunks(nf, chunks, [&](int chunk, std::size_t fb, std::size_t fe) {
         for (std::size_t f = fb; f < fe && errors[static_cast<std::size_t>(chunk)].empty(); ++f)
