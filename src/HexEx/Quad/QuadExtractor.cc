@@ -107,41 +107,66 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Connections.
     t0 = Clock::now();
     TriTraceStats ts;
-    std::vector<std::array<int, 4>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
+    std::vector<std::array<int, 3>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
     rep.darts.asymmetric_links = ts.asymmetric;
     rep.timings_s.connect = since(t0);
 
     // Annihilation (the 3D function: alpha_3 is free throughout) and the final map.
+    // Without anti darts there is nothing to annihilate (the function would find no pair),
+    // every dart survives and the traced links become the map's in place.
     t0 = Clock::now();
     const std::size_t n = ds.darts.size();
-    std::vector<char> alive(n, 1);
-    if (opt.merge) {
+    std::vector<char> alive;  // empty: every dart alive
+    if (opt.merge && ds.anti > 0) {
+        alive.assign(n, 1);
         std::vector<signed char> dsign(n);
+        std::vector<std::array<int, 4>> links4(n);
         parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t d = b; d < e; ++d) dsign[d] = ds.darts[d].sign;
+            for (std::size_t d = b; d < e; ++d) {
+                dsign[d] = ds.darts[d].sign;
+                links4[d] = {links[d][0], links[d][1], links[d][2], static_cast<int>(d)};
+            }
         });
-        const AnnihilationStats as = annihilateDarts(links, dsign, alive);
+        const AnnihilationStats as = annihilateDarts(links4, dsign, alive);
+        parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t d = b; d < e; ++d) links[d] = {links4[d][0], links4[d][1], links4[d][2]};
+        });
         rep.darts.annihilated_pairs = as.pairs;
         rep.darts.remaining_anti = as.remaining_anti;
     } else {
-        rep.darts.remaining_anti = ds.anti;
+        rep.darts.remaining_anti = ds.anti;  // 0 when merging
     }
+    auto isAlive = [&](std::size_t d) { return alive.empty() || alive[d]; };
     // Compaction of the surviving darts, in parallel: per-chunk counts give each chunk
     // its first new index, so the numbering is the sequential one.
     std::vector<std::size_t> base(static_cast<std::size_t>(chunks) + 1, 0);
-    parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
-        std::size_t k = 0;
-        for (std::size_t d = b; d < e; ++d) k += alive[d] ? 1 : 0;
-        base[static_cast<std::size_t>(c) + 1] = k;
-    });
+    if (!alive.empty())
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            std::size_t k = 0;
+            for (std::size_t d = b; d < e; ++d) k += alive[d] ? 1 : 0;
+            base[static_cast<std::size_t>(c) + 1] = k;
+        });
     for (int c = 0; c < chunks; ++c) base[static_cast<std::size_t>(c) + 1] += base[static_cast<std::size_t>(c)];
-    const std::size_t nk = base.back();
-    const bool allAlive = nk == n;  // then the numbering is the identity
-    std::vector<int> newIndex(allAlive ? 0 : n, -1);
+    const bool allAlive = alive.empty() || base.back() == n;  // then the numbering is the identity
+    std::vector<long> unconnected(static_cast<std::size_t>(chunks), 0);
     std::vector<TriDart> kept;
+    std::vector<std::array<int, 3>> glinks;
     if (allAlive) {
+        // Unconnected links (-1) become free ones, in place.
         kept = std::move(ds.darts);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            long& u = unconnected[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d)
+                for (int& p : links[d])
+                    if (p < 0) {
+                        ++u;
+                        p = static_cast<int>(d);
+                    }
+        });
+        glinks = std::move(links);
     } else {
+        const std::size_t nk = base.back();
+        std::vector<int> newIndex(n, -1);
         kept.resize(nk);
         parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
             std::size_t k = base[static_cast<std::size_t>(c)];
@@ -151,30 +176,28 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
                     kept[k++] = ds.darts[d];
                 }
         });
-    }
-    auto renumber = [&](int p) { return allAlive ? p : newIndex[static_cast<std::size_t>(p)]; };
-    std::vector<std::array<int, 3>> glinks(nk);
-    std::vector<long> unconnected(static_cast<std::size_t>(chunks), 0);
-    parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
-        long& u = unconnected[static_cast<std::size_t>(c)];
-        for (std::size_t d = b; d < e; ++d) {
-            if (!alive[d]) continue;
-            const int nd = renumber(static_cast<int>(d));
-            for (int i = 0; i < 3; ++i) {
-                const int p = links[d][static_cast<std::size_t>(i)];
-                const int np = (p >= 0 && alive[static_cast<std::size_t>(p)]) ? renumber(p) : -1;
-                if (np < 0) {
-                    if (p < 0 || !alive[static_cast<std::size_t>(p)]) ++u;
-                    glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
-                } else {
-                    glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+        glinks.resize(nk);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            long& u = unconnected[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d) {
+                if (!alive[d]) continue;
+                const int nd = newIndex[d];
+                for (int i = 0; i < 3; ++i) {
+                    const int p = links[d][static_cast<std::size_t>(i)];
+                    const int np = (p >= 0 && isAlive(static_cast<std::size_t>(p))) ? newIndex[static_cast<std::size_t>(p)] : -1;
+                    if (np < 0) {
+                        if (p < 0 || !isAlive(static_cast<std::size_t>(p))) ++u;
+                        glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
+                    } else {
+                        glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+                    }
                 }
             }
-        }
-    });
+        });
+        links.clear();
+        links.shrink_to_fit();
+    }
     for (long u : unconnected) rep.output.unconnected_darts += u;
-    links.clear();
-    links.shrink_to_fit();
     GMap<2> g;
     g.assign_links(std::move(glinks));
     rep.timings_s.postprocess = since(t0);

@@ -97,7 +97,11 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
         auto& out = parts[static_cast<std::size_t>(k)];
         auto& cnt = counts[static_cast<std::size_t>(k)];
         cnt.assign(fe - fb, 0);
-        out.reserve(static_cast<std::size_t>(std::min(8.5 * chunkArea[static_cast<std::size_t>(k)], 8.0 * points)) + 64);
+        // Chunk 0's buffer becomes the result: room for all darts (address space only
+        // until written), so only the other chunks' darts are copied.
+        double area = 0;
+        for (int c = k == 0 ? 0 : k; c < (k == 0 ? chunks : k + 1); ++c) area += chunkArea[static_cast<std::size_t>(c)];
+        out.reserve(static_cast<std::size_t>(std::min(8.5 * area, 8.0 * points)) + 64);
         for (std::size_t f = fb; f < fe; ++f) {
             const int s = sign[f];
             if (!s) continue;
@@ -161,19 +165,24 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
     std::vector<std::size_t> first(static_cast<std::size_t>(chunks) + 1, 0);
     for (int k = 0; k < chunks; ++k)
         first[static_cast<std::size_t>(k) + 1] = first[static_cast<std::size_t>(k)] + parts[static_cast<std::size_t>(k)].size();
+    const std::size_t n0 = parts[0].size();
+    ds.darts = std::move(parts[0]);
     ds.darts.resize(total);
     std::vector<long> anti(static_cast<std::size_t>(chunks), 0);
     parallelChunks(nf, chunks, [&](int k, std::size_t fb, std::size_t) {
         auto& part = parts[static_cast<std::size_t>(k)];
-        std::copy(part.begin(), part.end(), ds.darts.begin() + static_cast<std::ptrdiff_t>(first[static_cast<std::size_t>(k)]));
+        if (k > 0)
+            std::copy(part.begin(), part.end(), ds.darts.begin() + static_cast<std::ptrdiff_t>(first[static_cast<std::size_t>(k)]));
         int o = static_cast<int>(first[static_cast<std::size_t>(k)]);
         std::size_t f = fb;
         for (int c : counts[static_cast<std::size_t>(k)]) {
             o += c;
             ds.offset[++f] = o;
         }
-        for (const TriDart& d : part)
-            if (d.sign < 0) ++anti[static_cast<std::size_t>(k)];
+        const auto b = ds.darts.begin() + static_cast<std::ptrdiff_t>(first[static_cast<std::size_t>(k)]);
+        const auto e = k > 0 ? b + static_cast<std::ptrdiff_t>(part.size()) : b + static_cast<std::ptrdiff_t>(n0);
+        for (auto d = b; d != e; ++d)
+            if (d->sign < 0) ++anti[static_cast<std::size_t>(k)];
         std::vector<TriDart>().swap(part);
     });
     for (long a : anti) ds.anti += a;

@@ -179,12 +179,12 @@ struct Tracer {
 
 } // namespace
 
-std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
+std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
                                                     const TriParams& params, const TriTransitions& tr,
                                                     const std::vector<signed char>& sign, const TriDartSet& ds, int threads,
                                                     TriTraceStats* stats) {
     const std::size_t n = ds.darts.size();
-    std::vector<std::array<int, 4>> links(n);
+    std::vector<std::array<int, 3>> links(n);
     const Tracer T{m, adj, params, tr, sign, ds};
     const int chunks = std::max(1, threads);
     // Partners have opposite frame orientation (relative to their triangle's sign), so each
@@ -204,7 +204,6 @@ std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m
     };
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
-            links[d][3] = static_cast<int>(d);
             for (int i = 0; i < 3; ++i) {
                 if (counterClockwise(d)) traceInto(d, i);
                 else links[d][static_cast<std::size_t>(i)] = kUntraced;
