@@ -184,7 +184,6 @@ std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m
                                                     const std::vector<signed char>& sign, const TriDartSet& ds, int threads,
                                                     TriTraceStats* stats) {
     const std::size_t n = ds.darts.size();
-    std::vector<std::array<int, 3>> links(n);
     const Tracer T{m, adj, params, tr, sign, ds};
     const int chunks = std::max(1, threads);
     // Partners have opposite frame orientation (relative to their triangle's sign), so each
@@ -196,31 +195,27 @@ std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m
         return kFrameTurn[t.d1][t.d2] * t.sign > 0;
     };
     constexpr int kUntraced = -2, kContested = -3;
+    std::vector<std::array<int, 3>> links(n, {kUntraced, kUntraced, kUntraced});
     auto traceInto = [&](std::size_t d, int i) {
         const int di = static_cast<int>(d);
         bool boundary = false;
         const int p = T.trace(di, i, boundary);
         links[d][static_cast<std::size_t>(i)] = p >= 0 ? p : (i == 2 && boundary ? di : -1);
+        return p;
     };
-    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t d = b; d < e; ++d) {
-            for (int i = 0; i < 3; ++i) {
-                if (counterClockwise(d)) traceInto(d, i);
-                else links[d][static_cast<std::size_t>(i)] = kUntraced;
-            }
-        }
-    });
-    // Claims, in parallel: the entry of a clockwise dart ends as the claimant if exactly one
-    // counter-clockwise dart claimed it and as kContested if several did, whatever the order
-    // (a compare-and-swap from kUntraced succeeds once; later claimants overwrite with
-    // kContested). Only clockwise entries are written and only counter-clockwise ones read.
+    // Counter-clockwise darts trace and claim at once (the partner's dart record is still in
+    // cache from the lookup). A claim is the only write to a clockwise dart's entry in this
+    // pass and a dart's own entries are the only ones it reads: the entry ends as the
+    // claimant if exactly one dart claimed it and as kContested if several did, whatever
+    // the order (a compare-and-swap from kUntraced succeeds once; later claimants store
+    // kContested).
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
             if (!counterClockwise(d)) continue;
-            for (std::size_t i = 0; i < 3; ++i) {
-                const int p = links[d][i];
+            for (int i = 0; i < 3; ++i) {
+                const int p = traceInto(d, i);
                 if (p < 0 || p == static_cast<int>(d) || counterClockwise(static_cast<std::size_t>(p))) continue;
-                int* back = &links[static_cast<std::size_t>(p)][i];
+                int* back = &links[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)];
                 int expected = kUntraced;
                 if (!__atomic_compare_exchange_n(back, &expected, static_cast<int>(d), false, __ATOMIC_RELAXED, __ATOMIC_RELAXED))
                     __atomic_store_n(back, kContested, __ATOMIC_RELAXED);
