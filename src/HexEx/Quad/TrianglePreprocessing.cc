@@ -140,6 +140,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
     std::vector<long> ambiguous(static_cast<std::size_t>(chunks), 0);
     std::vector<char> isAmbiguous(given ? 0 : nh, 0);
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+    const Rotation quarter[4] = {planarRotation(0), planarRotation(1), planarRotation(2), planarRotation(3)};
     parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
             const int o = adj.opposite[h];
@@ -171,7 +172,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     // integer vector: keep the rotations for which it (nearly) is.
                     unsigned mask = 0;
                     for (int c = 0; c < 4; ++c) {
-                        const Vec3d d = w0 - planarRotation(c).apply(u0);
+                        const Vec3d d = w0 - quarter[c].apply(u0);
                         if (std::fabs(d[0] - std::round(d[0])) <= 1e-6 && std::fabs(d[1] - std::round(d[1])) <= 1e-6)
                             mask |= 1u << c;
                     }
@@ -188,7 +189,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     }
                 }
             }
-            const Rotation R = planarRotation(k);
+            const Rotation R = quarter[k];
             const Vec3d r0 = R.apply(u0), r1 = R.apply(u1);
             const Vec3i t(static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0])))),
                           static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1])))), 0);
