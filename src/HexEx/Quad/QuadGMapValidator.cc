@@ -3,6 +3,7 @@
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
+#include <array>
 #include <sstream>
 
 namespace HexEx {
@@ -39,23 +40,31 @@ std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& siz
     return label;
 }
 
-/// labelPair() for a map whose links a and b are involutions on the alive darts (so an
-/// orbit is a cycle or a chain that alternates a and b): in parallel, the same labels.
-/// Pass 1 marks each orbit's smallest dart (a walk that stops at the first smaller dart),
-/// pass 2 numbers the marked darts in dart order, pass 3 walks each orbit once from its
-/// smallest dart and writes its label (orbits are disjoint, so the writes are too).
-std::vector<int> labelInvolutionPair(const GMap<2>& g, int a, int b, std::vector<int>& size, std::vector<int>& first,
-                                     int threads) {
+/// Labels, sizes and smallest darts of the orbits of one pair of involutions.
+struct PairLabels {
+    std::vector<int> label, size, first;
+};
+
+/// The generator pairs of the face, vertex and edge orbits.
+constexpr int kPairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+
+/// labelPair() for the three pairs at once, for a map whose links are involutions on the
+/// alive darts (so an orbit is a cycle or a chain that alternates the two generators): in
+/// parallel, the same labels. Pass 1 marks each orbit's smallest dart (a walk that stops
+/// at the first smaller dart, started only where both neighbours are larger), then each
+/// chunk numbers its marked darts in dart order from its offset, and pass 2 walks each
+/// orbit once from its smallest dart and writes its label (orbits are disjoint, so the
+/// writes are too).
+void labelInvolutionOrbits(const GMap<2>& g, int threads, PairLabels out[3]) {
     const auto& L = g.links();
     const std::size_t n = L.size();
-    const int gens[2] = {a, b};
-    // Visits the orbit of d (d itself excluded), alternating the generators, in both
-    // directions of a chain; stops early when visit() returns false.
-    auto walk = [&](int d, auto&& visit) {
+    // Visits the orbit of d under pair q (d itself excluded), alternating the generators,
+    // in both directions of a chain; stops early when visit() returns false.
+    auto walk = [&](int q, int d, auto&& visit) {
         for (int start = 0; start < 2; ++start) {
             int x = d, k = start;
             for (;;) {
-                const int y = L[static_cast<std::size_t>(x)][static_cast<std::size_t>(gens[k])];
+                const int y = L[static_cast<std::size_t>(x)][static_cast<std::size_t>(kPairs[q][k])];
                 if (y == x) break;  // end of a chain: walk the other way from d
                 if (y == d) return;  // cycle closed: everything seen
                 if (!visit(y)) return;
@@ -64,47 +73,57 @@ std::vector<int> labelInvolutionPair(const GMap<2>& g, int a, int b, std::vector
             }
         }
     };
-    std::vector<char> isFirst(n, 0);
+    std::vector<unsigned char> roots(n, 0);  // bit q: smallest dart of its pair-q orbit
     const int chunks = std::max(1, threads);
-    std::vector<int> count(static_cast<std::size_t>(chunks), 0);
+    std::vector<std::array<int, 3>> count(static_cast<std::size_t>(chunks), {0, 0, 0});
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
-        int cnt = 0;
+        auto& cnt = count[static_cast<std::size_t>(c)];
         for (std::size_t s = bgn; s < end; ++s) {
             const int d = static_cast<int>(s);
             if (!g.is_alive(DartHandle(d))) continue;
-            // Both neighbours first: most darts are not a local minimum of their orbit,
-            // and a walk in one direction could otherwise run around most of a cycle.
-            bool smallest = L[s][static_cast<std::size_t>(a)] >= d && L[s][static_cast<std::size_t>(b)] >= d;
-            if (smallest) walk(d, [&](int y) { return (smallest = y > d); });
-            isFirst[s] = smallest;
-            cnt += smallest;
+            unsigned char bits = 0;
+            for (int q = 0; q < 3; ++q) {
+                bool smallest = L[s][static_cast<std::size_t>(kPairs[q][0])] >= d && L[s][static_cast<std::size_t>(kPairs[q][1])] >= d;
+                if (smallest) walk(q, d, [&](int y) { return (smallest = y > d); });
+                if (smallest) {
+                    bits = static_cast<unsigned char>(bits | (1u << q));
+                    ++cnt[static_cast<std::size_t>(q)];
+                }
+            }
+            roots[s] = bits;
         }
-        count[static_cast<std::size_t>(c)] = cnt;
     });
-    std::vector<int> base(static_cast<std::size_t>(chunks) + 1, 0);
-    for (int c = 0; c < chunks; ++c) base[static_cast<std::size_t>(c) + 1] = base[static_cast<std::size_t>(c)] + count[static_cast<std::size_t>(c)];
-    const std::size_t orbits = static_cast<std::size_t>(base.back());
-    size.assign(orbits, 0);
-    first.assign(orbits, 0);
-    std::vector<int> label(n, -1);
+    std::vector<std::array<int, 3>> base(static_cast<std::size_t>(chunks) + 1, {0, 0, 0});
+    for (int c = 0; c < chunks; ++c)
+        for (std::size_t q = 0; q < 3; ++q)
+            base[static_cast<std::size_t>(c) + 1][q] = base[static_cast<std::size_t>(c)][q] + count[static_cast<std::size_t>(c)][q];
+    for (std::size_t q = 0; q < 3; ++q) {
+        const std::size_t orbits = static_cast<std::size_t>(base.back()[q]);
+        out[q].size.assign(orbits, 0);
+        out[q].first.assign(orbits, 0);
+        out[q].label.assign(n, -1);
+    }
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
-        int l = base[static_cast<std::size_t>(c)];
+        std::array<int, 3> l = base[static_cast<std::size_t>(c)];
         for (std::size_t s = bgn; s < end; ++s) {
-            if (!isFirst[s]) continue;
+            if (!roots[s]) continue;
             const int d = static_cast<int>(s);
-            label[s] = l;
-            int sz = 1;
-            walk(d, [&](int y) {
-                label[static_cast<std::size_t>(y)] = l;
-                ++sz;
-                return true;
-            });
-            size[static_cast<std::size_t>(l)] = sz;
-            first[static_cast<std::size_t>(l)] = d;
-            ++l;
+            for (int q = 0; q < 3; ++q) {
+                if (!(roots[s] & (1u << q))) continue;
+                PairLabels& P = out[q];
+                const int lq = l[static_cast<std::size_t>(q)]++;
+                P.label[s] = lq;
+                int sz = 1;
+                walk(q, d, [&](int y) {
+                    P.label[static_cast<std::size_t>(y)] = lq;
+                    ++sz;
+                    return true;
+                });
+                P.size[static_cast<std::size_t>(lq)] = sz;
+                P.first[static_cast<std::size_t>(lq)] = d;
+            }
         }
     });
-    return label;
 }
 } // namespace
 
@@ -157,12 +176,17 @@ QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, i
         v.boundary_darts += p.boundary_darts;
     }
     // Every alive dart's links are alive involutions: orbits are alternating cycles/chains.
-    const bool involutive = v.not_involution == 0;
-    auto label = [&](int a, int b, std::vector<int>& size, std::vector<int>& first) {
-        return involutive ? labelInvolutionPair(g, a, b, size, first, threads) : labelPair(g, a, b, size, first);
-    };
-    std::vector<int> fsize, vsize, esize, ffirst, vfirst, efirst;
-    std::vector<int> face = label(0, 1, fsize, ffirst);
+    PairLabels P[3];
+    if (v.not_involution == 0) {
+        labelInvolutionOrbits(g, threads, P);
+    } else {
+        for (int q = 0; q < 3; ++q) {
+            if (q > 0 && !labels) break;  // only the faces are needed for the checks
+            P[q].label = labelPair(g, kPairs[q][0], kPairs[q][1], P[q].size, P[q].first);
+        }
+    }
+    const std::vector<int>& face = P[0].label;
+    const std::vector<int>& fsize = P[0].size;
     std::vector<long> eq3(static_cast<std::size_t>(chunks), 0);
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
         for (std::size_t s = bgn; s < end; ++s)
@@ -170,15 +194,15 @@ QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, i
     });
     for (long e : eq3) v.eq3_quad += e;
     if (labels) {
-        labels->face = std::move(face);
-        labels->face_first = std::move(ffirst);
-        labels->n_faces = static_cast<int>(fsize.size());
-        labels->vertex = label(1, 2, vsize, vfirst);
-        labels->vertex_first = std::move(vfirst);
-        labels->n_vertices = static_cast<int>(vsize.size());
-        labels->edge = label(0, 2, esize, efirst);
-        labels->edge_first = std::move(efirst);
-        labels->n_edges = static_cast<int>(esize.size());
+        labels->n_faces = static_cast<int>(P[0].size.size());
+        labels->face = std::move(P[0].label);
+        labels->face_first = std::move(P[0].first);
+        labels->n_vertices = static_cast<int>(P[1].size.size());
+        labels->vertex = std::move(P[1].label);
+        labels->vertex_first = std::move(P[1].first);
+        labels->n_edges = static_cast<int>(P[2].size.size());
+        labels->edge = std::move(P[2].label);
+        labels->edge_first = std::move(P[2].first);
     }
     return v;
 }
