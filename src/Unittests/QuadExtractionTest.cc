@@ -250,6 +250,45 @@ TEST(QuadExtraction, BadInputThrowsWithReason) {
     expectError(bad, "same direction");
 }
 
+TEST(QuadExtraction, FirstInputErrorIsReportedForAnyThreadCount) {
+    // Defects in several triangles (checked in parallel chunks): the message is always the
+    // one a scan in triangle order meets first.
+    ParametrizedTriMesh bad = generateSquare(3, 3);  // 18 triangles
+    bad.params[14][1][0] = std::nan("");
+    bad.triangles[9][2] = 1000;
+    bad.triangles[4] = {bad.triangles[4][1], bad.triangles[4][1], bad.triangles[4][2]};
+    bad.params[16][0][1] = 1e12;
+    for (int threads : {1, 2, 3, 5, 18}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        try {
+            extractQuadMesh(bad, qm, opt);
+            ADD_FAILURE() << "no error with " << threads << " threads";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), "triangle mesh: triangle 4: repeated vertex") << threads;
+        }
+    }
+    bad.triangles[4] = generateSquare(3, 3).triangles[4];  // next: the index out of range
+    bad.triangles[9][2] = 1000;
+    for (int threads : {1, 2, 18}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        EXPECT_THROW(
+            {
+                try {
+                    extractQuadMesh(bad, qm, opt);
+                } catch (const InputError& e) {
+                    EXPECT_EQ(std::string(e.what()), "triangle mesh: triangle 9: vertex index 1000 out of range (16 vertices)")
+                        << threads;
+                    throw;
+                }
+            },
+            InputError);
+    }
+}
+
 TEST(QuadExtraction, NonManifoldEdgesAreNamedForAnyThreadCount) {
     // Three triangles on edge (0, 1): one runs 0 -> 1, two run 1 -> 0. The first triangle
     // finds two opposite partners; the fast pairing must hand over to the full scan, which
