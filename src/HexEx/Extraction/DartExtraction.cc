@@ -258,6 +258,9 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         s.darts.insert(s.darts.end(), parts[k].begin(), parts[k].end());
         std::vector<Dart>().swap(parts[k]);
     }
+    // Fold darts outnumber the expected cells' darts, and a grown vector may hold up to
+    // twice its size: give the excess back before the later stages allocate per dart.
+    if (s.darts.capacity() > s.darts.size() + s.darts.size() / 4) s.darts.shrink_to_fit();
     s.tet_begin.assign(n + 1, 0);
     for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
     s.dense_slot.assign(n, -1);

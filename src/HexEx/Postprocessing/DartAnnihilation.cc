@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <deque>
-#include <unordered_map>
 #include <utility>
 
 namespace HexEx {
@@ -13,19 +12,18 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
                                   std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs) {
     AnnihilationStats st;
     const long n = static_cast<long>(alpha.size());
-    // Union-find over the darts the annihilation touches only (local ids), so that maps
-    // with few folds pay nothing per dart.
+    // Union-find over all darts, allocated when the first pair annihilates (maps without
+    // folds pay nothing). Dense ids cost 5 bytes per dart; a hash map of the touched darts
+    // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
     UnionFind sameVertex(0);
-    std::unordered_map<long, int> local;
-    std::vector<long> touched;  // dart per local id
+    std::vector<char> touched;  // per dart: joined some group
     auto idOf = [&](long d) {
-        const auto it = local.find(d);
-        if (it != local.end()) return it->second;
-        const int id = static_cast<int>(touched.size());
-        local.emplace(d, id);
-        touched.push_back(d);
-        sameVertex.parent.push_back(id);
-        return id;
+        if (sameVertex.parent.empty()) {
+            sameVertex = UnionFind(static_cast<std::size_t>(n));
+            touched.assign(static_cast<std::size_t>(n), 0);
+        }
+        touched[static_cast<std::size_t>(d)] = 1;
+        return static_cast<int>(d);
     };
     std::deque<long> work;
     std::vector<char> queued(static_cast<std::size_t>(n), 0);
@@ -88,16 +86,19 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
     if (heirs) {
         // Smallest surviving dart per group, then (removed dart, heir) in dart order.
         heirs->clear();
-        std::vector<long> heirOf(touched.size(), -1);  // per root
-        for (std::size_t k = 0; k < touched.size(); ++k) {
-            if (!alive[static_cast<std::size_t>(touched[k])]) continue;
-            long& h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(k)))];
-            if (h < 0 || touched[k] < h) h = touched[k];
+        std::vector<int> heirOf(touched.size(), -1);  // per root
+        for (std::size_t d = 0; d < touched.size(); ++d) {
+            if (!touched[d] || !alive[d]) continue;
+            int& h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
+            if (h < 0) h = static_cast<int>(d);  // darts ascend: the first is the smallest
         }
-        for (std::size_t k = 0; k < touched.size(); ++k) {
-            if (alive[static_cast<std::size_t>(touched[k])]) continue;
-            const long h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(k)))];
-            if (h >= 0) heirs->emplace_back(static_cast<int>(touched[k]), static_cast<int>(h));
+        std::size_t removed = 0;
+        for (std::size_t d = 0; d < touched.size(); ++d) removed += (touched[d] && !alive[d]) ? 1 : 0;
+        heirs->reserve(removed);  // exact: a grown vector may hold twice what it needs
+        for (std::size_t d = 0; d < touched.size(); ++d) {
+            if (!touched[d] || alive[d]) continue;
+            const int h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
+            if (h >= 0) heirs->emplace_back(static_cast<int>(d), h);
         }
         std::sort(heirs->begin(), heirs->end());
     }
