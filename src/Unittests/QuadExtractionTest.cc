@@ -249,3 +249,80 @@ TEST(QuadExtraction, BadInputThrowsWithReason) {
     bad.params.push_back(m.params[0]);
     expectError(bad, "same direction");
 }
+
+TEST(QuadExtraction, FirstInputErrorIsReportedForAnyThreadCount) {
+    // Defects in several triangles (checked in parallel chunks): the message is always the
+    // one a scan in triangle order meets first.
+    ParametrizedTriMesh bad = generateSquare(3, 3);  // 18 triangles
+    bad.params[14][1][0] = std::nan("");
+    bad.triangles[9][2] = 1000;
+    bad.triangles[4] = {bad.triangles[4][1], bad.triangles[4][1], bad.triangles[4][2]};
+    bad.params[16][0][1] = 1e12;
+    for (int threads : {1, 2, 3, 5, 18}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        try {
+            extractQuadMesh(bad, qm, opt);
+            ADD_FAILURE() << "no error with " << threads << " threads";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), "triangle mesh: triangle 4: repeated vertex") << threads;
+        }
+    }
+    bad.triangles[4] = generateSquare(3, 3).triangles[4];  // next: the index out of range
+    bad.triangles[9][2] = 1000;
+    for (int threads : {1, 2, 18}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        EXPECT_THROW(
+            {
+                try {
+                    extractQuadMesh(bad, qm, opt);
+                } catch (const InputError& e) {
+                    EXPECT_EQ(std::string(e.what()), "triangle mesh: triangle 9: vertex index 1000 out of range (16 vertices)")
+                        << threads;
+                    throw;
+                }
+            },
+            InputError);
+    }
+}
+
+TEST(QuadExtraction, NonManifoldEdgesAreNamedForAnyThreadCount) {
+    // Three triangles on edge (0, 1): one runs 0 -> 1, two run 1 -> 0. The first triangle
+    // finds two opposite partners; the fast pairing must hand over to the full scan, which
+    // reports exactly this, whatever the number of threads (one triangle per thread at 3).
+    ParametrizedTriMesh m;
+    m.points = {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, -1, 0), Vec3d(0, -1, 1)};
+    m.triangles = {{0, 1, 2}, {1, 0, 3}, {1, 0, 4}};
+    m.params = {{Vec2d(0, 0), Vec2d(1, 0), Vec2d(0, 1)}, {Vec2d(1, 0), Vec2d(0, 0), Vec2d(0, -1)},
+                {Vec2d(1, 0), Vec2d(0, 0), Vec2d(0, -1)}};
+    for (int threads : {1, 2, 3}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        try {
+            extractQuadMesh(m, qm, opt);
+            ADD_FAILURE() << "no error with " << threads << " threads";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), "triangle mesh: edge (0, 1) is shared by more than two triangles") << threads;
+        }
+    }
+    // Two triangles running the same way on a boundary edge (no opposite partner at all):
+    // not a boundary, an orientation error.
+    m.triangles = {{0, 1, 2}, {0, 1, 3}};
+    m.params.pop_back();
+    for (int threads : {1, 2}) {
+        QuadMesh qm;
+        QuadExtractionOptions opt;
+        opt.threads = threads;
+        try {
+            extractQuadMesh(m, qm, opt);
+            ADD_FAILURE() << "no error with " << threads << " threads";
+        } catch (const InputError& e) {
+            EXPECT_EQ(std::string(e.what()), "triangle mesh: triangles 0 and 1 use edge (0, 1) in the same direction "
+                                             "(inconsistent orientation or non-manifold edge)") << threads;
+        }
+    }
+}

@@ -17,38 +17,107 @@ TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
                          std::to_string(nf) + " triangles");
     if (nf > static_cast<std::size_t>(INT32_MAX / 3) || nv > static_cast<std::size_t>(INT32_MAX))
         throw InputError("triangle mesh: too many elements");
-    for (std::size_t v = 0; v < nv; ++v)
-        for (int k = 0; k < 3; ++k)
-            if (!std::isfinite(m.points[v][k]))
-                throw InputError("triangle mesh: vertex " + std::to_string(v) + ": position is not finite");
+    const int chunks = std::max(1, threads);
+    // Checks in parallel, each chunk keeping its first error: the lowest chunk's error is
+    // the one a sequential scan would report first.
+    auto firstError = [&](std::size_t n, auto&& check) {
+        std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e && errors[static_cast<std::size_t>(c)].empty(); ++i)
+                check(i, errors[static_cast<std::size_t>(c)]);
+        });
+        for (const auto& e : errors)
+            if (!e.empty()) throw InputError(e);
+    };
+    firstError(nv, [&](std::size_t v, std::string& err) {
+        for (int k = 0; k < 3 && err.empty(); ++k)
+            if (!std::isfinite(m.points[v][k])) err = "triangle mesh: vertex " + std::to_string(v) + ": position is not finite";
+    });
     TriAdjacency adj;
     adj.vertex_offset.assign(nv + 1, 0);
-    for (std::size_t f = 0; f < nf; ++f) {
+    firstError(nf, [&](std::size_t f, std::string& err) {
         const auto& t = m.triangles[f];
         for (int k = 0; k < 3; ++k) {
-            if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= nv)
-                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": vertex index " +
-                                 std::to_string(t[k]) + " out of range (" + std::to_string(nv) + " vertices)");
-            if (!std::isfinite(m.params[f][k][0]) || !std::isfinite(m.params[f][k][1]))
-                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " +
-                                 std::to_string(k) + " is not finite");
+            if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= nv) {
+                err = "triangle mesh: triangle " + std::to_string(f) + ": vertex index " + std::to_string(t[k]) +
+                      " out of range (" + std::to_string(nv) + " vertices)";
+                return;
+            }
+            if (!std::isfinite(m.params[f][k][0]) || !std::isfinite(m.params[f][k][1])) {
+                err = "triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " + std::to_string(k) +
+                      " is not finite";
+                return;
+            }
         }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
-            throw InputError("triangle mesh: triangle " + std::to_string(f) + ": repeated vertex");
-        for (int k = 0; k < 3; ++k) ++adj.vertex_offset[static_cast<std::size_t>(t[k]) + 1];
-    }
+        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
+            err = "triangle mesh: triangle " + std::to_string(f) + ": repeated vertex";
+            return;
+        }
+        for (int k = 0; k < 3; ++k)  // counts are sums: the order of the additions does not matter
+            __atomic_fetch_add(&adj.vertex_offset[static_cast<std::size_t>(t[k]) + 1], 1, __ATOMIC_RELAXED);
+    });
     for (std::size_t v = 0; v < nv; ++v) adj.vertex_offset[v + 1] += adj.vertex_offset[v];
+    // Triangles per vertex in ascending order: each chunk owns a range of vertices and
+    // places, in triangle order, the corners that fall into it.
     adj.vertex_triangles.resize(3 * nf);
-    {
-        std::vector<int> fill(adj.vertex_offset.begin(), adj.vertex_offset.end() - 1);
+    parallelChunks(nv, chunks, [&](int, std::size_t vb, std::size_t ve) {
+        std::vector<int> fill(adj.vertex_offset.begin() + static_cast<std::ptrdiff_t>(vb),
+                              adj.vertex_offset.begin() + static_cast<std::ptrdiff_t>(ve));
         for (std::size_t f = 0; f < nf; ++f)
-            for (int k = 0; k < 3; ++k)
-                adj.vertex_triangles[static_cast<std::size_t>(fill[static_cast<std::size_t>(m.triangles[f][k])]++)] =
-                    static_cast<int>(f);
-    }
+            for (int k = 0; k < 3; ++k) {
+                const std::size_t v = static_cast<std::size_t>(m.triangles[f][k]);
+                if (v >= vb && v < ve) adj.vertex_triangles[static_cast<std::size_t>(fill[v - vb]++)] = static_cast<int>(f);
+            }
+    });
     // Halfedge 3f+i runs a -> b; its opposite runs b -> a in a triangle around b.
+    // Fast path: the first such triangle in b's star, then a check that the pairing is
+    // consistent (every match mutual, no boundary halfedge with a twin running the same
+    // way). Any edge used other than once in each direction fails the check (all a -> b
+    // halfedges match the same first b -> a one), and then the full scan below runs and
+    // reports the first defect exactly as it always did.
     adj.opposite.assign(3 * nf, -1);
-    const int chunks = std::max(1, threads);
+    auto starOf = [&](int v, auto&& visit) {
+        for (int p = adj.vertex_offset[static_cast<std::size_t>(v)]; p < adj.vertex_offset[static_cast<std::size_t>(v) + 1]; ++p)
+            if (!visit(adj.vertex_triangles[static_cast<std::size_t>(p)])) return;
+    };
+    parallelChunks(nf, chunks, [&](int, std::size_t fb, std::size_t fe) {
+        for (std::size_t f = fb; f < fe; ++f)
+            for (int i = 0; i < 3; ++i) {
+                const int a = m.triangles[f][(i + 1) % 3], b = m.triangles[f][(i + 2) % 3];
+                int found = -1;
+                starOf(b, [&](int g) {
+                    if (g == static_cast<int>(f)) return true;
+                    const auto& tg = m.triangles[static_cast<std::size_t>(g)];
+                    const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;
+                    if (tg[(pb + 1) % 3] != a) return true;
+                    found = 3 * g + (pb + 2) % 3;
+                    return false;
+                });
+                adj.opposite[3 * f + static_cast<std::size_t>(i)] = found;
+            }
+    });
+    std::vector<char> consistent(static_cast<std::size_t>(chunks), 1);
+    parallelChunks(nf, chunks, [&](int chunk, std::size_t fb, std::size_t fe) {
+        bool ok = true;
+        for (std::size_t h = 3 * fb; h < 3 * fe && ok; ++h) {
+            const int o = adj.opposite[h];
+            if (o >= 0) {
+                ok = adj.opposite[static_cast<std::size_t>(o)] == static_cast<int>(h);
+                continue;
+            }
+            const std::size_t f = h / 3, i = h % 3;
+            const int a = m.triangles[f][(i + 1) % 3], b = m.triangles[f][(i + 2) % 3];
+            starOf(b, [&](int g) {  // a twin a -> b elsewhere?
+                if (g == static_cast<int>(f)) return true;
+                const auto& tg = m.triangles[static_cast<std::size_t>(g)];
+                const int pb = tg[0] == b ? 0 : tg[1] == b ? 1 : 2;
+                if (tg[(pb + 2) % 3] == a) ok = false;
+                return ok;
+            });
+        }
+        consistent[static_cast<std::size_t>(chunk)] = ok;
+    });
+    if (std::find(consistent.begin(), consistent.end(), 0) == consistent.end()) return adj;
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
     parallelChunks(nf, chunks, [&](int chunk, std::size_t fb, std::size_t fe) {
         for (std::size_t f = fb; f < fe && errors[static_cast<std::size_t>(chunk)].empty(); ++f)

@@ -21,7 +21,9 @@ struct QuadAssemblyStats {
 /// orbit @p labels. Vertex positions: the point of the vertex orbit's smallest dart,
 /// mapped from its triangle's parameter image to 3D by barycentric coordinates. Faces are
 /// numbered by their smallest dart and oriented counter-clockwise in parameter space.
+/// Runs on @p threads threads; the result does not depend on their number.
 QuadAssemblyStats assembleQuadMesh(const GMap<2>& g, const std::vector<TriDart>& darts, const QuadOrbitLabels& labels,
-                                   const ParametrizedTriMesh& mesh, const TriParams& params, QuadMesh& out);
+                                   const ParametrizedTriMesh& mesh, const TriParams& params, QuadMesh& out,
+                                   int threads = 1);
 
 } // namespace HexEx

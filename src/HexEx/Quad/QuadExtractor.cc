@@ -6,6 +6,7 @@
 #include "QuadAssembly.hh"
 #include "TriangleTracing.hh"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <string>
@@ -30,31 +31,59 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Preprocessing.
     const TriAdjacency adj = buildTriAdjacency(in, threads);
     const std::size_t nf = in.triangles.size();
+    const int chunks = std::max(1, threads);
     TriParams params(nf);
-    for (std::size_t f = 0; f < nf; ++f)
-        for (int k = 0; k < 3; ++k) {
-            const Vec2d& p = in.params[f][k];
-            if (std::fabs(p[0]) > kMaxParam || std::fabs(p[1]) > kMaxParam)
-                throw InputError("triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " +
-                                 std::to_string(k) + " is larger than 2^28 in magnitude");
-            params[f][k] = Vec3d(p[0], p[1], 0);
-        }
+    {
+        // Per chunk, its first bad parameter; the lowest chunk's is the sequential first.
+        std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+        parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+            for (std::size_t f = fb; f < fe; ++f)
+                for (int k = 0; k < 3; ++k) {
+                    const Vec2d& p = in.params[f][k];
+                    if (std::fabs(p[0]) > kMaxParam || std::fabs(p[1]) > kMaxParam) {
+                        errors[static_cast<std::size_t>(c)] = "triangle mesh: triangle " + std::to_string(f) +
+                                                              ": parameter of corner " + std::to_string(k) +
+                                                              " is larger than 2^28 in magnitude";
+                        return;
+                    }
+                    params[f][k] = Vec3d(p[0], p[1], 0);
+                }
+        });
+        for (const std::string& e : errors)
+            if (!e.empty()) throw InputError(e);
+    }
     const TriTransitions tr = computeTriTransitions(in, adj, params, opt.given_quarter_turns, threads);
     rep.input.snapped_coordinates = sanitizeTriParams(in, adj, params, tr, opt.epsilon, threads);
-    const std::vector<signed char> sign = classifyTriangles(params);
+    const std::vector<signed char> sign = classifyTriangles(params, threads);
     rep.input.vertices = static_cast<long>(in.points.size());
     rep.input.triangles = static_cast<long>(nf);
-    for (int o : adj.opposite)
-        if (o < 0) ++rep.input.boundary_edges;
+    // Counts and signed areas per triangle in parallel; the two area sums stay sequential
+    // (in triangle order), so they are rounded exactly as before for any thread count.
+    std::vector<double> triArea(nf);
+    std::vector<std::array<long, 3>> counts(static_cast<std::size_t>(chunks), {0, 0, 0});
+    parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+        auto& cnt = counts[static_cast<std::size_t>(c)];
+        for (std::size_t f = fb; f < fe; ++f) {
+            if (sign[f] < 0) ++cnt[0];
+            if (sign[f] == 0) ++cnt[1];
+            for (std::size_t h = 3 * f; h < 3 * f + 3; ++h)
+                if (adj.opposite[h] < 0) ++cnt[2];
+            const auto& p = params[f];
+            triArea[f] = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        }
+    });
+    for (const auto& cnt : counts) {
+        rep.input.flipped_triangles += cnt[0];
+        rep.input.degenerate_triangles += cnt[1];
+        rep.input.boundary_edges += cnt[2];
+    }
     double area = 0, unsignedArea = 0;
-    for (std::size_t f = 0; f < nf; ++f) {
-        if (sign[f] < 0) ++rep.input.flipped_triangles;
-        if (sign[f] == 0) ++rep.input.degenerate_triangles;
-        const auto& p = params[f];
-        const double a = 0.5 * ((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+    for (double a : triArea) {
         area += a;
         unsignedArea += std::fabs(a);
     }
+    triArea.clear();
+    triArea.shrink_to_fit();
     rep.input.parametric_area = area;
     rep.input.ambiguous_transitions = tr.ambiguous;
     rep.input.unresolved_transitions = tr.unresolved;
@@ -70,7 +99,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
 
     // Darts.
     t0 = Clock::now();
-    const TriDartSet ds = extractTriDarts(params, sign, 16.0 * opt.max_quads + 1e6, threads);
+    TriDartSet ds = extractTriDarts(params, sign, 16.0 * opt.max_quads + 1e6, threads);
     rep.darts.extracted = static_cast<long>(ds.darts.size());
     rep.darts.anti = ds.anti;
     rep.timings_s.darts = since(t0);
@@ -78,48 +107,97 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Connections.
     t0 = Clock::now();
     TriTraceStats ts;
-    std::vector<std::array<int, 4>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
+    std::vector<std::array<int, 3>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
     rep.darts.asymmetric_links = ts.asymmetric;
     rep.timings_s.connect = since(t0);
 
     // Annihilation (the 3D function: alpha_3 is free throughout) and the final map.
+    // Without anti darts there is nothing to annihilate (the function would find no pair),
+    // every dart survives and the traced links become the map's in place.
     t0 = Clock::now();
     const std::size_t n = ds.darts.size();
-    std::vector<char> alive(n, 1);
-    if (opt.merge) {
+    std::vector<char> alive;  // empty: every dart alive
+    if (opt.merge && ds.anti > 0) {
+        alive.assign(n, 1);
         std::vector<signed char> dsign(n);
-        for (std::size_t d = 0; d < n; ++d) dsign[d] = ds.darts[d].sign;
-        const AnnihilationStats as = annihilateDarts(links, dsign, alive);
+        std::vector<std::array<int, 4>> links4(n);
+        parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t d = b; d < e; ++d) {
+                dsign[d] = ds.darts[d].sign;
+                links4[d] = {links[d][0], links[d][1], links[d][2], static_cast<int>(d)};
+            }
+        });
+        const AnnihilationStats as = annihilateDarts(links4, dsign, alive);
+        parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t d = b; d < e; ++d) links[d] = {links4[d][0], links4[d][1], links4[d][2]};
+        });
         rep.darts.annihilated_pairs = as.pairs;
         rep.darts.remaining_anti = as.remaining_anti;
     } else {
-        rep.darts.remaining_anti = ds.anti;
+        rep.darts.remaining_anti = ds.anti;  // 0 when merging
     }
-    std::vector<int> newIndex(n, -1);
+    auto isAlive = [&](std::size_t d) { return alive.empty() || alive[d]; };
+    // Compaction of the surviving darts, in parallel: per-chunk counts give each chunk
+    // its first new index, so the numbering is the sequential one.
+    std::vector<std::size_t> base(static_cast<std::size_t>(chunks) + 1, 0);
+    if (!alive.empty())
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            std::size_t k = 0;
+            for (std::size_t d = b; d < e; ++d) k += alive[d] ? 1 : 0;
+            base[static_cast<std::size_t>(c) + 1] = k;
+        });
+    for (int c = 0; c < chunks; ++c) base[static_cast<std::size_t>(c) + 1] += base[static_cast<std::size_t>(c)];
+    const bool allAlive = alive.empty() || base.back() == n;  // then the numbering is the identity
+    std::vector<long> unconnected(static_cast<std::size_t>(chunks), 0);
     std::vector<TriDart> kept;
-    kept.reserve(n);
-    for (std::size_t d = 0; d < n; ++d)
-        if (alive[d]) {
-            newIndex[d] = static_cast<int>(kept.size());
-            kept.push_back(ds.darts[d]);
-        }
-    std::vector<std::array<int, 3>> glinks(kept.size());
-    for (std::size_t d = 0; d < n; ++d) {
-        if (!alive[d]) continue;
-        const int nd = newIndex[d];
-        for (int i = 0; i < 3; ++i) {
-            const int p = links[d][static_cast<std::size_t>(i)];
-            const int np = (p >= 0 && alive[static_cast<std::size_t>(p)]) ? newIndex[static_cast<std::size_t>(p)] : -1;
-            if (np < 0) {
-                if (p < 0 || !alive[static_cast<std::size_t>(p)]) ++rep.output.unconnected_darts;
-                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
-            } else {
-                glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+    std::vector<std::array<int, 3>> glinks;
+    if (allAlive) {
+        // Unconnected links (-1) become free ones, in place.
+        kept = std::move(ds.darts);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            long& u = unconnected[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d)
+                for (int& p : links[d])
+                    if (p < 0) {
+                        ++u;
+                        p = static_cast<int>(d);
+                    }
+        });
+        glinks = std::move(links);
+    } else {
+        const std::size_t nk = base.back();
+        std::vector<int> newIndex(n, -1);
+        kept.resize(nk);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            std::size_t k = base[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d)
+                if (alive[d]) {
+                    newIndex[d] = static_cast<int>(k);
+                    kept[k++] = ds.darts[d];
+                }
+        });
+        glinks.resize(nk);
+        parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
+            long& u = unconnected[static_cast<std::size_t>(c)];
+            for (std::size_t d = b; d < e; ++d) {
+                if (!alive[d]) continue;
+                const int nd = newIndex[d];
+                for (int i = 0; i < 3; ++i) {
+                    const int p = links[d][static_cast<std::size_t>(i)];
+                    const int np = (p >= 0 && isAlive(static_cast<std::size_t>(p))) ? newIndex[static_cast<std::size_t>(p)] : -1;
+                    if (np < 0) {
+                        if (p < 0 || !isAlive(static_cast<std::size_t>(p))) ++u;
+                        glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = nd;
+                    } else {
+                        glinks[static_cast<std::size_t>(nd)][static_cast<std::size_t>(i)] = np;
+                    }
+                }
             }
-        }
+        });
+        links.clear();
+        links.shrink_to_fit();
     }
-    links.clear();
-    links.shrink_to_fit();
+    for (long u : unconnected) rep.output.unconnected_darts += u;
     GMap<2> g;
     g.assign_links(std::move(glinks));
     rep.timings_s.postprocess = since(t0);
@@ -127,8 +205,8 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Validation and assembly.
     t0 = Clock::now();
     QuadOrbitLabels labels;
-    rep.validation = validateQuadGMap(g, &labels);
-    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out);
+    rep.validation = validateQuadGMap(g, &labels, threads);
+    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out, threads);
     rep.output.vertices = static_cast<long>(out.vertices.size());
     rep.output.quads = as.quads;
     rep.output.non_quad_faces = as.polygons;

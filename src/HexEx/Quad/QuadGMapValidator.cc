@@ -1,20 +1,27 @@
 #include "QuadGMapValidator.hh"
 
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
+#include <array>
 #include <sstream>
 
 namespace HexEx {
 
 namespace {
-/// Labels the orbits of two involutions (bits a and b) by search, smallest dart first.
-std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& size) {
+/// Labels the orbits of two links (bits a and b) by search, smallest dart first; works for
+/// any map, involutive or not. @p first receives the smallest dart of each orbit.
+std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& size, std::vector<int>& first) {
     const auto& L = g.links();
     const std::size_t n = L.size();
     std::vector<int> label(n, -1), stack;
     size.clear();
+    first.clear();
     for (std::size_t s = 0; s < n; ++s) {
         if (!g.is_alive(DartHandle(static_cast<int>(s))) || label[s] >= 0) continue;
         const int l = static_cast<int>(size.size());
         size.push_back(0);
+        first.push_back(static_cast<int>(s));
         label[s] = l;
         stack.assign(1, static_cast<int>(s));
         while (!stack.empty()) {
@@ -32,6 +39,92 @@ std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& siz
     }
     return label;
 }
+
+/// Labels, sizes and smallest darts of the orbits of one pair of involutions.
+struct PairLabels {
+    std::vector<int> label, size, first;
+};
+
+/// The generator pairs of the face, vertex and edge orbits.
+constexpr int kPairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
+
+/// labelPair() for the three pairs at once, for a map whose links are involutions on the
+/// alive darts (so an orbit is a cycle or a chain that alternates the two generators): in
+/// parallel, the same labels. Pass 1 marks each orbit's smallest dart (a walk that stops
+/// at the first smaller dart, started only where both neighbours are larger), then each
+/// chunk numbers its marked darts in dart order from its offset, and pass 2 walks each
+/// orbit once from its smallest dart and writes its label (orbits are disjoint, so the
+/// writes are too).
+void labelInvolutionOrbits(const GMap<2>& g, int threads, PairLabels out[3]) {
+    const auto& L = g.links();
+    const std::size_t n = L.size();
+    // Visits the orbit of d under pair q (d itself excluded), alternating the generators,
+    // in both directions of a chain; stops early when visit() returns false.
+    auto walk = [&](int q, int d, auto&& visit) {
+        for (int start = 0; start < 2; ++start) {
+            int x = d, k = start;
+            for (;;) {
+                const int y = L[static_cast<std::size_t>(x)][static_cast<std::size_t>(kPairs[q][k])];
+                if (y == x) break;  // end of a chain: walk the other way from d
+                if (y == d) return;  // cycle closed: everything seen
+                if (!visit(y)) return;
+                x = y;
+                k ^= 1;
+            }
+        }
+    };
+    std::vector<unsigned char> roots(n, 0);  // bit q: smallest dart of its pair-q orbit
+    const int chunks = std::max(1, threads);
+    std::vector<std::array<int, 3>> count(static_cast<std::size_t>(chunks), {0, 0, 0});
+    parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
+        auto& cnt = count[static_cast<std::size_t>(c)];
+        for (std::size_t s = bgn; s < end; ++s) {
+            const int d = static_cast<int>(s);
+            if (!g.is_alive(DartHandle(d))) continue;
+            unsigned char bits = 0;
+            for (int q = 0; q < 3; ++q) {
+                bool smallest = L[s][static_cast<std::size_t>(kPairs[q][0])] >= d && L[s][static_cast<std::size_t>(kPairs[q][1])] >= d;
+                if (smallest) walk(q, d, [&](int y) { return (smallest = y > d); });
+                if (smallest) {
+                    bits = static_cast<unsigned char>(bits | (1u << q));
+                    ++cnt[static_cast<std::size_t>(q)];
+                }
+            }
+            roots[s] = bits;
+        }
+    });
+    std::vector<std::array<int, 3>> base(static_cast<std::size_t>(chunks) + 1, {0, 0, 0});
+    for (int c = 0; c < chunks; ++c)
+        for (std::size_t q = 0; q < 3; ++q)
+            base[static_cast<std::size_t>(c) + 1][q] = base[static_cast<std::size_t>(c)][q] + count[static_cast<std::size_t>(c)][q];
+    for (std::size_t q = 0; q < 3; ++q) {
+        const std::size_t orbits = static_cast<std::size_t>(base.back()[q]);
+        out[q].size.assign(orbits, 0);
+        out[q].first.assign(orbits, 0);
+        out[q].label.assign(n, -1);
+    }
+    parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
+        std::array<int, 3> l = base[static_cast<std::size_t>(c)];
+        for (std::size_t s = bgn; s < end; ++s) {
+            if (!roots[s]) continue;
+            const int d = static_cast<int>(s);
+            for (int q = 0; q < 3; ++q) {
+                if (!(roots[s] & (1u << q))) continue;
+                PairLabels& P = out[q];
+                const int lq = l[static_cast<std::size_t>(q)]++;
+                P.label[s] = lq;
+                int sz = 1;
+                walk(q, d, [&](int y) {
+                    P.label[static_cast<std::size_t>(y)] = lq;
+                    ++sz;
+                    return true;
+                });
+                P.size[static_cast<std::size_t>(lq)] = sz;
+                P.first[static_cast<std::size_t>(lq)] = d;
+            }
+        }
+    });
+}
 } // namespace
 
 std::string QuadGMapValidation::summary() const {
@@ -42,45 +135,74 @@ std::string QuadGMapValidation::summary() const {
     return os.str();
 }
 
-QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels) {
-    QuadGMapValidation v;
+QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, int threads) {
     const auto& L = g.links();
     const std::size_t n = L.size();
     auto alive = [&](int d) { return d >= 0 && static_cast<std::size_t>(d) < n && g.is_alive(DartHandle(d)); };
-    for (std::size_t s = 0; s < n; ++s) {
-        const int d = static_cast<int>(s);
-        if (!alive(d)) continue;
-        ++v.darts;
-        bool inv = true;
-        for (int i = 0; i < 3; ++i) {
-            const int p = L[s][static_cast<std::size_t>(i)];
-            if (!alive(p) || L[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)] != d) inv = false;
+    const int chunks = std::max(1, threads);
+    std::vector<QuadGMapValidation> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
+        QuadGMapValidation& v = parts[static_cast<std::size_t>(c)];
+        for (std::size_t s = bgn; s < end; ++s) {
+            const int d = static_cast<int>(s);
+            if (!alive(d)) continue;
+            ++v.darts;
+            bool inv = true;
+            for (int i = 0; i < 3; ++i) {
+                const int p = L[s][static_cast<std::size_t>(i)];
+                if (!alive(p) || L[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)] != d) inv = false;
+            }
+            if (!inv) {
+                ++v.not_involution;
+                continue;
+            }
+            if (L[s][0] == d || L[s][1] == d) ++v.open_links;
+            if (L[s][2] == d) {
+                ++v.boundary_darts;
+            } else {
+                // (alpha_0 alpha_2)^2 = id: alpha_0 and alpha_2 commute.
+                const int x = L[static_cast<std::size_t>(L[s][0])][2];
+                const int y = L[static_cast<std::size_t>(L[s][2])][0];
+                if (x != y) ++v.eq1_edge_connection;
+            }
         }
-        if (!inv) {
-            ++v.not_involution;
-            continue;
-        }
-        if (L[s][0] == d || L[s][1] == d) ++v.open_links;
-        if (L[s][2] == d) {
-            ++v.boundary_darts;
-        } else {
-            // (alpha_0 alpha_2)^2 = id: alpha_0 and alpha_2 commute.
-            const int x = L[static_cast<std::size_t>(L[s][0])][2];
-            const int y = L[static_cast<std::size_t>(L[s][2])][0];
-            if (x != y) ++v.eq1_edge_connection;
+    });
+    QuadGMapValidation v;
+    for (const QuadGMapValidation& p : parts) {
+        v.darts += p.darts;
+        v.not_involution += p.not_involution;
+        v.open_links += p.open_links;
+        v.eq1_edge_connection += p.eq1_edge_connection;
+        v.boundary_darts += p.boundary_darts;
+    }
+    // Every alive dart's links are alive involutions: orbits are alternating cycles/chains.
+    PairLabels P[3];
+    if (v.not_involution == 0) {
+        labelInvolutionOrbits(g, threads, P);
+    } else {
+        for (int q = 0; q < 3; ++q) {
+            if (q > 0 && !labels) break;  // only the faces are needed for the checks
+            P[q].label = labelPair(g, kPairs[q][0], kPairs[q][1], P[q].size, P[q].first);
         }
     }
-    std::vector<int> fsize, vsize, esize;
-    std::vector<int> face = labelPair(g, 0, 1, fsize);
-    for (std::size_t s = 0; s < n; ++s)
-        if (face[s] >= 0 && fsize[static_cast<std::size_t>(face[s])] != 8) ++v.eq3_quad;
+    const std::vector<int>& face = P[0].label;
+    const std::vector<int>& fsize = P[0].size;
+    std::vector<long> eq3(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
+        for (std::size_t s = bgn; s < end; ++s)
+            if (face[s] >= 0 && fsize[static_cast<std::size_t>(face[s])] != 8) ++eq3[static_cast<std::size_t>(c)];
+    });
+    for (long e : eq3) v.eq3_quad += e;
     if (labels) {
-        labels->face = std::move(face);
-        labels->n_faces = static_cast<int>(fsize.size());
-        labels->vertex = labelPair(g, 1, 2, vsize);
-        labels->n_vertices = static_cast<int>(vsize.size());
-        labels->edge = labelPair(g, 0, 2, esize);
-        labels->n_edges = static_cast<int>(esize.size());
+        labels->n_faces = static_cast<int>(P[0].size.size());
+        labels->face = std::move(P[0].label);
+        labels->face_first = std::move(P[0].first);
+        labels->n_vertices = static_cast<int>(P[1].size.size());
+        labels->vertex = std::move(P[1].label);
+        labels->vertex_first = std::move(P[1].first);
+        labels->n_edges = static_cast<int>(P[2].size.size());
+        labels->edge = std::move(P[2].label);
+        labels->edge_first = std::move(P[2].first);
     }
     return v;
 }

@@ -25,17 +25,24 @@ struct QuadGMapValidation {
     std::string summary() const;
 };
 
-/// Orbit labels of a GMap<2>, numbered 0.. in order of their smallest dart (-1 for erased darts).
+/// Orbit labels of a GMap<2>, numbered 0.. in order of their smallest dart (-1 for erased
+/// darts). An orbit is the set of darts reachable by the two involutions (for a map whose
+/// links are not involutions: reachable from the smallest dart not yet labelled).
 struct QuadOrbitLabels {
     std::vector<int> face;    ///< <alpha_0, alpha_1> orbit per dart
     std::vector<int> vertex;  ///< <alpha_1, alpha_2> orbit per dart
     std::vector<int> edge;    ///< <alpha_0, alpha_2> orbit per dart
+    std::vector<int> face_first;    ///< smallest dart of each face orbit
+    std::vector<int> vertex_first;  ///< smallest dart of each vertex orbit
+    std::vector<int> edge_first;    ///< smallest dart of each edge orbit
     int n_faces = 0;          ///< number of face orbits
     int n_vertices = 0;       ///< number of vertex orbits
     int n_edges = 0;          ///< number of edge orbits
 };
 
-/// Checks every alive dart of @p g; fills @p labels if given. Linear time.
-QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels = nullptr);
+/// Checks every alive dart of @p g; fills @p labels if given. Linear time. With
+/// @p threads > 1 the checks and, when every link is an involution, the orbit labelling
+/// run in parallel; the result does not depend on @p threads.
+QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels = nullptr, int threads = 1);
 
 } // namespace HexEx

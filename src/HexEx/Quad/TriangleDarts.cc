@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
 #include "../Predicates/ExactPredicates.hh"
+#include "PlanarOrientation.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -57,25 +58,50 @@ bool ownsFrame(const int o[3], const int dirSign[3][4], AxisDir d1, AxisDir d2) 
 
 TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed char>& sign, double max_points, int threads) {
     const std::size_t nf = params.size();
-    // Guard: bounding-box grid points of all triangles.
-    double points = 0;
-    for (std::size_t f = 0; f < nf; ++f) {
-        if (!sign[f]) continue;
+    const int chunks = std::max(1, threads);
+    // Guard: bounding-box grid points of all triangles. The sum is taken per chunk; while
+    // it stays below 2^52 every partial sum is an exact integer, so it equals the
+    // sequential sum (otherwise that is recomputed). The chunks' unsigned parametric areas
+    // size their dart buffers (about 8 darts per unit of area).
+    auto boxPoints = [&](std::size_t f) {
         const auto& p = params[f];
         const double w = std::floor(std::max({p[0][0], p[1][0], p[2][0]})) - std::ceil(std::min({p[0][0], p[1][0], p[2][0]})) + 1;
         const double h = std::floor(std::max({p[0][1], p[1][1], p[2][1]})) - std::ceil(std::min({p[0][1], p[1][1], p[2][1]})) + 1;
-        if (w > 0 && h > 0) points += w * h;
+        return w > 0 && h > 0 ? w * h : 0.0;
+    };
+    std::vector<double> chunkPoints(static_cast<std::size_t>(chunks), 0), chunkArea(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(nf, chunks, [&](int k, std::size_t fb, std::size_t fe) {
+        double pts = 0, area = 0;
+        for (std::size_t f = fb; f < fe; ++f) {
+            if (!sign[f]) continue;
+            pts += boxPoints(f);
+            const auto& p = params[f];
+            area += std::fabs((p[1][0] - p[0][0]) * (p[2][1] - p[0][1]) - (p[1][1] - p[0][1]) * (p[2][0] - p[0][0]));
+        }
+        chunkPoints[static_cast<std::size_t>(k)] = pts;
+        chunkArea[static_cast<std::size_t>(k)] = 0.5 * area;
+    });
+    double points = 0;
+    for (double c : chunkPoints) points += c;
+    if (!(points <= 4503599627370496.0)) {  // 2^52
+        points = 0;
+        for (std::size_t f = 0; f < nf; ++f)
+            if (sign[f]) points += boxPoints(f);
     }
     if (!(points <= max_points))
         throw InputError("parameter map too large: the triangles' parameter images span " + std::to_string(points) +
                          " grid points (limit " + std::to_string(max_points) + ")");
-    const int chunks = std::max(1, threads);
     std::vector<std::vector<TriDart>> parts(static_cast<std::size_t>(chunks));
     std::vector<std::vector<int>> counts(static_cast<std::size_t>(chunks));
     parallelChunks(nf, chunks, [&](int k, std::size_t fb, std::size_t fe) {
         auto& out = parts[static_cast<std::size_t>(k)];
         auto& cnt = counts[static_cast<std::size_t>(k)];
         cnt.assign(fe - fb, 0);
+        // Chunk 0's buffer becomes the result: room for all darts (address space only
+        // until written), so only the other chunks' darts are copied.
+        double area = 0;
+        for (int c = k == 0 ? 0 : k; c < (k == 0 ? chunks : k + 1); ++c) area += chunkArea[static_cast<std::size_t>(c)];
+        out.reserve(static_cast<std::size_t>(std::min(8.5 * area, 8.0 * points)) + 64);
         for (std::size_t f = fb; f < fe; ++f) {
             const int s = sign[f];
             if (!s) continue;
@@ -87,15 +113,25 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
             const std::size_t before = out.size();
             for (int y = y0; y <= y1; ++y)
                 for (int x = x0; x <= x1; ++x) {
-                    const Vec3d z(x, y, 0);
+                    // o[i]: side of z to edge i (opposite corner i), times the orientation.
                     int o[3];
                     bool outside = false, inside = true;
-                    for (int i = 0; i < 3; ++i) {
-                        o[i] = s * orient2dAxis(p[(i + 1) % 3], p[(i + 2) % 3], z, 2);
-                        if (o[i] < 0) outside = true;
-                        if (o[i] == 0) inside = false;
+                    const int corner = p[0][0] == x && p[0][1] == y ? 0 : p[1][0] == x && p[1][1] == y ? 1
+                                     : p[2][0] == x && p[2][1] == y ? 2 : -1;
+                    if (corner >= 0) {
+                        // At a corner: on the two edges there, on the inner side of the third
+                        // (its orientation is the triangle's): what the predicate would say.
+                        o[corner] = 1;
+                        o[(corner + 1) % 3] = o[(corner + 2) % 3] = 0;
+                        inside = false;
+                    } else {
+                        for (int i = 0; i < 3 && !outside; ++i) {
+                            o[i] = s * orient2dUV(p[(i + 1) % 3], p[(i + 2) % 3], x, y);
+                            if (o[i] < 0) outside = true;
+                            if (o[i] == 0) inside = false;
+                        }
+                        if (outside) continue;
                     }
-                    if (outside) continue;
                     int dirSign[3][4] = {};
                     if (!inside)
                         for (int i = 0; i < 3; ++i)
@@ -124,19 +160,32 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
     std::size_t total = 0;
     for (const auto& part : parts) total += part.size();
     if (total > static_cast<std::size_t>(INT32_MAX / 2)) throw InputError("parameter map too large: too many darts");
-    ds.darts.reserve(total);
+    // Offsets and the concatenation, each chunk copying its own part.
     ds.offset.assign(nf + 1, 0);
-    std::size_t f = 0;
-    for (int k = 0; k < chunks; ++k) {
-        ds.darts.insert(ds.darts.end(), parts[static_cast<std::size_t>(k)].begin(), parts[static_cast<std::size_t>(k)].end());
+    std::vector<std::size_t> first(static_cast<std::size_t>(chunks) + 1, 0);
+    for (int k = 0; k < chunks; ++k)
+        first[static_cast<std::size_t>(k) + 1] = first[static_cast<std::size_t>(k)] + parts[static_cast<std::size_t>(k)].size();
+    const std::size_t n0 = parts[0].size();
+    ds.darts = std::move(parts[0]);
+    ds.darts.resize(total);
+    std::vector<long> anti(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(nf, chunks, [&](int k, std::size_t fb, std::size_t) {
+        auto& part = parts[static_cast<std::size_t>(k)];
+        if (k > 0)
+            std::copy(part.begin(), part.end(), ds.darts.begin() + static_cast<std::ptrdiff_t>(first[static_cast<std::size_t>(k)]));
+        int o = static_cast<int>(first[static_cast<std::size_t>(k)]);
+        std::size_t f = fb;
         for (int c : counts[static_cast<std::size_t>(k)]) {
-            ds.offset[f + 1] = ds.offset[f] + c;
-            ++f;
+            o += c;
+            ds.offset[++f] = o;
         }
-    }
-    for (; f < nf; ++f) ds.offset[f + 1] = ds.offset[f];
-    for (const TriDart& d : ds.darts)
-        if (d.sign < 0) ++ds.anti;
+        const auto b = ds.darts.begin() + static_cast<std::ptrdiff_t>(first[static_cast<std::size_t>(k)]);
+        const auto e = k > 0 ? b + static_cast<std::ptrdiff_t>(part.size()) : b + static_cast<std::ptrdiff_t>(n0);
+        for (auto d = b; d != e; ++d)
+            if (d->sign < 0) ++anti[static_cast<std::size_t>(k)];
+        std::vector<TriDart>().swap(part);
+    });
+    for (long a : anti) ds.anti += a;
     return ds;
 }
 

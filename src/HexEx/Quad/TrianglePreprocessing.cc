@@ -140,6 +140,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
     std::vector<long> ambiguous(static_cast<std::size_t>(chunks), 0);
     std::vector<char> isAmbiguous(given ? 0 : nh, 0);
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+    const Rotation quarter[4] = {planarRotation(0), planarRotation(1), planarRotation(2), planarRotation(3)};
     parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
             const int o = adj.opposite[h];
@@ -171,7 +172,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     // integer vector: keep the rotations for which it (nearly) is.
                     unsigned mask = 0;
                     for (int c = 0; c < 4; ++c) {
-                        const Vec3d d = w0 - planarRotation(c).apply(u0);
+                        const Vec3d d = w0 - quarter[c].apply(u0);
                         if (std::fabs(d[0] - std::round(d[0])) <= 1e-6 && std::fabs(d[1] - std::round(d[1])) <= 1e-6)
                             mask |= 1u << c;
                     }
@@ -188,7 +189,7 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     }
                 }
             }
-            const Rotation R = planarRotation(k);
+            const Rotation R = quarter[k];
             const Vec3d r0 = R.apply(u0), r1 = R.apply(u1);
             const Vec3i t(static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0])))),
                           static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1])))), 0);
@@ -201,6 +202,17 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
         if (!e.empty()) throw InputError(e);
     for (long a : ambiguous) tr.ambiguous += a;
     if (tr.ambiguous > 0) tr.unresolved = resolveByVertexConsistency(m, adj, params, tr, isAmbiguous);
+    tr.kind.resize(nh);
+    std::vector<char> planar(static_cast<std::size_t>(chunks), 1);
+    parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
+        for (std::size_t h = hb; h < he; ++h) {
+            const int q = planarQuarterTurns(tr.halfedge[h].R);
+            if (q < 0) planar[static_cast<std::size_t>(chunk)] = 0;
+            tr.kind[h] = static_cast<unsigned char>((q & 3) | (tr.halfedge[h].is_identity() ? 0 : TriTransitions::kNotIdentity));
+        }
+    });
+    for (char p : planar)
+        if (!p) tr.kind.clear();
     return tr;
 }
 
@@ -209,6 +221,10 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
     const std::size_t nv = m.points.size();
     const int chunks = std::max(1, threads);
     std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
+    const bool compact = tr.kind.size() == tr.halfedge.size();
+    auto isIdentity = [&](std::size_t h) {
+        return compact ? !(tr.kind[h] & TriTransitions::kNotIdentity) : tr.halfedge[h].is_identity();
+    };
     parallelChunks(nv, chunks, [&](int chunk, std::size_t vb, std::size_t ve) {
         int& snap = snapped[static_cast<std::size_t>(chunk)];
         std::vector<int> star;
@@ -226,8 +242,7 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
                 const int k = cornerOf(m, f, v);
                 if (!(params[static_cast<std::size_t>(f)][k] == first)) simple = false;
                 for (int j = 0; j < 3 && simple; ++j)
-                    if (j != k && !tr.halfedge[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j)].is_identity())
-                        simple = false;
+                    if (j != k && !isIdentity(3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j))) simple = false;
             }
             if (simple) {
                 Vec3d u = first;
@@ -274,10 +289,12 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
     return total;
 }
 
-std::vector<signed char> classifyTriangles(const TriParams& params) {
+std::vector<signed char> classifyTriangles(const TriParams& params, int threads) {
     std::vector<signed char> s(params.size());
-    for (std::size_t f = 0; f < params.size(); ++f)
-        s[f] = static_cast<signed char>(orient2dAxis(params[f][0], params[f][1], params[f][2], 2));
+    parallelChunks(params.size(), std::max(1, threads), [&](int, std::size_t fb, std::size_t fe) {
+        for (std::size_t f = fb; f < fe; ++f)
+            s[f] = static_cast<signed char>(orient2dAxis(params[f][0], params[f][1], params[f][2], 2));
+    });
     return s;
 }
 
@@ -285,13 +302,16 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                                 const std::vector<char>* unknown, int threads) {
     const std::size_t nv = m.points.size();
     std::vector<int> hol(nv, -1);
+    const bool compact = tr.kind.size() == tr.halfedge.size();
     parallelChunks(nv, std::max(1, threads), [&](int, std::size_t vb, std::size_t ve) {
     for (std::size_t vi = vb; vi < ve; ++vi) {
         if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
         const int v = static_cast<int>(vi);
         const int f0 = adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])];
         // Around the fan: leave each triangle through the edge at v it was not entered by.
+        // Planar rotations commute, so with the compact copy the quarter turns just add up.
         Rotation R;
+        int turns = 0;
         int f = f0, entry = -1, steps = 0;
         const int limit = adj.vertex_offset[vi + 1] - adj.vertex_offset[vi] + 1;
         bool ok = true;
@@ -304,11 +324,12 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                 ok = false;
                 break;
             }
-            if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
+            if (compact) turns += tr.kind[he] & 3;
+            else if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
             f = oe / 3;
             entry = oe % 3;
         } while (f != f0);
-        if (ok) hol[vi] = std::max(0, planarQuarterTurns(R));
+        if (ok) hol[vi] = compact ? turns % 4 : std::max(0, planarQuarterTurns(R));
     }
     });
     return hol;

@@ -18,6 +18,14 @@ using TriParams = std::vector<std::array<Vec3d, 3>>;
 /// The transition of every halfedge into the neighbouring triangle's chart.
 struct TriTransitions {
     std::vector<GridTransform> halfedge;  ///< per halfedge (identity on the boundary)
+    /// Compact copy of `halfedge` for the walks around vertices and across triangles (one
+    /// byte per halfedge instead of 16): the rotation's quarter turns in bits 0-1, bit 2 set
+    /// if the transition is not the identity (kNotIdentity). Filled by
+    /// computeTriTransitions(); empty (then `halfedge` is read) while transitions are being
+    /// resolved or if a rotation were not planar.
+    std::vector<unsigned char> kind;
+    /// Bit of `kind` marking a transition that is not the identity.
+    static constexpr unsigned char kNotIdentity = 4;
     long ambiguous = 0;   ///< interior edges of (nearly) zero parametric length, whose rotation the edge does not determine
     long unresolved = 0;  ///< of those, not resolvable by vertex consistency (best fit kept)
 };
@@ -40,8 +48,9 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
 long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, TriParams& params,
                        const TriTransitions& tr, double epsilon, int threads);
 
-/// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0 degenerate.
-std::vector<signed char> classifyTriangles(const TriParams& params);
+/// Orientation of every triangle's parameter image (exact): +1 proper, -1 flipped, 0
+/// degenerate. Triangles are independent: @p threads only changes the speed.
+std::vector<signed char> classifyTriangles(const TriParams& params, int threads = 1);
 
 /// Holonomy of every vertex: the rotation (0..3 counter-clockwise quarter turns) of the
 /// composed transitions once around its fan; non-zero marks a cone (valence 4 + k mod 4).

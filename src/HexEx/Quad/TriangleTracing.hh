@@ -19,11 +19,10 @@ struct TriTraceStats {
 };
 
 /// Traces alpha_0 .. alpha_2 of every dart of @p ds. Returns links[d] = {alpha_0, alpha_1,
-/// alpha_2, d}: a dart index, the dart itself for a free alpha_2 (the quad edge lies on the
-/// surface boundary), -1 for an unconnected link; the fourth entry is always d, so that
-/// the links fit annihilateDarts() (a 2D map is a 3D map whose alpha_3 is free).
-/// Only mutual links are kept. Runs in parallel; the result does not depend on @p threads.
-std::vector<std::array<int, 4>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
+/// alpha_2}: a dart index, the dart itself for a free alpha_2 (the quad edge lies on the
+/// surface boundary), -1 for an unconnected link. Only mutual links are kept. Runs in
+/// parallel; the result does not depend on @p threads.
+std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
                                                     const TriParams& params, const TriTransitions& tr,
                                                     const std::vector<signed char>& sign, const TriDartSet& ds,
                                                     int threads, TriTraceStats* stats = nullptr);
