@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <set>
 #include <utility>
 
 namespace HexEx {
@@ -282,10 +281,17 @@ bool traceEdgeArc(const TetMesh& mesh, const Transitions& tr, const std::vector<
 bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
                     const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
                     std::vector<std::array<int, 3>>& triangles, double& signed_area) {
+    PatchScratch scratch;
+    return traceFacePatch(mesh, tr, tets, starts, points, triangles, signed_area, scratch);
+}
+
+bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
+                    const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
+                    std::vector<std::array<int, 3>>& triangles, double& signed_area, PatchScratch& scratch) {
     signed_area = 0;
     // A visited (tet, square) is keyed by the square's smallest corner, its two axes and the
     // perturbation direction, so that starts at different corners of one square agree.
-    using Key = std::array<int, 7>;
+    using Key = PatchScratch::Key;
     auto key = [](int t, const Chart& c) {
         Vec3i lo = c.z;
         for (int k = 0; k < 2; ++k)
@@ -294,8 +300,10 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
         return Key{t, lo[0], lo[1], lo[2], std::min(a0, a1), std::max(a0, a1), c.d[2]};
     };
     // Visited squares: a short list searched linearly (floods are small), a set beyond.
-    std::vector<Key> few;
-    std::set<Key> many;
+    std::vector<Key>& few = scratch.few;
+    std::set<Key>& many = scratch.many;
+    few.clear();
+    many.clear();
     auto firstVisit = [&](const Key& k) {
         if (many.empty()) {
             for (const Key& x : few)  // the tet differs almost always: compare it first
@@ -306,20 +314,18 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
         }
         return many.insert(k).second;
     };
-    struct Item {
-        int tet, entry;  ///< tet and the local face it was entered through (-1 at a start)
-        Chart c;
-    };
-    std::vector<Item> queue;
+    using Item = PatchScratch::Item;
+    std::vector<Item>& queue = scratch.queue;
+    queue.clear();
     for (const ArcStart& st : starts) {
         if (st.tet < 0 || static_cast<std::size_t>(st.tet) >= tets.size()) continue;
         const Chart c{st.z, st.d};
-        if (firstVisit(key(st.tet, c))) queue.push_back({st.tet, -1, c});
+        if (firstVisit(key(st.tet, c))) queue.push_back({st.tet, -1, c.z, c.d});
     }
     for (std::size_t head = 0; head < queue.size(); ++head) {
         if (queue.size() > kMaxPatchTets) return false;
         const int t = queue[head].tet, entry = queue[head].entry;
-        const Chart c = queue[head].c;
+        const Chart c{queue[head].z, queue[head].d};
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
         Polygon poly = planeSection(T, c);
         clip(poly, true, 0, -1);
@@ -356,7 +362,7 @@ bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vecto
             if (!opp.is_valid()) continue;
             const Chart next = tr.halfface.is_identity(hf.uidx()) ? c : transformed(tr.halfface[hf.uidx()], c);
             const int nt = TetMesh::cell(opp).idx();
-            if (firstVisit(key(nt, next))) queue.push_back({nt, TetMesh::opposite_corner(opp), next});
+            if (firstVisit(key(nt, next))) queue.push_back({nt, TetMesh::opposite_corner(opp), next.z, next.d});
         }
     }
     return true;

@@ -10,6 +10,7 @@
 #include "TetSoS.hh"
 
 #include <array>
+#include <set>
 #include <vector>
 
 namespace HexEx {
@@ -51,5 +52,28 @@ bool traceEdgeArc(const TetMesh& mesh, const Transitions& tr, const std::vector<
 bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
                     const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
                     std::vector<std::array<int, 3>>& triangles, double& signed_area);
+
+/// Working memory of traceFacePatch(), kept by the caller across calls so that tracing many
+/// patches allocates nothing per patch. Its contents between calls are meaningless.
+struct PatchScratch {
+    /// A visited (tet, square): the tet, the square's smallest corner, its two axes and the
+    /// perturbation direction.
+    using Key = std::array<int, 7>;
+    /// A flood item: tet, the local face it was entered through (-1 at a start), and the
+    /// square's corner and frame in the tet's chart.
+    struct Item {
+        int tet, entry;
+        Vec3i z;
+        std::array<AxisDir, 3> d;
+    };
+    std::vector<Key> few;   ///< visited squares while there are few (searched linearly)
+    std::set<Key> many;     ///< visited squares beyond that
+    std::vector<Item> queue;  ///< the flood's queue
+};
+
+/// traceFacePatch() with caller-provided working memory (same result).
+bool traceFacePatch(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets,
+                    const std::vector<ArcStart>& starts, std::vector<Vec3d>& points,
+                    std::vector<std::array<int, 3>>& triangles, double& signed_area, PatchScratch& scratch);
 
 } // namespace HexEx

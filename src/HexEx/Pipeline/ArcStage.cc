@@ -1,6 +1,7 @@
 #include "ArcStage.hh"
 
 #include "../Core/Parallel.hh"
+#include "HexElementNumbering.hh"
 
 #include <algorithm>
 #include <cmath>
@@ -68,11 +69,18 @@ public:
             State todo[kCellDarts];
             int n = 0;
             todo[n++] = {(*in.hex_darts)[h], 0, {makeDir(0, 1), makeDir(1, 1), makeDir(2, 1)}};
-            auto seen = [&](int d) {
-                for (int k = 0; k < n; ++k)
-                    if (todo[k].dart == d) return true;
-                return false;
+            // Darts met so far: a small open-addressing set (a cell has at most 48 darts;
+            // a linear scan over them dominated the stage).
+            constexpr unsigned kSlots = 128;
+            int met[kSlots];
+            std::fill(met, met + kSlots, -1);
+            auto metSlot = [&](int d) -> int& {  // d's slot, or the empty one where it goes
+                unsigned i = (static_cast<unsigned>(d) * 2654435761u) >> 25;
+                while (met[i] != d && met[i] >= 0) i = (i + 1) & (kSlots - 1);
+                return met[i];
             };
+            auto seen = [&](int d) { return metSlot(d) == d; };
+            metSlot((*in.hex_darts)[h]) = (*in.hex_darts)[h];
             for (int k = 0; k < n; ++k) {
                 const State s = todo[k];
                 int& slot = table_[s.corner][s.d[0]][s.d[1]];
@@ -89,6 +97,7 @@ public:
                         std::swap(x.d[i - 1], x.d[i]);
                     }
                     todo[n++] = x;
+                    metSlot(x.dart) = x.dart;
                     prefetch(&L[static_cast<std::size_t>(x.dart)]);  // its links are read when it is popped
                 }
             }
@@ -171,63 +180,9 @@ HexArcs arcStage(const ArcInput& in) {
     HexArcs out;
     const auto& hexes = in.hexes->hexes;
     const std::size_t nh = hexes.size();
-    out.hex_edges.resize(nh);
-    out.hex_faces.resize(nh);
-    out.hex_face_sign.resize(nh);
     // Edge and face ids by first appearance; the first hex that has one traces it.
-    std::vector<std::pair<int, int>> edgeOwner, faceOwner;  // (hex, local index)
-    {
-        // Occurrences (hex * 12 + local edge) sorted by their vertex pair, then numbered.
-        struct Occ {
-            std::uint64_t k0, k1;  ///< sorted vertex ids, packed
-            int o;                 ///< occurrence: hex * n + local index
-            bool operator<(const Occ& x) const { return k0 != x.k0 ? k0 < x.k0 : k1 != x.k1 ? k1 < x.k1 : o < x.o; }
-        };
-        auto pack = [](int a, int b) { return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b); };
-        auto number = [&](std::vector<Occ>& occ, int per, std::vector<std::pair<int, int>>& owner, auto&& setId) {
-            std::sort(occ.begin(), occ.end());
-            std::vector<std::pair<int, std::size_t>> firsts;  // (first occurrence, start of its group)
-            for (std::size_t i = 0; i < occ.size(); ++i)
-                if (i == 0 || occ[i].k0 != occ[i - 1].k0 || occ[i].k1 != occ[i - 1].k1) firsts.emplace_back(occ[i].o, i);
-            std::sort(firsts.begin(), firsts.end());
-            owner.reserve(firsts.size());
-            for (std::size_t id = 0; id < firsts.size(); ++id) {
-                const int o0 = firsts[id].first;
-                owner.emplace_back(o0 / per, o0 % per);
-                for (std::size_t i = firsts[id].second;
-                     i < occ.size() && occ[i].k0 == occ[firsts[id].second].k0 && occ[i].k1 == occ[firsts[id].second].k1; ++i)
-                    setId(occ[i].o / per, occ[i].o % per, static_cast<int>(id), occ[i].o == o0);
-            }
-        };
-        std::vector<Occ> occ;
-        occ.reserve(12 * nh);
-        for (std::size_t h = 0; h < nh; ++h)
-            for (int k = 0; k < 12; ++k) {
-                const int a = hexes[h][static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = hexes[h][static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
-                occ.push_back({pack(std::min(a, b), std::max(a, b)), 0, static_cast<int>(12 * h) + k});
-            }
-        number(occ, 12, edgeOwner, [&](int h, int k, int id, bool) { out.hex_edges[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = id; });
-        out.edges.resize(edgeOwner.size());
-        for (std::size_t e = 0; e < edgeOwner.size(); ++e)
-            for (int q = 0; q < 2; ++q)
-                out.edges[e][static_cast<std::size_t>(q)] = hexes[static_cast<std::size_t>(edgeOwner[e].first)][static_cast<std::size_t>(HexArcs::kHexEdges[edgeOwner[e].second][q])];
-        occ.clear();
-        for (std::size_t h = 0; h < nh; ++h)
-            for (int k = 0; k < 6; ++k) {
-                std::array<int, 4> v;
-                for (int q = 0; q < 4; ++q) v[static_cast<std::size_t>(q)] = hexes[h][static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
-                std::sort(v.begin(), v.end());
-                occ.push_back({pack(v[0], v[1]), pack(v[2], v[3]), static_cast<int>(6 * h) + k});
-            }
-        number(occ, 6, faceOwner, [&](int h, int k, int id, bool first) {
-            out.hex_faces[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = id;
-            out.hex_face_sign[static_cast<std::size_t>(h)][static_cast<std::size_t>(k)] = first ? 1 : -1;
-        });
-        out.faces.resize(faceOwner.size());
-        for (std::size_t f = 0; f < faceOwner.size(); ++f)
-            for (int q = 0; q < 4; ++q)
-                out.faces[f][static_cast<std::size_t>(q)] = hexes[static_cast<std::size_t>(faceOwner[f].first)][static_cast<std::size_t>(HexArcs::kHexFaces[faceOwner[f].second][q])];
-    }
+    HexElementOwners edgeOwner, faceOwner;
+    numberHexEdgesAndFaces(*in.hexes, in.threads, out, edgeOwner, faceOwner);
     // Trace in parallel chunks of hexes; the edges and faces a chunk owns are consecutive ids.
     const int chunks = std::max(1, std::min(in.threads, static_cast<int>(nh / 64) + 1));
     std::vector<ChunkResult> parts(static_cast<std::size_t>(chunks));
@@ -237,6 +192,7 @@ HexArcs arcStage(const ArcInput& in) {
         const std::size_t f0 = std::lower_bound(faceOwner.begin(), faceOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - faceOwner.begin();
         std::size_t e = e0, f = f0;
         std::vector<ArcStart> from;  // reused per face
+        PatchScratch scratch;        // the floods' working memory, reused per face
         // Generous reservations (untouched pages cost nothing): no copies while growing.
         R.patch_points.reserve(64 * 6 * (he - hb));
         R.triangles.reserve(32 * 6 * (he - hb));
@@ -268,14 +224,14 @@ HexArcs arcStage(const ArcInput& in) {
                 from.assign(1, cornerStart(0));
                 const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
                 double area = 0;
-                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area) &&
+                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area, scratch) &&
                           std::abs(area - 1) <= kAreaTolerance;
                 if (!ok) {
                     // A fold may have cut the preimage into pieces: flood from all four corners.
                     for (int i = 1; i < 4; ++i) from.push_back(cornerStart(i));
                     R.patch_points.resize(pointsBefore);
                     R.triangles.resize(trisBefore);
-                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area) &&
+                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area, scratch) &&
                          std::abs(area - 1) <= kAreaTolerance;
                 }
                 if (!ok) {

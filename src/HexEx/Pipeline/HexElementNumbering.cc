@@ -1,0 +1,131 @@
+#include "HexElementNumbering.hh"
+
+#include "../Core/Parallel.hh"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+
+namespace HexEx {
+
+namespace {
+
+/// Sorted vertex set of an edge or face, packed for comparison (faces use both words).
+struct Key {
+    std::uint64_t k0, k1;
+    bool operator==(const Key& o) const { return k0 == o.k0 && k1 == o.k1; }
+};
+
+std::uint64_t pack(int a, int b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+/// Keys of the @p Per elements of every hex (occurrence o = hex * Per + local index), and
+/// for every occurrence the first occurrence with the same key. The first one is found by
+/// scanning, in hex order, the hexes at the element's smallest vertex: the first hex there
+/// that has the key holds it first.
+template <int Per, class KeyOf>
+std::vector<int> firstOccurrences(const HexMesh& hm, const std::vector<int>& vhexBegin, const std::vector<int>& vhex,
+                                  int threads, KeyOf&& keyOf) {
+    const std::size_t nh = hm.hexes.size();
+    std::vector<Key> keys(Per * nh);
+    std::vector<int> minVertex(Per * nh);
+    parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t h = b; h < e; ++h)
+            for (int k = 0; k < Per; ++k) keyOf(hm.hexes[h], k, keys[Per * h + static_cast<std::size_t>(k)], minVertex[Per * h + static_cast<std::size_t>(k)]);
+    });
+    std::vector<int> first(Per * nh);
+    parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t o = Per * b; o < Per * e; ++o) {
+            const Key& key = keys[o];
+            const std::size_t v = static_cast<std::size_t>(minVertex[o]);
+            int found = static_cast<int>(o);
+            for (int i = vhexBegin[v]; i < vhexBegin[v + 1] && found == static_cast<int>(o); ++i) {
+                const std::size_t h = static_cast<std::size_t>(vhex[static_cast<std::size_t>(i)]);
+                if (Per * h > o) break;  // only earlier occurrences can come first
+                for (int k = 0; k < Per; ++k)
+                    if (keys[Per * h + static_cast<std::size_t>(k)] == key) {
+                        found = static_cast<int>(Per * h) + k;
+                        break;
+                    }
+            }
+            first[o] = found;
+        }
+    });
+    return first;
+}
+
+/// Ids in order of first occurrence: owners get the next id, the others their owner's.
+/// Returns the owners; @p id receives the id of every occurrence.
+HexElementOwners numberOccurrences(const std::vector<int>& first, int per, std::vector<int>& id) {
+    HexElementOwners owners;
+    id.resize(first.size());
+    for (std::size_t o = 0; o < first.size(); ++o) {
+        if (first[o] == static_cast<int>(o)) {
+            id[o] = static_cast<int>(owners.size());
+            owners.emplace_back(static_cast<int>(o) / per, static_cast<int>(o) % per);
+        } else {
+            id[o] = id[static_cast<std::size_t>(first[o])];
+        }
+    }
+    return owners;
+}
+
+} // namespace
+
+void numberHexEdgesAndFaces(const HexMesh& hm, int threads, HexArcs& out, HexElementOwners& edge_owner,
+                            HexElementOwners& face_owner) {
+    const auto& hexes = hm.hexes;
+    const std::size_t nh = hexes.size();
+    // Hexes at each vertex, in hex order (a counting sort).
+    int maxVertex = -1;
+    for (const auto& h : hexes)
+        for (int v : h) maxVertex = std::max(maxVertex, v);
+    std::vector<int> vhexBegin(static_cast<std::size_t>(maxVertex) + 2, 0);
+    for (const auto& h : hexes)
+        for (int v : h) ++vhexBegin[static_cast<std::size_t>(v) + 1];
+    for (std::size_t v = 1; v < vhexBegin.size(); ++v) vhexBegin[v] += vhexBegin[v - 1];
+    std::vector<int> vhex(static_cast<std::size_t>(vhexBegin.back()));
+    {
+        std::vector<int> fill(vhexBegin.begin(), vhexBegin.end() - 1);
+        for (std::size_t h = 0; h < nh; ++h)
+            for (int v : hexes[h]) vhex[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(h);
+    }
+
+    std::vector<int> id;
+    const std::vector<int> firstEdge = firstOccurrences<12>(hm, vhexBegin, vhex, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
+        const int a = h[static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = h[static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
+        key = {pack(std::min(a, b), std::max(a, b)), 0};
+        minV = std::min(a, b);
+    });
+    edge_owner = numberOccurrences(firstEdge, 12, id);
+    out.hex_edges.resize(nh);
+    for (std::size_t h = 0; h < nh; ++h)
+        for (std::size_t k = 0; k < 12; ++k) out.hex_edges[h][k] = id[12 * h + k];
+    out.edges.resize(edge_owner.size());
+    for (std::size_t e = 0; e < edge_owner.size(); ++e)
+        for (std::size_t q = 0; q < 2; ++q)
+            out.edges[e][q] = hexes[static_cast<std::size_t>(edge_owner[e].first)][static_cast<std::size_t>(HexArcs::kHexEdges[edge_owner[e].second][q])];
+
+    const std::vector<int> firstFace = firstOccurrences<6>(hm, vhexBegin, vhex, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
+        std::array<int, 4> v;
+        for (std::size_t q = 0; q < 4; ++q) v[q] = h[static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
+        std::sort(v.begin(), v.end());
+        key = {pack(v[0], v[1]), pack(v[2], v[3])};
+        minV = v[0];
+    });
+    face_owner = numberOccurrences(firstFace, 6, id);
+    out.hex_faces.resize(nh);
+    out.hex_face_sign.resize(nh);
+    for (std::size_t h = 0; h < nh; ++h)
+        for (std::size_t k = 0; k < 6; ++k) {
+            out.hex_faces[h][k] = id[6 * h + k];
+            out.hex_face_sign[h][k] = firstFace[6 * h + k] == static_cast<int>(6 * h + k) ? 1 : -1;
+        }
+    out.faces.resize(face_owner.size());
+    for (std::size_t f = 0; f < face_owner.size(); ++f)
+        for (std::size_t q = 0; q < 4; ++q)
+            out.faces[f][q] = hexes[static_cast<std::size_t>(face_owner[f].first)][static_cast<std::size_t>(HexArcs::kHexFaces[face_owner[f].second][q])];
+}
+
+} // namespace HexEx
