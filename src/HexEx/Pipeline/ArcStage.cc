@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <cstdint>
+#include <mutex>
+#include <chrono>
+#include <cstdio>
 
 namespace HexEx {
 
@@ -158,14 +162,111 @@ private:
     AxisDir axis_[3] = {0, 2, 4};
 };
 
-/// Results of one chunk of hexes, in order.
-struct ChunkResult {
+/// Results of one block of hexes, in order: sizes per owned edge and face, and the points
+/// and triangles (triangle indices relative to the block's first patch point).
+struct BlockResult {
     std::vector<std::size_t> arc_size;  ///< points per owned edge (0 = failed)
     std::vector<Vec3d> arc_points;
     std::vector<std::size_t> patch_size;  ///< triangles per owned face (0 = failed)
-    std::vector<std::array<int, 3>> triangles;  ///< indices local to the chunk's points
+    std::vector<std::array<int, 3>> triangles;
     std::vector<Vec3d> patch_points;
+    bool done = false;  ///< traced, not yet appended to the output
+
+    void clear() {
+        arc_size.clear();
+        arc_points.clear();
+        patch_size.clear();
+        triangles.clear();
+        patch_points.clear();
+        done = false;
+    }
 };
+
+/// Working memory of one thread, reused for all its hexes.
+struct TraceScratch {
+    std::vector<ArcStart> from;  ///< starts of one face's flood
+    PatchScratch patch;          ///< the floods' working memory
+};
+
+/// Traces the edges and faces owned by hexes [hb, he) into @p R (appending). @p e and
+/// @p f are the first edge and face ids owned by a hex >= hb.
+void traceBlock(const ArcInput& in, const HexElementOwners& edgeOwner, const HexElementOwners& faceOwner,
+                std::size_t hb, std::size_t he, std::size_t e, std::size_t f, TraceScratch& S, BlockResult& R) {
+    for (std::size_t h = hb; h < he; ++h) {
+        if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
+            (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
+            continue;
+        const HexStarts starts(in, h);
+        for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
+            const int k = edgeOwner[e].second;
+            const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
+            const AxisDir d0 = localDir(ca, cb);
+            const int a1 = (dirAxis(d0) + 1) % 3, a2 = (dirAxis(d0) + 2) % 3;
+            ArcStart s = starts.at(ca, d0, inward(ca, a1), inward(ca, a2));
+            if (s.tet < 0) s = starts.at(ca, d0, inward(ca, a2), inward(ca, a1));
+            const std::size_t before = R.arc_points.size();
+            if (s.tet >= 0) traceEdgeArc(*in.mesh, *in.transitions, *in.tets, s, R.arc_points);
+            R.arc_size.push_back(R.arc_points.size() - before);
+        }
+        for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
+            const int k = faceOwner[f].second;
+            const int* q = HexArcs::kHexFaces[k];
+            auto cornerStart = [&](int i) {  // corner q[i], d0 to q[i+1], d1 to q[i-1]
+                const int c = q[i], n = q[(i + 1) % 4], p = q[(i + 3) % 4];
+                const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
+                return starts.at(c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1)));
+            };
+            S.from.assign(1, cornerStart(0));
+            const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
+            double area = 0;
+            bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, S.from, R.patch_points, R.triangles, area, S.patch) &&
+                      std::abs(area - 1) <= kAreaTolerance;
+            if (!ok) {
+                // A fold may have cut the preimage into pieces: flood from all four corners.
+                for (int i = 1; i < 4; ++i) S.from.push_back(cornerStart(i));
+                R.patch_points.resize(pointsBefore);
+                R.triangles.resize(trisBefore);
+                ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, S.from, R.patch_points, R.triangles, area, S.patch) &&
+                     std::abs(area - 1) <= kAreaTolerance;
+            }
+            if (!ok) {
+                R.patch_points.resize(pointsBefore);
+                R.triangles.resize(trisBefore);
+            }
+            R.patch_size.push_back(R.triangles.size() - trisBefore);
+        }
+    }
+}
+
+/// Reserves room for @p more elements in @p v, extrapolating the final size from the
+/// fraction @p done of the work (one or two reallocations instead of repeated doubling).
+template <class T>
+void reserveFor(std::vector<T>& v, std::size_t more, double done) {
+    const std::size_t need = v.size() + more;
+    if (need <= v.capacity()) return;
+    const double estimate = done > 0 ? static_cast<double>(need) / done * 1.05 : 0.0;
+    v.reserve(std::max({need, 2 * v.capacity(), static_cast<std::size_t>(estimate)}));
+}
+
+/// Appends block @p R (traced hexes up to @p hexesDone of @p nh) to the output.
+void append(BlockResult& R, std::size_t hexesDone, std::size_t nh, HexArcs& out) {
+    for (std::size_t k = 0; k < R.arc_size.size(); ++k) {
+        if (R.arc_size[k] == 0) out.failed_edges.push_back(static_cast<int>(out.arc_offset.size() - 1));
+        out.arc_offset.push_back(out.arc_offset.back() + R.arc_size[k]);
+    }
+    for (std::size_t k = 0; k < R.patch_size.size(); ++k) {
+        if (R.patch_size[k] == 0) out.failed_faces.push_back(static_cast<int>(out.patch_offset.size() - 1));
+        out.patch_offset.push_back(out.patch_offset.back() + R.patch_size[k]);
+    }
+    const double done = static_cast<double>(hexesDone) / static_cast<double>(std::max<std::size_t>(nh, 1));
+    reserveFor(out.arc_points, R.arc_points.size(), done);
+    reserveFor(out.patch_points, R.patch_points.size(), done);
+    reserveFor(out.patch_triangles, R.triangles.size(), done);
+    out.arc_points.insert(out.arc_points.end(), R.arc_points.begin(), R.arc_points.end());
+    const int base = static_cast<int>(out.patch_points.size());
+    for (const auto& t : R.triangles) out.patch_triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    out.patch_points.insert(out.patch_points.end(), R.patch_points.begin(), R.patch_points.end());
+}
 
 } // namespace
 
@@ -178,108 +279,84 @@ std::vector<int> mapDartOrigins(const std::vector<int>& new_index, int n_alive) 
 
 HexArcs arcStage(const ArcInput& in) {
     HexArcs out;
-    const auto& hexes = in.hexes->hexes;
-    const std::size_t nh = hexes.size();
+    const std::size_t nh = in.hexes->hexes.size();
     // Edge and face ids by first appearance; the first hex that has one traces it.
     HexElementOwners edgeOwner, faceOwner;
     numberHexEdgesAndFaces(*in.hexes, in.threads, out, edgeOwner, faceOwner);
-    // Trace in parallel chunks of hexes; the edges and faces a chunk owns are consecutive ids.
-    const int chunks = std::max(1, std::min(in.threads, static_cast<int>(nh / 64) + 1));
-    std::vector<ChunkResult> parts(static_cast<std::size_t>(chunks));
-    parallelChunks(nh, chunks, [&](int part, std::size_t hb, std::size_t he) {
-        ChunkResult& R = parts[static_cast<std::size_t>(part)];
-        const std::size_t e0 = std::lower_bound(edgeOwner.begin(), edgeOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - edgeOwner.begin();
-        const std::size_t f0 = std::lower_bound(faceOwner.begin(), faceOwner.end(), std::make_pair(static_cast<int>(hb), -1)) - faceOwner.begin();
-        std::size_t e = e0, f = f0;
-        std::vector<ArcStart> from;  // reused per face
-        PatchScratch scratch;        // the floods' working memory, reused per face
-        // Generous reservations (untouched pages cost nothing): no copies while growing.
-        R.patch_points.reserve(64 * 6 * (he - hb));
-        R.triangles.reserve(32 * 6 * (he - hb));
-        R.arc_points.reserve(8 * 12 * (he - hb));
-        for (std::size_t h = hb; h < he; ++h) {
-            if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
-                (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
-                continue;
-            const HexStarts starts(in, h);
-            for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
-                const int k = edgeOwner[e].second;
-                const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
-                const AxisDir d0 = localDir(ca, cb);
-                const int a1 = (dirAxis(d0) + 1) % 3, a2 = (dirAxis(d0) + 2) % 3;
-                ArcStart s = starts.at(ca, d0, inward(ca, a1), inward(ca, a2));
-                if (s.tet < 0) s = starts.at(ca, d0, inward(ca, a2), inward(ca, a1));
-                const std::size_t before = R.arc_points.size();
-                if (s.tet >= 0) traceEdgeArc(*in.mesh, *in.transitions, *in.tets, s, R.arc_points);
-                R.arc_size.push_back(R.arc_points.size() - before);
-            }
-            for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
-                const int k = faceOwner[f].second;
-                const int* q = HexArcs::kHexFaces[k];
-                auto cornerStart = [&](int i) {  // corner q[i], d0 to q[i+1], d1 to q[i-1]
-                    const int c = q[i], n = q[(i + 1) % 4], p = q[(i + 3) % 4];
-                    const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
-                    return starts.at(c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1)));
-                };
-                from.assign(1, cornerStart(0));
-                const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
-                double area = 0;
-                bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area, scratch) &&
-                          std::abs(area - 1) <= kAreaTolerance;
-                if (!ok) {
-                    // A fold may have cut the preimage into pieces: flood from all four corners.
-                    for (int i = 1; i < 4; ++i) from.push_back(cornerStart(i));
-                    R.patch_points.resize(pointsBefore);
-                    R.triangles.resize(trisBefore);
-                    ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, from, R.patch_points, R.triangles, area, scratch) &&
-                         std::abs(area - 1) <= kAreaTolerance;
-                }
-                if (!ok) {
-                    R.patch_points.resize(pointsBefore);
-                    R.triangles.resize(trisBefore);
-                }
-                R.patch_size.push_back(R.triangles.size() - trisBefore);
-            }
-        }
-    });
-
-    // Concatenate in chunk order (a single chunk is moved; otherwise each chunk is freed
-    // once copied, so the peak is the output plus one chunk).
-    std::size_t nArc = 0, nPatch = 0, nTri = 0;
-    for (const ChunkResult& R : parts) {
-        nArc += R.arc_points.size();
-        nPatch += R.patch_points.size();
-        nTri += R.triangles.size();
-    }
-    if (parts.size() == 1) {
-        out.arc_points = std::move(parts[0].arc_points);
-        out.patch_points = std::move(parts[0].patch_points);
-        out.patch_triangles = std::move(parts[0].triangles);
-    } else {
-        out.arc_points.reserve(nArc);
-        out.patch_points.reserve(nPatch);
-        out.patch_triangles.reserve(nTri);
-    }
     out.arc_offset.reserve(out.edges.size() + 1);
     out.patch_offset.reserve(out.faces.size() + 1);
     out.arc_offset.assign(1, 0);
     out.patch_offset.assign(1, 0);
-    for (ChunkResult& R : parts) {
-        for (std::size_t k = 0; k < R.arc_size.size(); ++k) {
-            if (R.arc_size[k] == 0) out.failed_edges.push_back(static_cast<int>(out.arc_offset.size() - 1));
-            out.arc_offset.push_back(out.arc_offset.back() + R.arc_size[k]);
+    // Blocks of hexes, handed out to the threads one at a time (the cost per hex varies a
+    // lot across a mesh) and appended to the output in block order as soon as all earlier
+    // blocks are: the output does not depend on the thread count, and only the blocks
+    // waiting for an earlier one are held twice.
+    constexpr std::size_t kBlockHexes = 256;
+    const std::size_t nBlocks = (nh + kBlockHexes - 1) / kBlockHexes;
+    auto firstOwned = [&](const HexElementOwners& owner, std::size_t hb) {
+        return static_cast<std::size_t>(std::lower_bound(owner.begin(), owner.end(), std::make_pair(static_cast<int>(hb), -1)) - owner.begin());
+    };
+    const int threads = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(static_cast<std::size_t>(in.threads), nBlocks)));
+    if (threads == 1) {
+        // One thread: trace straight into the output (triangle indices are then global).
+        BlockResult R;
+        R.arc_points.swap(out.arc_points);
+        R.patch_points.swap(out.patch_points);
+        R.triangles.swap(out.patch_triangles);
+        TraceScratch S;
+        for (std::size_t b = 0; b < nBlocks; ++b) {
+            const std::size_t hb = b * kBlockHexes, he = std::min(nh, hb + kBlockHexes);
+            R.arc_size.clear();
+            R.patch_size.clear();
+            const std::size_t arcs0 = R.arc_points.size(), points0 = R.patch_points.size(), tris0 = R.triangles.size();
+            traceBlock(in, edgeOwner, faceOwner, hb, he, firstOwned(edgeOwner, hb), firstOwned(faceOwner, hb), S, R);
+            // Room for the next blocks by extrapolation, before doubling would copy it all.
+            const double done = static_cast<double>(he) / static_cast<double>(nh);
+            reserveFor(R.arc_points, 2 * (R.arc_points.size() - arcs0), done);
+            reserveFor(R.patch_points, 2 * (R.patch_points.size() - points0), done);
+            reserveFor(R.triangles, 2 * (R.triangles.size() - tris0), done);
+            BlockResult sizes;  // only the sizes: the points are in place already
+            sizes.arc_size.swap(R.arc_size);
+            sizes.patch_size.swap(R.patch_size);
+            append(sizes, he, nh, out);
+            R.arc_size.swap(sizes.arc_size);
+            R.patch_size.swap(sizes.patch_size);
         }
-        for (std::size_t k = 0; k < R.patch_size.size(); ++k) {
-            if (R.patch_size[k] == 0) out.failed_faces.push_back(static_cast<int>(out.patch_offset.size() - 1));
-            out.patch_offset.push_back(out.patch_offset.back() + R.patch_size[k]);
-        }
-        if (parts.size() == 1) continue;
-        out.arc_points.insert(out.arc_points.end(), R.arc_points.begin(), R.arc_points.end());
-        const int base = static_cast<int>(out.patch_points.size());
-        for (auto t : R.triangles) out.patch_triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-        out.patch_points.insert(out.patch_points.end(), R.patch_points.begin(), R.patch_points.end());
-        R = ChunkResult();  // free the chunk
+        out.arc_points.swap(R.arc_points);
+        out.patch_points.swap(R.patch_points);
+        out.patch_triangles.swap(R.triangles);
+        return out;
     }
+    std::vector<BlockResult> blocks(nBlocks);
+    std::vector<BlockResult> spare;  // cleared buffers of appended blocks, for reuse
+    std::atomic<std::size_t> nextBlock{0};
+    std::mutex lock;  // guards blocks[].done, spare, nextAppend and the output
+    std::size_t nextAppend = 0;
+    parallelChunks(static_cast<std::size_t>(threads), threads, [&](int, std::size_t, std::size_t) {
+        TraceScratch S;
+        BlockResult R;
+        for (;;) {
+            const std::size_t b = nextBlock++;
+            if (b >= nBlocks) break;
+            const std::size_t hb = b * kBlockHexes, he = std::min(nh, hb + kBlockHexes);
+            traceBlock(in, edgeOwner, faceOwner, hb, he, firstOwned(edgeOwner, hb), firstOwned(faceOwner, hb), S, R);
+            const std::lock_guard<std::mutex> guard(lock);
+            R.done = true;
+            blocks[b].clear();
+            std::swap(blocks[b], R);
+            if (!spare.empty()) {
+                std::swap(R, spare.back());
+                spare.pop_back();
+            }
+            for (; nextAppend < nBlocks && blocks[nextAppend].done; ++nextAppend) {
+                BlockResult& A = blocks[nextAppend];
+                append(A, std::min(nh, (nextAppend + 1) * kBlockHexes), nh, out);
+                A.clear();
+                spare.emplace_back();
+                std::swap(spare.back(), A);
+            }
+        }
+    });
     return out;
 }
 
