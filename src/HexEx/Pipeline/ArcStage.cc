@@ -4,12 +4,10 @@
 #include "HexElementNumbering.hh"
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
 #include <mutex>
-#include <chrono>
-#include <cstdio>
 
 namespace HexEx {
 
@@ -61,51 +59,10 @@ public:
         const std::size_t nExplicit = in.hex_darts ? in.hex_darts->size() : 0;
         if (h < nExplicit) {
             explicit_ = true;
-            std::fill(&table_[0][0][0], &table_[0][0][0] + 8 * 6 * 6, -1);
-            // Local (corner, frame) of every dart of the cell, by a walk over alpha_0..alpha_2
-            // from the hex's dart at corner 0 with frame (+x, +y, +z).
-            struct State {
-                int dart, corner;
-                std::array<AxisDir, 3> d;
-            };
-            const auto& L = in.map->links();
-            constexpr int kCellDarts = 48;
-            State todo[kCellDarts];
-            int n = 0;
-            todo[n++] = {(*in.hex_darts)[h], 0, {makeDir(0, 1), makeDir(1, 1), makeDir(2, 1)}};
-            // Darts met so far: a small open-addressing set (a cell has at most 48 darts;
-            // a linear scan over them dominated the stage).
-            constexpr unsigned kSlots = 128;
-            int met[kSlots];
-            std::fill(met, met + kSlots, -1);
-            auto metSlot = [&](int d) -> int& {  // d's slot, or the empty one where it goes
-                unsigned i = (static_cast<unsigned>(d) * 2654435761u) >> 25;
-                while (met[i] != d && met[i] >= 0) i = (i + 1) & (kSlots - 1);
-                return met[i];
-            };
-            auto seen = [&](int d) { return metSlot(d) == d; };
-            metSlot((*in.hex_darts)[h]) = (*in.hex_darts)[h];
-            for (int k = 0; k < n; ++k) {
-                const State s = todo[k];
-                int& slot = table_[s.corner][s.d[0]][s.d[1]];
-                if (slot < 0) slot = s.dart;
-                for (int i = 0; i < 3 && n < kCellDarts; ++i) {
-                    State x = s;
-                    x.dart = L[static_cast<std::size_t>(s.dart)][i];
-                    if (x.dart < 0 || seen(x.dart)) continue;
-                    if (i == 0) {
-                        x.corner = cornerAlong(s.corner, s.d[0]);
-                        if (x.corner < 0) continue;
-                        x.d[0] = dirNeg(s.d[0]);
-                    } else {
-                        std::swap(x.d[i - 1], x.d[i]);
-                    }
-                    todo[n++] = x;
-                    metSlot(x.dart) = x.dart;
-                    prefetch(&L[static_cast<std::size_t>(x.dart)]);  // its links are read when it is popped
-                }
-            }
             in_ = &in;
+            std::fill(&table_[0][0][0], &table_[0][0][0] + 8 * 6 * 6, -1);
+            std::fill(met_, met_ + kSlots, -1);
+            push({(*in.hex_darts)[h], 0, {makeDir(0, 1), makeDir(1, 1), makeDir(2, 1)}});
             return;
         }
         // Implicit cell: all corners are occurrences in one tet, whose chart gives the frame.
@@ -121,9 +78,11 @@ public:
 
     /// The start at corner @p c with frame (d0, d1, d2) (local directions); tet -1 if the hex
     /// has no such dart.
-    ArcStart at(int c, AxisDir d0, AxisDir d1, AxisDir d2) const {
+    ArcStart at(int c, AxisDir d0, AxisDir d1, AxisDir d2) {
         ArcStart s;
         if (explicit_) {
+            // Walk on only as far as needed: most hexes need a few of their 48 darts.
+            while (table_[c][d0][d1] < 0 && popped_ < n_) expand(todo_[popped_++]);
             const int md = table_[c][d0][d1];
             if (md < 0) return s;
             const Dart& D = in_->darts->darts[static_cast<std::size_t>((*in_->map_dart_origin)[static_cast<std::size_t>(md)])];
@@ -140,6 +99,54 @@ public:
     }
 
 private:
+    // The darts of an explicit hex get their local (corner, frame) by a breadth-first walk
+    // over alpha_0..alpha_2 from the hex's dart at corner 0 with frame (+x, +y, +z); a state
+    // keeps the first dart that reaches it. The walk runs lazily (see at()): stopping
+    // early does not change what it has assigned, as the order of the walk is fixed.
+    struct State {
+        int dart, corner;
+        std::array<AxisDir, 3> d;
+    };
+    static constexpr int kCellDarts = 48;  ///< darts of a hex cell
+    static constexpr unsigned kSlots = 128;  ///< size of the set of darts met (power of 2)
+
+    /// Slot of dart @p d in the set of darts met, or the empty slot where it goes.
+    int& metSlot(int d) {
+        unsigned i = (static_cast<unsigned>(d) * 2654435761u) >> 25;
+        while (met_[i] != d && met_[i] >= 0) i = (i + 1) & (kSlots - 1);
+        return met_[i];
+    }
+
+    void push(const State& x) {
+        todo_[n_++] = x;
+        metSlot(x.dart) = x.dart;
+        int& slot = table_[x.corner][x.d[0]][x.d[1]];
+        if (slot < 0) slot = x.dart;
+        prefetch(&in_->map->links()[static_cast<std::size_t>(x.dart)]);  // its links are read when it is expanded
+    }
+
+    /// Queues the unmet darts linked to @p s by alpha_0, alpha_1, alpha_2.
+    void expand(const State& s) {
+        const auto& L = in_->map->links();
+        for (int i = 0; i < 3 && n_ < kCellDarts; ++i) {
+            State x = s;
+            x.dart = L[static_cast<std::size_t>(s.dart)][i];
+            if (x.dart < 0 || metSlot(x.dart) == x.dart) continue;
+            if (i == 0) {
+                x.corner = cornerAlong(s.corner, s.d[0]);
+                if (x.corner < 0) continue;
+                x.d[0] = dirNeg(s.d[0]);
+            } else {
+                std::swap(x.d[i - 1], x.d[i]);
+            }
+            push(x);
+        }
+    }
+
+    State todo_[kCellDarts];
+    int n_ = 0, popped_ = 0;
+    int met_[kSlots];
+
     /// Tet and grid point of an occurrence id (the dense index holding it).
     static void occurrence(const ArcInput& in, long occ, int& tet, Vec3i& z) {
         const auto& dense = in.darts->dense;
@@ -196,7 +203,7 @@ void traceBlock(const ArcInput& in, const HexElementOwners& edgeOwner, const Hex
         if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
             (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
             continue;
-        const HexStarts starts(in, h);
+        HexStarts starts(in, h);
         for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
             const int k = edgeOwner[e].second;
             const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
