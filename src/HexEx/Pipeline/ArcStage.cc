@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <mutex>
+#include <optional>
 
 namespace HexEx {
 
@@ -79,22 +80,33 @@ public:
     /// The start at corner @p c with frame (d0, d1, d2) (local directions); tet -1 if the hex
     /// has no such dart.
     ArcStart at(int c, AxisDir d0, AxisDir d1, AxisDir d2) {
+        if (explicit_) return fromMapDart(*in_, mapDart(c, d0, d1));
         ArcStart s;
-        if (explicit_) {
-            // Walk on only as far as needed: most hexes need a few of their 48 darts.
-            while (table_[c][d0][d1] < 0 && popped_ < n_) expand(todo_[popped_++]);
-            const int md = table_[c][d0][d1];
-            if (md < 0) return s;
-            const Dart& D = in_->darts->darts[static_cast<std::size_t>((*in_->map_dart_origin)[static_cast<std::size_t>(md)])];
-            s.tet = D.tet;
-            s.z = D.z;
-            s.d = D.d;
-            return s;
-        }
         auto img = [&](AxisDir d) { return dirSign(d) > 0 ? axis_[dirAxis(d)] : dirNeg(axis_[dirAxis(d)]); };
         s.tet = tet_;
         s.z = z_[c];
         s.d = {img(d0), img(d1), img(d2)};
+        return s;
+    }
+
+    /// True for a hex built from darts (else an implicit cell).
+    bool isExplicit() const { return explicit_; }
+
+    /// Explicit hex: the map dart at corner @p c with frame (d0, d1, ...), -1 if none.
+    int mapDart(int c, AxisDir d0, AxisDir d1) {
+        // Walk on only as far as needed: most hexes need a few of their 48 darts.
+        while (table_[c][d0][d1] < 0 && popped_ < n_) expand(todo_[popped_++]);
+        return table_[c][d0][d1];
+    }
+
+    /// The start given by map dart @p md (tet -1 if md < 0): its extracted dart.
+    static ArcStart fromMapDart(const ArcInput& in, int md) {
+        ArcStart s;
+        if (md < 0) return s;
+        const Dart& D = in.darts->darts[static_cast<std::size_t>((*in.map_dart_origin)[static_cast<std::size_t>(md)])];
+        s.tet = D.tet;
+        s.z = D.z;
+        s.d = D.d;
         return s;
     }
 
@@ -191,39 +203,92 @@ struct BlockResult {
 
 /// Working memory of one thread, reused for all its hexes.
 struct TraceScratch {
+    std::vector<int> startDarts;  ///< map darts of the first starts of a block's explicit hexes
     std::vector<ArcStart> from;  ///< starts of one face's flood
     PatchScratch patch;          ///< the floods' working memory
 };
 
-/// Traces the edges and faces owned by hexes [hb, he) into @p R (appending). @p e and
-/// @p f are the first edge and face ids owned by a hex >= hb.
+/// Local start of the arc of hex edge @p k: its first corner, the direction along it, and
+/// the two inward directions in the preferred (first) and the other order.
+struct EdgeStartState {
+    int corner;
+    AxisDir d0, d1, d2;
+};
+EdgeStartState edgeStartState(int k) {
+    const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
+    const AxisDir d0 = localDir(ca, cb);
+    const int a1 = (dirAxis(d0) + 1) % 3, a2 = (dirAxis(d0) + 2) % 3;
+    return {ca, d0, inward(ca, a1), inward(ca, a2)};
+}
+
+/// Local start of the patch of hex face @p k from its loop corner @p i: the corner, d0
+/// towards the next corner of the loop, d1 towards the previous one, d2 into the hex.
+EdgeStartState faceStartState(int k, int i) {
+    const int* q = HexArcs::kHexFaces[k];
+    const int c = q[i], n = q[(i + 1) % 4], p = q[(i + 3) % 4];
+    const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
+    return {c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1))};
+}
+
+/// Traces the edges and faces owned by hexes [hb, he) into @p R (appending). @p e0 and
+/// @p f0 are the first edge and face ids owned by a hex >= hb.
 void traceBlock(const ArcInput& in, const HexElementOwners& edgeOwner, const HexElementOwners& faceOwner,
-                std::size_t hb, std::size_t he, std::size_t e, std::size_t f, TraceScratch& S, BlockResult& R) {
-    for (std::size_t h = hb; h < he; ++h) {
-        if ((e >= edgeOwner.size() || edgeOwner[e].first != static_cast<int>(h)) &&
-            (f >= faceOwner.size() || faceOwner[f].first != static_cast<int>(h)))
-            continue;
+                std::size_t hb, std::size_t he, std::size_t e0, std::size_t f0, TraceScratch& S, BlockResult& R) {
+    const std::size_t nExplicit = in.hex_darts ? in.hex_darts->size() : 0;
+    auto owns = [&](std::size_t h, std::size_t e, std::size_t f) {
+        return (e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h)) ||
+               (f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h));
+    };
+    // Pass 1: the map darts the walks of the block's explicit hexes start from (the first
+    // choice of each edge, corner 0 of each face's loop). Their extracted darts are two
+    // dependent memory reads away: ask for all of them early (pass 2), use them in pass 3.
+    S.startDarts.clear();
+    std::size_t e = e0, f = f0;
+    for (std::size_t h = hb; h < he && h < nExplicit; ++h) {
+        if (!owns(h, e, f)) continue;
         HexStarts starts(in, h);
         for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
-            const int k = edgeOwner[e].second;
-            const int ca = HexArcs::kHexEdges[k][0], cb = HexArcs::kHexEdges[k][1];
-            const AxisDir d0 = localDir(ca, cb);
-            const int a1 = (dirAxis(d0) + 1) % 3, a2 = (dirAxis(d0) + 2) % 3;
-            ArcStart s = starts.at(ca, d0, inward(ca, a1), inward(ca, a2));
-            if (s.tet < 0) s = starts.at(ca, d0, inward(ca, a2), inward(ca, a1));
+            const EdgeStartState st = edgeStartState(edgeOwner[e].second);
+            S.startDarts.push_back(starts.mapDart(st.corner, st.d0, st.d1));
+        }
+        for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
+            const EdgeStartState st = faceStartState(faceOwner[f].second, 0);
+            S.startDarts.push_back(starts.mapDart(st.corner, st.d0, st.d1));
+        }
+        if (h + 1 < nExplicit) prefetch(&in.map->links()[static_cast<std::size_t>((*in.hex_darts)[h + 1])]);
+    }
+    for (int md : S.startDarts)
+        if (md >= 0) prefetch(&(*in.map_dart_origin)[static_cast<std::size_t>(md)]);
+    for (int md : S.startDarts)
+        if (md >= 0) prefetch(&in.darts->darts[static_cast<std::size_t>((*in.map_dart_origin)[static_cast<std::size_t>(md)])]);
+    // Pass 3: the walks.
+    std::size_t next = 0;  // next entry of S.startDarts
+    e = e0;
+    f = f0;
+    for (std::size_t h = hb; h < he; ++h) {
+        if (!owns(h, e, f)) continue;
+        const bool isExplicit = h < nExplicit;
+        // The hex's starts beyond those of pass 1 (implicit cells, fallbacks, retries).
+        std::optional<HexStarts> more;
+        auto starts = [&]() -> HexStarts& {
+            if (!more) more.emplace(in, h);
+            return *more;
+        };
+        for (; e < edgeOwner.size() && edgeOwner[e].first == static_cast<int>(h); ++e) {
+            const EdgeStartState st = edgeStartState(edgeOwner[e].second);
+            ArcStart s = isExplicit ? HexStarts::fromMapDart(in, S.startDarts[next++]) : starts().at(st.corner, st.d0, st.d1, st.d2);
+            if (s.tet < 0) s = starts().at(st.corner, st.d0, st.d2, st.d1);
             const std::size_t before = R.arc_points.size();
             if (s.tet >= 0) traceEdgeArc(*in.mesh, *in.transitions, *in.tets, s, R.arc_points);
             R.arc_size.push_back(R.arc_points.size() - before);
         }
         for (; f < faceOwner.size() && faceOwner[f].first == static_cast<int>(h); ++f) {
             const int k = faceOwner[f].second;
-            const int* q = HexArcs::kHexFaces[k];
-            auto cornerStart = [&](int i) {  // corner q[i], d0 to q[i+1], d1 to q[i-1]
-                const int c = q[i], n = q[(i + 1) % 4], p = q[(i + 3) % 4];
-                const AxisDir d0 = localDir(c, n), d1 = localDir(c, p);
-                return starts.at(c, d0, d1, inward(c, 3 - dirAxis(d0) - dirAxis(d1)));
+            auto cornerStart = [&](int i) {
+                const EdgeStartState st = faceStartState(k, i);
+                return starts().at(st.corner, st.d0, st.d1, st.d2);
             };
-            S.from.assign(1, cornerStart(0));
+            S.from.assign(1, isExplicit ? HexStarts::fromMapDart(in, S.startDarts[next++]) : cornerStart(0));
             const std::size_t pointsBefore = R.patch_points.size(), trisBefore = R.triangles.size();
             double area = 0;
             bool ok = traceFacePatch(*in.mesh, *in.transitions, *in.tets, S.from, R.patch_points, R.triangles, area, S.patch) &&
