@@ -133,6 +133,14 @@ struct PolyVertex {
 class Polygon {
 public:
     static constexpr std::size_t kMaxVertices = 8;
+    Polygon() = default;
+    // Copies move only the vertices in use (the polygons are copied in the flood's inner loop).
+    Polygon(const Polygon& o) : n_(o.n_) { std::copy(o.v_, o.v_ + n_, v_); }
+    Polygon& operator=(const Polygon& o) {
+        n_ = o.n_;
+        std::copy(o.v_, o.v_ + n_, v_);
+        return *this;
+    }
     std::size_t size() const { return n_; }
     bool empty() const { return n_ == 0; }
     PolyVertex& operator[](std::size_t k) { return v_[k]; }

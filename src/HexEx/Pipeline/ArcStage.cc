@@ -10,6 +10,10 @@
 #include <mutex>
 #include <optional>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
 namespace HexEx {
 
 namespace {
@@ -310,6 +314,21 @@ void traceBlock(const ArcInput& in, const HexElementOwners& edgeOwner, const Hex
     }
 }
 
+/// Lets the kernel back the untouched range [p, p + bytes) with huge pages where it can:
+/// the output is written once, front to back, and 4 KiB page faults would cost more than
+/// filling it (Linux only; elsewhere, and if refused, nothing changes).
+void adviseHugePages(const void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
+    const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
+    const std::uintptr_t e = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
+    if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
+#else
+    (void)p;
+    (void)bytes;
+#endif
+}
+
 /// Reserves room for @p more elements in @p v, extrapolating the final size from the
 /// fraction @p done of the work (one or two reallocations instead of repeated doubling).
 template <class T>
@@ -318,6 +337,7 @@ void reserveFor(std::vector<T>& v, std::size_t more, double done) {
     if (need <= v.capacity()) return;
     const double estimate = done > 0 ? static_cast<double>(need) / done * 1.05 : 0.0;
     v.reserve(std::max({need, 2 * v.capacity(), static_cast<std::size_t>(estimate)}));
+    adviseHugePages(v.data() + v.size(), (v.capacity() - v.size()) * sizeof(T));
 }
 
 /// Appends block @p R (traced hexes up to @p hexesDone of @p nh) to the output.
