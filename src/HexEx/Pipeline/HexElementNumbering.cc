@@ -55,19 +55,33 @@ std::vector<int> firstOccurrences(const HexMesh& hm, const std::vector<int>& vhe
     return first;
 }
 
-/// Ids in order of first occurrence: owners get the next id, the others their owner's.
-/// Returns the owners; @p id receives the id of every occurrence.
-HexElementOwners numberOccurrences(const std::vector<int>& first, int per, std::vector<int>& id) {
-    HexElementOwners owners;
-    id.resize(first.size());
-    for (std::size_t o = 0; o < first.size(); ++o) {
-        if (first[o] == static_cast<int>(o)) {
-            id[o] = static_cast<int>(owners.size());
-            owners.emplace_back(static_cast<int>(o) / per, static_cast<int>(o) % per);
-        } else {
-            id[o] = id[static_cast<std::size_t>(first[o])];
-        }
-    }
+/// Ids in order of first occurrence: owners (their own first occurrence) get the next id,
+/// the others their owner's; in parallel by a count of owners per chunk. Returns the
+/// owners; @p id receives the id of every occurrence.
+HexElementOwners numberOccurrences(const std::vector<int>& first, int per, int threads, std::vector<int>& id) {
+    const std::size_t n = first.size();
+    id.resize(n);
+    std::vector<std::size_t> count(static_cast<std::size_t>(threads) + 1, 0);
+    parallelChunks(n, threads, [&](int part, std::size_t b, std::size_t e) {
+        std::size_t c = 0;
+        for (std::size_t o = b; o < e; ++o) c += first[o] == static_cast<int>(o);
+        count[static_cast<std::size_t>(part) + 1] = c;
+    });
+    for (std::size_t k = 1; k < count.size(); ++k) count[k] += count[k - 1];
+    HexElementOwners owners(count.back());
+    parallelChunks(n, threads, [&](int part, std::size_t b, std::size_t e) {
+        std::size_t next = count[static_cast<std::size_t>(part)];
+        for (std::size_t o = b; o < e; ++o)
+            if (first[o] == static_cast<int>(o)) {
+                id[o] = static_cast<int>(next);
+                owners[next++] = {static_cast<int>(o) / per, static_cast<int>(o) % per};
+            }
+    });
+    // Owners come first, so every other occurrence's owner has its id now.
+    parallelChunks(n, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t o = b; o < e; ++o)
+            if (first[o] != static_cast<int>(o)) id[o] = id[static_cast<std::size_t>(first[o])];
+    });
     return owners;
 }
 
@@ -98,14 +112,18 @@ void numberHexEdgesAndFaces(const HexMesh& hm, int threads, HexArcs& out, HexEle
         key = {pack(std::min(a, b), std::max(a, b)), 0};
         minV = std::min(a, b);
     });
-    edge_owner = numberOccurrences(firstEdge, 12, id);
+    edge_owner = numberOccurrences(firstEdge, 12, threads, id);
     out.hex_edges.resize(nh);
-    for (std::size_t h = 0; h < nh; ++h)
-        for (std::size_t k = 0; k < 12; ++k) out.hex_edges[h][k] = id[12 * h + k];
     out.edges.resize(edge_owner.size());
-    for (std::size_t e = 0; e < edge_owner.size(); ++e)
-        for (std::size_t q = 0; q < 2; ++q)
-            out.edges[e][q] = hexes[static_cast<std::size_t>(edge_owner[e].first)][static_cast<std::size_t>(HexArcs::kHexEdges[edge_owner[e].second][q])];
+    parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t h = b; h < e; ++h)
+            for (std::size_t k = 0; k < 12; ++k) {
+                const int x = id[12 * h + k];
+                out.hex_edges[h][k] = x;
+                if (firstEdge[12 * h + k] == static_cast<int>(12 * h + k))
+                    for (std::size_t q = 0; q < 2; ++q) out.edges[static_cast<std::size_t>(x)][q] = hexes[h][static_cast<std::size_t>(HexArcs::kHexEdges[k][q])];
+            }
+    });
 
     const std::vector<int> firstFace = firstOccurrences<6>(hm, vhexBegin, vhex, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
         std::array<int, 4> v;
@@ -114,18 +132,21 @@ void numberHexEdgesAndFaces(const HexMesh& hm, int threads, HexArcs& out, HexEle
         key = {pack(v[0], v[1]), pack(v[2], v[3])};
         minV = v[0];
     });
-    face_owner = numberOccurrences(firstFace, 6, id);
+    face_owner = numberOccurrences(firstFace, 6, threads, id);
     out.hex_faces.resize(nh);
     out.hex_face_sign.resize(nh);
-    for (std::size_t h = 0; h < nh; ++h)
-        for (std::size_t k = 0; k < 6; ++k) {
-            out.hex_faces[h][k] = id[6 * h + k];
-            out.hex_face_sign[h][k] = firstFace[6 * h + k] == static_cast<int>(6 * h + k) ? 1 : -1;
-        }
     out.faces.resize(face_owner.size());
-    for (std::size_t f = 0; f < face_owner.size(); ++f)
-        for (std::size_t q = 0; q < 4; ++q)
-            out.faces[f][q] = hexes[static_cast<std::size_t>(face_owner[f].first)][static_cast<std::size_t>(HexArcs::kHexFaces[face_owner[f].second][q])];
+    parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t h = b; h < e; ++h)
+            for (std::size_t k = 0; k < 6; ++k) {
+                const int x = id[6 * h + k];
+                const bool owner = firstFace[6 * h + k] == static_cast<int>(6 * h + k);
+                out.hex_faces[h][k] = x;
+                out.hex_face_sign[h][k] = owner ? 1 : -1;
+                if (owner)
+                    for (std::size_t q = 0; q < 4; ++q) out.faces[static_cast<std::size_t>(x)][q] = hexes[h][static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
+            }
+    });
 }
 
 } // namespace HexEx
