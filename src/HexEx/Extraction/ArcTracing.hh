@@ -59,12 +59,12 @@ struct PatchScratch {
     /// A visited (tet, square): the tet, the square's smallest corner, its two axes and the
     /// perturbation direction.
     using Key = std::array<int, 7>;
-    /// A flood item: tet, the local face it was entered through (-1 at a start), and the
-    /// square's corner and frame in the tet's chart.
+    /// A flood item: a tet and the square in its chart.
     struct Item {
-        int tet, entry;
-        Vec3i z;
-        std::array<AxisDir, 3> d;
+        int tet;                  ///< the tet
+        int entry;                ///< local face it was entered through (-1 at a start)
+        Vec3i z;                  ///< the square's corner in the tet's chart
+        std::array<AxisDir, 3> d;  ///< the square's frame in the tet's chart
     };
     std::vector<Key> few;   ///< visited squares while there are few (searched linearly)
     std::set<Key> many;     ///< visited squares beyond that
