@@ -117,8 +117,9 @@ int main(int argc, char** argv) {
             extractHexMesh(c.pm, hm, opt);
             const std::uint64_t h = hashArcs(arcs);
             combined.add(h);
-            std::printf("%-36s threads %d  edges %7zu  faces %7zu  patch pts %9zu  failed %zu/%zu  hash %016llx\n",
-                        c.name.c_str(), t, arcs.edges.size(), arcs.faces.size(), arcs.patch_points.size(),
+            std::printf("%-36s threads %d  edges %7zu  faces %7zu  arc pts %8zu  patch pts %9zu  tris %9zu  failed %zu/%zu  hash %016llx\n",
+                        c.name.c_str(), t, arcs.edges.size(), arcs.faces.size(), arcs.arc_points.size(),
+                        arcs.patch_points.size(), arcs.patch_triangles.size(),
                         arcs.failed_edges.size(), arcs.failed_faces.size(), static_cast<unsigned long long>(h));
         }
     }
