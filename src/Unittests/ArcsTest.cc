@@ -287,13 +287,32 @@ TEST(Arcs, OffByDefaultAndSameMeshWhenOn) {
 }
 
 TEST(Arcs, SameArcsForAnyThreadCount) {
-    const ParametrizedTetMesh pm = generateCylinder(3, 3, 2, 2, 2);
-    const Extracted a = extractWithArcs(pm, 1), b = extractWithArcs(pm, 3);
-    EXPECT_EQ(a.arcs.edges, b.arcs.edges);
-    EXPECT_EQ(a.arcs.arc_offset, b.arcs.arc_offset);
-    EXPECT_EQ(a.arcs.arc_points, b.arcs.arc_points);
-    EXPECT_EQ(a.arcs.patch_triangles, b.arcs.patch_triangles);
-    EXPECT_EQ(a.arcs.patch_points, b.arcs.patch_points);
+    // The stage traces blocks of 256 hexes: the cubes have 1,728 and 512 hexes, so several
+    // threads take blocks and append them out of order of completion.
+    ParametrizedTetMesh charts = generateCube(6, 12);
+    applyRandomChartTransforms(charts, 5);
+    ParametrizedTetMesh folded = generateCube(8, 8);
+    perturbParameters(folded, 1.0, 1);
+    for (const ParametrizedTetMesh* pm : {&charts, &folded}) {
+        const Extracted a = extractWithArcs(*pm, 1);
+        ASSERT_GT(a.hm.hexes.size(), 2u * 256u - 1u);
+        for (int threads : {2, 3}) {
+            SCOPED_TRACE("threads " + std::to_string(threads));
+            const Extracted b = extractWithArcs(*pm, threads);
+            EXPECT_EQ(a.arcs.edges, b.arcs.edges);
+            EXPECT_EQ(a.arcs.faces, b.arcs.faces);
+            EXPECT_EQ(a.arcs.hex_edges, b.arcs.hex_edges);
+            EXPECT_EQ(a.arcs.hex_faces, b.arcs.hex_faces);
+            EXPECT_EQ(a.arcs.hex_face_sign, b.arcs.hex_face_sign);
+            EXPECT_EQ(a.arcs.arc_offset, b.arcs.arc_offset);
+            EXPECT_EQ(a.arcs.arc_points, b.arcs.arc_points);
+            EXPECT_EQ(a.arcs.patch_offset, b.arcs.patch_offset);
+            EXPECT_EQ(a.arcs.patch_triangles, b.arcs.patch_triangles);
+            EXPECT_EQ(a.arcs.patch_points, b.arcs.patch_points);
+            EXPECT_EQ(a.arcs.failed_edges, b.arcs.failed_edges);
+            EXPECT_EQ(a.arcs.failed_faces, b.arcs.failed_faces);
+        }
+    }
 }
 
 TEST(Arcs, VtuWritersWriteOneCellPerArcAndTriangle) {
