@@ -49,6 +49,20 @@ Vec3d mapBack(const TetMesh& mesh, int t, const double lam[4]) {
     return x;
 }
 
+/// True if grid point @p z lies in the closed bounding box of T's parameters. Outside it,
+/// some face plane separates z strictly from T, so the exact test T.contains() is false
+/// for any perturbation: this cheap test skips the four orientation predicates on most
+/// steps of an edge walk.
+bool inClosedBox(const TetSoS& T, const Vec3i& z) {
+    for (int k = 0; k < 3; ++k) {
+        const double x = z[k];
+        const double lo = std::min(std::min(T.p[0][k], T.p[1][k]), std::min(T.p[2][k], T.p[3][k]));
+        const double hi = std::max(std::max(T.p[0][k], T.p[1][k]), std::max(T.p[2][k], T.p[3][k]));
+        if (x < lo || x > hi) return false;
+    }
+    return true;
+}
+
 /// Position of grid point @p z of a non-degenerate tet, with exact zeros on its faces.
 Vec3d gridPoint(const TetMesh& mesh, const TetSoS& T, int t, const Vec3i& z) {
     const Vec3d x = toVec3d(z);
@@ -268,7 +282,7 @@ bool traceEdgeArc(const TetMesh& mesh, const Transitions& tr, const std::vector<
     int entry = -1;
     for (int step = 0; step < kMaxArcSteps; ++step) {
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
-        if (!swapped && T.vol == vol0 && T.contains(T.sides(toVec3d(to.z)), to.d[0], to.d[1], to.d[2])) {
+        if (!swapped && T.vol == vol0 && inClosedBox(T, to.z) && T.contains(T.sides(toVec3d(to.z)), to.d[0], to.d[1], to.d[2])) {
             points.push_back(gridPoint(mesh, T, t, to.z));
             return true;
         }
