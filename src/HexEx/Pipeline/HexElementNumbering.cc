@@ -10,7 +10,7 @@ namespace HexEx {
 
 namespace {
 
-/// Sorted vertex set of an edge or face, packed for comparison (faces use both words).
+/// Sorted vertex set of a face, packed for comparison (an edge's fits one word).
 struct Key {
     std::uint64_t k0, k1;
     bool operator==(const Key& o) const { return k0 == o.k0 && k1 == o.k1; }
@@ -20,37 +20,55 @@ std::uint64_t pack(int a, int b) {
     return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
-/// Keys of the @p Per elements of every hex (occurrence o = hex * Per + local index), and
-/// for every occurrence the first occurrence with the same key. The first one is found by
-/// scanning, in hex order, the hexes at the element's smallest vertex: the first hex there
-/// that has the key holds it first.
-template <int Per, class KeyOf>
-std::vector<int> firstOccurrences(const HexMesh& hm, const std::vector<int>& vhexBegin, const std::vector<int>& vhex,
-                                  int threads, KeyOf&& keyOf) {
-    const std::size_t nh = hm.hexes.size();
-    std::vector<Key> keys(Per * nh);
-    std::vector<int> minVertex(Per * nh);
+/// For every occurrence (o = hex * Per + local index) the first occurrence with the same
+/// vertex set. Occurrences are grouped by their smallest vertex, in occurrence order (a
+/// counting sort); within its group (a dozen entries) an occurrence's first one is the
+/// earliest entry with the same key.
+template <int Per, class K, class KeyOf>
+std::vector<int> firstOccurrences(const HexMesh& hm, std::size_t nVertices, int threads, KeyOf&& keyOf) {
+    const std::size_t nh = hm.hexes.size(), n = Per * nh;
+    std::vector<K> keys(n);
+    std::vector<int> minVertex(n);
     parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t h = b; h < e; ++h)
             for (int k = 0; k < Per; ++k) keyOf(hm.hexes[h], k, keys[Per * h + static_cast<std::size_t>(k)], minVertex[Per * h + static_cast<std::size_t>(k)]);
     });
-    std::vector<int> first(Per * nh);
-    parallelChunks(nh, threads, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t o = Per * b; o < Per * e; ++o) {
-            const Key& key = keys[o];
-            const std::size_t v = static_cast<std::size_t>(minVertex[o]);
-            int found = static_cast<int>(o);
-            for (int i = vhexBegin[v]; i < vhexBegin[v + 1] && found == static_cast<int>(o); ++i) {
-                const std::size_t h = static_cast<std::size_t>(vhex[static_cast<std::size_t>(i)]);
-                if (Per * h > o) break;  // only earlier occurrences can come first
-                for (int k = 0; k < Per; ++k)
-                    if (keys[Per * h + static_cast<std::size_t>(k)] == key) {
-                        found = static_cast<int>(Per * h) + k;
-                        break;
-                    }
-            }
-            first[o] = found;
+    // Counting sort by smallest vertex, stable, in parallel: each chunk counts its
+    // occurrences per vertex, then writes them after those of the earlier chunks.
+    const std::size_t chunks = static_cast<std::size_t>(std::max(1, std::min<int>(threads, static_cast<int>(std::max<std::size_t>(nh, 1)))));
+    std::vector<std::vector<int>> count(chunks, std::vector<int>(nVertices, 0));
+    parallelChunks(nh, static_cast<int>(chunks), [&](int part, std::size_t b, std::size_t e) {
+        std::vector<int>& c = count[static_cast<std::size_t>(part)];
+        for (std::size_t o = Per * b; o < Per * e; ++o) ++c[static_cast<std::size_t>(minVertex[o])];
+    });
+    std::vector<int> begin(nVertices + 1, 0);
+    for (std::size_t v = 0; v < nVertices; ++v) {
+        int at = begin[v];
+        for (std::size_t t = 0; t < chunks; ++t) {
+            const int c = count[t][v];
+            count[t][v] = at;  // now: where chunk t writes its first occurrence at v
+            at += c;
         }
+        begin[v + 1] = at;
+    }
+    std::vector<int> order(n);
+    std::vector<K> grouped(n);  // keys in group order, for a contiguous search
+    parallelChunks(nh, static_cast<int>(chunks), [&](int part, std::size_t b, std::size_t e) {
+        std::vector<int>& fill = count[static_cast<std::size_t>(part)];
+        for (std::size_t o = Per * b; o < Per * e; ++o) {
+            const int p = fill[static_cast<std::size_t>(minVertex[o])]++;
+            order[static_cast<std::size_t>(p)] = static_cast<int>(o);
+            grouped[static_cast<std::size_t>(p)] = keys[o];
+        }
+    });
+    std::vector<int> first(n);
+    parallelChunks(nVertices, threads, [&](int, std::size_t vb, std::size_t ve) {
+        for (std::size_t v = vb; v < ve; ++v)
+            for (int p = begin[v]; p < begin[v + 1]; ++p) {
+                int q = begin[v];
+                while (!(grouped[static_cast<std::size_t>(q)] == grouped[static_cast<std::size_t>(p)])) ++q;  // stops at p at the latest
+                first[static_cast<std::size_t>(order[static_cast<std::size_t>(p)])] = order[static_cast<std::size_t>(q)];
+            }
     });
     return first;
 }
@@ -91,25 +109,15 @@ void numberHexEdgesAndFaces(const HexMesh& hm, int threads, HexArcs& out, HexEle
                             HexElementOwners& face_owner) {
     const auto& hexes = hm.hexes;
     const std::size_t nh = hexes.size();
-    // Hexes at each vertex, in hex order (a counting sort).
     int maxVertex = -1;
     for (const auto& h : hexes)
         for (int v : h) maxVertex = std::max(maxVertex, v);
-    std::vector<int> vhexBegin(static_cast<std::size_t>(maxVertex) + 2, 0);
-    for (const auto& h : hexes)
-        for (int v : h) ++vhexBegin[static_cast<std::size_t>(v) + 1];
-    for (std::size_t v = 1; v < vhexBegin.size(); ++v) vhexBegin[v] += vhexBegin[v - 1];
-    std::vector<int> vhex(static_cast<std::size_t>(vhexBegin.back()));
-    {
-        std::vector<int> fill(vhexBegin.begin(), vhexBegin.end() - 1);
-        for (std::size_t h = 0; h < nh; ++h)
-            for (int v : hexes[h]) vhex[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(h);
-    }
+    const std::size_t nVertices = static_cast<std::size_t>(maxVertex + 1);
 
     std::vector<int> id;
-    const std::vector<int> firstEdge = firstOccurrences<12>(hm, vhexBegin, vhex, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
+    const std::vector<int> firstEdge = firstOccurrences<12, std::uint64_t>(hm, nVertices, threads, [](const std::array<int, 8>& h, int k, std::uint64_t& key, int& minV) {
         const int a = h[static_cast<std::size_t>(HexArcs::kHexEdges[k][0])], b = h[static_cast<std::size_t>(HexArcs::kHexEdges[k][1])];
-        key = {pack(std::min(a, b), std::max(a, b)), 0};
+        key = pack(std::min(a, b), std::max(a, b));
         minV = std::min(a, b);
     });
     edge_owner = numberOccurrences(firstEdge, 12, threads, id);
@@ -125,7 +133,7 @@ void numberHexEdgesAndFaces(const HexMesh& hm, int threads, HexArcs& out, HexEle
             }
     });
 
-    const std::vector<int> firstFace = firstOccurrences<6>(hm, vhexBegin, vhex, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
+    const std::vector<int> firstFace = firstOccurrences<6, Key>(hm, nVertices, threads, [](const std::array<int, 8>& h, int k, Key& key, int& minV) {
         std::array<int, 4> v;
         for (std::size_t q = 0; q < 4; ++q) v[q] = h[static_cast<std::size_t>(HexArcs::kHexFaces[k][q])];
         std::sort(v.begin(), v.end());

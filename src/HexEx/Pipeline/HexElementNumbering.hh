@@ -1,7 +1,7 @@
 #pragma once
 /// @file HexElementNumbering.hh
 /// Ids of the edges and faces of the hexes of a hex mesh by first appearance (the numbering
-/// of HexArcs), computed in parallel from the vertex-to-hex incidence.
+/// of HexArcs), computed in parallel by grouping the occurrences by their smallest vertex.
 
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexMesh.hh"
