@@ -174,11 +174,16 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.params = input.params;  // the working copy: sanitization changes it
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
     out.abs_volume = checkedAbsVolume(out.params, in.threads, out.cost.largest_input);
-    if (out.abs_volume > in.max_hexes)
+    // The volume limit is checked after the sanitization, which may repair corrupted corners
+    // (a typo's needle is gone then); transitions and sanitization cost time linear in the
+    // tets whatever the volume, and the range check above keeps their numbers bounded.
+    auto checkVolume = [&] {
+        if (out.abs_volume <= in.max_hexes) return;
         throw InputError("the map covers a parametric volume of " + std::to_string(out.abs_volume) +
                          " grid cells, more than the limit of " + std::to_string(in.max_hexes) +
                          " hexes (ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
                          "parametric images: " + largestImagesText(out.cost.largest_input));
+    };
     const std::vector<int>* given = in.given_rotations;
     if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
     if (given) checkGivenRotations(mesh, *given);
@@ -189,6 +194,11 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     so.epsilon = in.epsilon;
     so.threads = in.threads;
     const SanitizeStats ss = sanitizeParameters(mesh, out.params, out.transitions, so);
+    if (ss.repaired_corners > 0) {
+        std::vector<std::pair<int, double>> largestSanitized;
+        out.abs_volume = checkedAbsVolume(out.params, in.threads, largestSanitized);
+    }
+    checkVolume();
     out.stats.snapped_coordinates = ss.snapped_coordinates;
     out.stats.inconsistent_transitions = out.transitions.n_inconsistent;
     out.stats.repaired_corners = ss.repaired_corners;
