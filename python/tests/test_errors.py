@@ -159,3 +159,21 @@ def test_memory_budget_raises_memory_error():
         hexex.extract(*m, max_memory=1_000_000)
     with pytest.raises(ValueError, match=r"^max_memory must be >= 0, got -1$"):
         hexex.extract(*m, max_memory=-1)
+
+
+def test_corrupted_corner_is_repaired_and_reported():
+    m = hexex.generate_cube(3, 3)
+    clean = hexex.extract(*m)
+    counts = np.bincount(m.tets.ravel())
+    t, k = np.argwhere(m.tets == counts.argmax())[0]  # a corner of the vertex with the most tets
+    params = m.params.copy()
+    params[t, k, 1] = 1e4  # one typo
+    r = hexex.extract(m.points, m.tets, params)
+    assert len(r.hexes) == 27 and r.report["valid_all_hex"]
+    np.testing.assert_array_equal(r.points, clean.points)
+    np.testing.assert_array_equal(r.hexes, clean.hexes)
+    assert r.report["input"]["repaired_corners"] == 1
+    rep = r.report["input"]["repairs"][0]
+    assert (rep["tet"], rep["corner"], rep["vertex"]) == (t, k, counts.argmax())
+    assert rep["original"][1] == 1e4 and rep["repaired"][1] == m.params[t, k, 1]
+    assert any("corner parameter disagreed with the majority" in w for w in r.report["warnings"])

@@ -20,13 +20,16 @@ using namespace HexEx;
 
 namespace {
 
-/// Examples/data/sphere.hexex with parameter y of corner 2 of tet 10 set to @p value
-/// (a needle tet: one corrupted number); false if the file is absent.
-bool sphereWithBadParameter(double value, ParametrizedTetMesh& pm) {
+/// Examples/data/sphere.hexex with its interior vertex 40 moved by @p value along v in
+/// every tet: a genuine needle fold (all tets agree, nothing to repair); false if the file
+/// is absent.
+bool sphereWithNeedle(double value, ParametrizedTetMesh& pm) {
     const std::string path = "Examples/data/sphere.hexex";
     if (!std::ifstream(path)) return false;
     pm = readHexExFile(path);
-    pm.params[10][2][1] = value;
+    for (std::size_t c = 0; c < pm.params.size(); ++c)
+        for (int k = 0; k < 4; ++k)
+            if (pm.mesh.cell_vertex(CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += value;
     pm.mesh.build_adjacency();
     return true;
 }
@@ -115,25 +118,38 @@ TEST(MemoryBudget, EstimateDoesNotDependOnTheThreadCount) {
 
 TEST(MemoryBudget, RefusesTheNeedleAtOnceNamingTheTet) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(1e6, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
+    if (!sphereWithNeedle(1e6, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     ExtractionOptions opt;
     opt.threads = 2;
     opt.max_memory = 256ull << 20;
     const std::string msg = refusal(pm, opt);
     EXPECT_NE(msg.find("would need about"), std::string::npos) << msg;
     EXPECT_NE(msg.find("more than the budget of 256.0 MB"), std::string::npos) << msg;
-    EXPECT_NE(msg.find("largest parametric images in the input: tet 10 ("), std::string::npos) << msg;
+    // The named tet is one of the needle's: it has vertex 40.
+    const std::string key = "largest parametric images in the input: tet ";
+    const std::size_t at = msg.find(key);
+    ASSERT_NE(at, std::string::npos) << msg;
+    const int tet = std::stoi(msg.substr(at + key.size()));
+    bool hasNeedleVertex = false;
+    for (int k = 0; k < 4; ++k) hasNeedleVertex |= pm.mesh.cell_vertex(CellHandle(tet), k).idx() == 40;
+    EXPECT_TRUE(hasNeedleVertex) << msg;
     EXPECT_NE(msg.find("max_memory"), std::string::npos) << msg;
     EXPECT_NE(msg.find("--max-memory"), std::string::npos) << msg;
 }
 
 TEST(MemoryBudget, TheSameNeedleRunsWithinAnAmpleBudget) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(300, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
+    if (!sphereWithNeedle(300, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     ExtractionOptions opt;
     opt.threads = 2;
     opt.max_memory = 1ull << 30;
     EXPECT_EQ(refusal(pm, opt), "");
+    // The fold cancels: the clean sphere's mesh.
+    HexMesh hm;
+    const ExtractionReport rep = extractHexMesh(pm, hm, opt);
+    EXPECT_EQ(hm.hexes.size(), 216u);
+    EXPECT_EQ(hm.vertices.size(), 343u);
+    EXPECT_TRUE(rep.valid_all_hex);
 }
 
 TEST(MemoryBudget, DartCapStopsTheDartStage) {
@@ -171,7 +187,7 @@ TEST(MemoryBudget, BadAllocBecomesAResourceErrorNamingTheStage) {
 
 TEST(MemoryBudget, VolumeLimitNamesTheLargestImagesToo) {
     ParametrizedTetMesh pm;
-    if (!sphereWithBadParameter(1e8, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
+    if (!sphereWithNeedle(1e8, pm)) GTEST_SKIP() << "Examples/data/sphere.hexex not present";
     HexMesh hm;
     try {
         extractHexMesh(pm, hm);
@@ -179,7 +195,7 @@ TEST(MemoryBudget, VolumeLimitNamesTheLargestImagesToo) {
     } catch (const InputError& e) {
         const std::string msg = e.what();
         EXPECT_NE(msg.find("(ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
-                           "parametric images: tet 10 ("),
+                           "parametric images: tet "),
                   std::string::npos)
             << msg;
     }

@@ -98,6 +98,23 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("ambiguous_transitions", in.ambiguous_transitions);
             w.num("unresolved_transitions", in.unresolved_transitions);
             w.num("snapped_coordinates", in.snapped_coordinates);
+            w.num("inconsistent_transitions", in.inconsistent_transitions);
+            w.num("repaired_corners", in.repaired_corners);
+            if (!in.repairs.empty()) {
+                // Bounded: at most 32 entries, the first by vertex.
+                auto vec = [](const double* v) {
+                    return "[" + jsonNumber(v[0]) + ", " + jsonNumber(v[1]) + ", " + jsonNumber(v[2]) + "]";
+                };
+                std::string list = "[";
+                for (std::size_t k = 0; k < in.repairs.size(); ++k) {
+                    const auto& e = in.repairs[k];
+                    list += std::string(k ? "," : "") + "\n      {\"tet\": " + std::to_string(e.tet) +
+                            ", \"corner\": " + std::to_string(e.corner) + ", \"vertex\": " + std::to_string(e.vertex) +
+                            ", \"original\": " + vec(e.original) + ", \"repaired\": " + vec(e.repaired) + "}";
+                }
+                list += "\n    ]";
+                w.raw("repairs", list);
+            }
         }));
         top.raw("output", object(2, [&](ObjectWriter& w) {
             w.num("vertices", out.vertices);

@@ -15,7 +15,9 @@
 ///  "threads": N, "version": "x.y.z", ...}
 /// ```
 /// Extra keys: "input" also has "singular_vertices", "ambiguous_transitions",
-/// "unresolved_transitions", "snapped_coordinates"; "darts" has "remaining_anti" and
+/// "unresolved_transitions", "snapped_coordinates", "inconsistent_transitions",
+/// "repaired_corners" and, when corners were repaired, "repairs" (at most 32 entries
+/// {"tet", "corner", "vertex", "original", "repaired"}); "darts" has "remaining_anti" and
 /// "asymmetric_links"; top level has "validation" (the validator's counts, "valid" and
 /// "summary") and "warnings" (array of strings). Numbers are JSON numbers (doubles in
 /// shortest round-trip form); non-finite numbers are written as null.

@@ -9,6 +9,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace HexEx {
 
@@ -136,6 +138,28 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
     }
     stats.parametric_volume = volume6.value() / 6.0;
 }
+/// One line naming the replaced corners (the first three) and what to check.
+std::string repairWarning(const SanitizeStats& ss) {
+    auto vec = [](const Vec3d& v) {
+        std::ostringstream o;
+        o << std::setprecision(10) << '(' << v[0] << ' ' << v[1] << ' ' << v[2] << ')';
+        return o.str();
+    };
+    const bool one = ss.repaired_corners == 1;
+    std::string text = std::to_string(ss.repaired_corners) +
+                       (one ? " corner parameter disagreed with the majority of the tets at its vertex and was "
+                              "replaced by the majority value (a corrupted number in the input?):"
+                            : " corner parameters disagreed with the majority of the tets at their vertex and were "
+                              "replaced by the majority value (corrupted numbers in the input?):");
+    for (std::size_t k = 0; k < ss.repairs.size() && k < 3; ++k) {
+        const CornerRepair& r = ss.repairs[k];
+        text += (k ? "; " : " ") + std::string("tet ") + std::to_string(r.tet) + " corner " +
+                std::to_string(r.corner) + " (vertex " + std::to_string(r.vertex) + ") " + vec(r.original) + " -> " +
+                vec(r.repaired);
+    }
+    if (ss.repaired_corners > 3) text += "; ...";
+    return text;
+}
 } // namespace
 
 PreprocessOutput preprocess(const PreprocessInput& in) {
@@ -150,11 +174,16 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.params = input.params;  // the working copy: sanitization changes it
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
     out.abs_volume = checkedAbsVolume(out.params, in.threads, out.cost.largest_input);
-    if (out.abs_volume > in.max_hexes)
+    // The volume limit is checked after the sanitization, which may repair corrupted corners
+    // (a typo's needle is gone then); transitions and sanitization cost time linear in the
+    // tets whatever the volume, and the range check above keeps their numbers bounded.
+    auto checkVolume = [&] {
+        if (out.abs_volume <= in.max_hexes) return;
         throw InputError("the map covers a parametric volume of " + std::to_string(out.abs_volume) +
                          " grid cells, more than the limit of " + std::to_string(in.max_hexes) +
                          " hexes (ExtractionOptions::max_hexes); is the parameter scale right? The tets with the largest "
                          "parametric images: " + largestImagesText(out.cost.largest_input));
+    };
     const std::vector<int>* given = in.given_rotations;
     if (!given) given = mesh.halfface_props().find<int>(kGivenRotationProperty);
     if (given) checkGivenRotations(mesh, *given);
@@ -164,12 +193,36 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     SanitizeOptions so;
     so.epsilon = in.epsilon;
     so.threads = in.threads;
-    out.stats.snapped_coordinates = sanitizeParameters(mesh, out.params, out.transitions, so).snapped_coordinates;
+    const SanitizeStats ss = sanitizeParameters(mesh, out.params, out.transitions, so);
+    if (ss.repaired_corners > 0) {
+        std::vector<std::pair<int, double>> largestSanitized;
+        out.abs_volume = checkedAbsVolume(out.params, in.threads, largestSanitized);
+    }
+    checkVolume();
+    out.stats.snapped_coordinates = ss.snapped_coordinates;
+    out.stats.inconsistent_transitions = out.transitions.n_inconsistent;
+    out.stats.repaired_corners = ss.repaired_corners;
+    for (const CornerRepair& r : ss.repairs) {
+        ExtractionReport::Input::RepairedCorner e;
+        e.tet = r.tet;
+        e.corner = r.corner;
+        e.vertex = r.vertex;
+        for (int k = 0; k < 3; ++k) {
+            e.original[k] = r.original[k];
+            e.repaired[k] = r.repaired[k];
+        }
+        out.stats.repairs.push_back(e);
+    }
     const Singularities sing = findSingularities(mesh, out.params, out.transitions, in.threads);
     out.stats.singular_edges = static_cast<long>(sing.edges.size());
     out.stats.singular_vertices = static_cast<long>(sing.vertices.size());
     out.tets = buildTetSoS(out.params, in.threads);
     classify(out.tets, in.threads, out.stats, out.cost);
+    if (ss.repaired_corners > 0) out.warnings.push_back(repairWarning(ss));
+    else if (out.transitions.n_inconsistent > 0)
+        out.warnings.push_back(std::to_string(out.transitions.n_inconsistent) +
+                               " interior faces have a corner whose parameter disagrees with the other two (the map "
+                               "is not continuous there); their transitions were fitted to the two that agree");
     if (out.transitions.n_unresolved > 0)
         out.warnings.push_back(std::to_string(out.transitions.n_unresolved) +
                                " transitions on degenerate faces could not be resolved from their neighbours");

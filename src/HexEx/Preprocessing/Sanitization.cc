@@ -54,6 +54,49 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     }
     return true;
 }
+/// True if two values of a vertex (in one chart) are the same up to @p epsilon, relative
+/// to their magnitude once above 1.
+bool sameValue(const Vec3d& a, const Vec3d& b, double epsilon) {
+    for (int k = 0; k < 3; ++k) {
+        const double tol = epsilon * std::max({1.0, std::fabs(a[k]), std::fabs(b[k])});
+        if (!(std::fabs(a[k] - b[k]) <= tol)) return false;
+    }
+    return true;
+}
+
+/// Which star entry's value seeds the vertex: entry 0 (the first tet's) unless the values
+/// (mapped into the reference chart through @p toChart) disagree and a strict majority of
+/// the star's tets share one value: then the first entry holding it. Fills @p ref with the
+/// mapped values, and @p agrees (per entry: agrees with the chosen value) only in the
+/// majority case, i.e. when there is something to repair; else it is left empty.
+/// Consistent stars cost one pass.
+template <class Corner>
+std::size_t voteSeed(const std::vector<int>& star, const std::vector<GridTransform>& toChart, Corner&& corner,
+                     double epsilon, std::vector<Vec3d>& ref, std::vector<char>& agrees) {
+    const std::size_t n = star.size();
+    agrees.clear();
+    ref.resize(n);
+    ref[0] = corner(star[0]);
+    bool all = true;
+    for (std::size_t q = 1; q < n; ++q) {
+        ref[q] = toChart[q].inverse().apply(corner(star[q]));
+        all = all && sameValue(ref[0], ref[q], epsilon);
+    }
+    if (all) return 0;
+    std::size_t best = 0, bestCount = 0;
+    for (std::size_t q = 0; q < n; ++q) {
+        std::size_t count = 0;
+        for (std::size_t r = 0; r < n; ++r) count += sameValue(ref[q], ref[r], epsilon) ? 1 : 0;
+        if (count > bestCount) {
+            bestCount = count;
+            best = q;
+        }
+    }
+    if (2 * bestCount <= n) return 0;  // no strict majority: nothing to vote on (noise, not a typo)
+    agrees.resize(n);
+    for (std::size_t q = 0; q < n; ++q) agrees[q] = sameValue(ref[best], ref[q], epsilon) ? 1 : 0;
+    return best;
+}
 } // namespace
 
 SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, const Transitions& tr,
@@ -62,11 +105,14 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     // Every vertex writes only its own corners, so vertices are processed in parallel chunks.
     const int chunks = std::max(1, opt.threads);
     std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
+    std::vector<std::vector<CornerRepair>> repaired(static_cast<std::size_t>(chunks));
     parallelChunks(mesh.n_vertices(), chunks, [&](int chunk, std::size_t vbegin, std::size_t vend) {
     std::vector<int> star;                 // cells around the vertex, BFS order
     std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
     // mark[c] == v: cell c already in the star of vertex v (O(1) instead of a search).
     std::vector<int> mark(mesh.n_cells(), -1);
+    std::vector<Vec3d> ref;                // the star's values in the reference chart (vote)
+    std::vector<char> agrees;              // per star entry: agrees with the voted value
     for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
         auto cells = mesh.vertex_cells(v);
@@ -95,12 +141,27 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
             while (cv[k] != v) ++k;
             return params[static_cast<std::size_t>(c)][k];
         };
+        // The seed: the first tet's value, unless most tets of the star agree on another one
+        // (a corrupted corner must not spread over the whole star).
+        const std::size_t seed = voteSeed(star, toChart, corner, opt.epsilon, ref, agrees);
+        Vec3d u = seed == 0 ? corner(star[0]) : ref[seed];
+        if (!agrees.empty()) {
+            auto& list = repaired[static_cast<std::size_t>(chunk)];
+            for (std::size_t q = 0; q < star.size(); ++q) {
+                if (agrees[q]) continue;
+                const auto& cv = mesh.cell_vertices(CellHandle(star[q]));
+                int k = 0;
+                while (cv[k] != v) ++k;
+                list.push_back({star[q], k, static_cast<int>(vi), corner(star[q]), Vec3d()});
+            }
+        }
         // Largest magnitude the parameter reaches in any chart (raw values, plus the
-        // propagated ones' bound), so that truncation leaves every chart exact.
-        Vec3d u = corner(star[0]);
+        // propagated ones' bound), so that truncation leaves every chart exact. Repaired
+        // corners' raw values do not count: they are overwritten.
         double bound = 0;
         const double umax = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])});
         for (std::size_t q = 0; q < star.size(); ++q) {
+            if (!agrees.empty() && !agrees[q]) continue;
             const Vec3d& p = corner(star[q]);
             const Vec3i& t = toChart[q].t;
             bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]),
@@ -108,9 +169,21 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         }
         quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
         for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
+        if (!agrees.empty()) {
+            auto& list = repaired[static_cast<std::size_t>(chunk)];
+            for (auto it = list.end() - static_cast<std::ptrdiff_t>(std::count(agrees.begin(), agrees.end(), 0));
+                 it != list.end(); ++it)
+                it->repaired = params[static_cast<std::size_t>(it->tet)][it->corner];
+        }
     }
     });
     for (int n : snapped) stats.snapped_coordinates += n;
+    for (const auto& part : repaired) {
+        stats.repaired_corners += static_cast<long>(part.size());
+        stats.repairs.insert(stats.repairs.end(), part.begin(), part.end());
+    }
+    // Chunks are in vertex order, so the list is too, for any thread count.
+    if (stats.repairs.size() > SanitizeStats::kMaxListed) stats.repairs.resize(SanitizeStats::kMaxListed);
     return stats;
 }
 

@@ -17,9 +17,22 @@ struct SanitizeOptions {
     int threads = 1;
 };
 
+/// One corner parameter that disagreed with the other tets at its vertex and was replaced.
+struct CornerRepair {
+    int tet = 0;       ///< the tet
+    int corner = 0;    ///< its local corner (0..3)
+    int vertex = 0;    ///< the mesh vertex at that corner
+    Vec3d original;    ///< the parameter as given
+    Vec3d repaired;    ///< the parameter after sanitization
+};
+
 /// What the sanitization changed.
 struct SanitizeStats {
-    int snapped_coordinates = 0;  ///< coordinates moved onto an integer
+    /// At most this many repairs are listed in @ref repairs.
+    static constexpr std::size_t kMaxListed = 32;
+    int snapped_coordinates = 0;      ///< coordinates moved onto an integer
+    long repaired_corners = 0;        ///< corner parameters outvoted by the other tets at their vertex
+    std::vector<CornerRepair> repairs;  ///< the first kMaxListed of them, by vertex
 };
 
 /// Rounds every coordinate of @p u to a multiple of the quantum for magnitude @p bound
@@ -32,6 +45,13 @@ void quantizeParameter(Vec3d& u, double bound, double epsilon, int& snapped);
 /// precision that survives every chart of the vertex (the largest exponent over all its
 /// charts), snaps coordinates within epsilon of an integer, and propagates it through the
 /// transitions (breadth first over faces around the vertex) into every incident tet.
+///
+/// Majority vote: if the vertex's values (mapped into one chart) do not all agree, the
+/// value shared by a strict majority of its tets is taken instead of the first tet's
+/// (ties: the first tet's, as without the vote). "Agree" means equal up to epsilon per
+/// coordinate, relative once the magnitude is above 1. Corners that disagree with the
+/// majority value are counted and listed as repairs: one corrupted number (a
+/// typo) is overwritten instead of spreading to the whole star as a fold.
 SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, const Transitions& tr,
                                  const SanitizeOptions& opt = {});
 

@@ -67,6 +67,100 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
     return f;
 }
 
+/// Per-corner translations w_k - R u_k under rotation @p R.
+void cornerResiduals(const Vec3d u[3], const Vec3d w[3], const Rotation& R, Vec3d d[3]) {
+    for (int k = 0; k < 3; ++k) d[k] = w[k] - R.apply(u[k]);
+}
+
+/// Largest coordinate difference.
+double maxDiff(const Vec3d& a, const Vec3d& b) {
+    return std::max({std::fabs(a[0] - b[0]), std::fabs(a[1] - b[1]), std::fabs(a[2] - b[2])});
+}
+
+/// True if all three residuals round to the same integer vector (every consistent map).
+bool residualsAgree(const Vec3d d[3]) {
+    const Vec3i r0 = roundVec(d[0]);
+    return r0 == roundVec(d[1]) && r0 == roundVec(d[2]);
+}
+
+/// Two corners agree on the translation if their residuals differ by at most this many
+/// grid units; a third corner is an outlier if it is more than kOutlierDistance away from
+/// them. Noise in a map moves all three residuals a little; a corrupted number moves one a
+/// lot, which is what these thresholds tell apart.
+constexpr double kPairTolerance = 0.05;
+constexpr double kOutlierDistance = 0.5;
+
+/// The pair of corners (as the index of the third, the outlier) that agree while the third
+/// is far off, and the pair's difference; -1 if there is no such pair.
+int outlierCorner(const Vec3d d[3], double& pairError) {
+    int best = -1;
+    pairError = std::numeric_limits<double>::max();
+    for (int o = 0; o < 3; ++o) {
+        const Vec3d& a = d[(o + 1) % 3];
+        const Vec3d& b = d[(o + 2) % 3];
+        const double e = maxDiff(a, b);
+        if (e > kPairTolerance || e >= pairError) continue;
+        const Vec3d mid = (a + b) * 0.5;
+        if (maxDiff(d[o], mid) <= kOutlierDistance) continue;
+        best = o;
+        pairError = e;
+    }
+    return best;
+}
+
+/// The translation of a face under rotation @p R: the rounded mean of the three corners'
+/// residuals (today's rule, kept whenever the corners agree), or, when one corner is an
+/// outlier (a corrupted parameter), the rounded mean of the two that agree.
+Vec3i faceTranslation(const Vec3d u[3], const Vec3d w[3], const Rotation& R) {
+    Vec3d d[3];
+    cornerResiduals(u, w, R, d);
+    double e = 0;
+    const int o = residualsAgree(d) ? -1 : outlierCorner(d, e);
+    if (o < 0) return roundVec((d[0] + d[1] + d[2]) / 3.0);
+    return roundVec((d[(o + 1) % 3] + d[(o + 2) % 3]) / 2.0);
+}
+
+/// Fit by consensus for a face whose corners do not agree under the least-squares
+/// rotation: the rotations under which two corners agree closely while the third is an
+/// outlier, the best-agreeing first. A single clean edge may be fitted by several rotations
+/// (an axis-aligned edge); they become candidates for the edge-consistency resolution like
+/// a degenerate face's. Returns false if no rotation shows such an outlier (noise rather
+/// than a corrupted corner); the least-squares fit is kept then.
+bool consensusFit(const Vec3d u[3], const Vec3d w[3], FaceFit& f) {
+    double err[24];
+    double minErr = std::numeric_limits<double>::max();
+    int best = -1;
+    for (int r = 0; r < 24; ++r) {
+        Vec3d d[3];
+        cornerResiduals(u, w, Rotation(r), d);
+        err[r] = std::numeric_limits<double>::max();
+        if (outlierCorner(d, err[r]) < 0) continue;
+        if (err[r] < minErr) {
+            minErr = err[r];
+            best = r;
+        }
+    }
+    if (best < 0) return false;
+    f.best = best;
+    f.candidates = 0;
+    const double tol = 1e-9 + 4 * std::numeric_limits<double>::epsilon() * (1 + minErr);
+    for (int r = 0; r < 24; ++r)
+        if (err[r] <= minErr + tol) f.candidates |= 1u << r;
+    f.ambiguous = (f.candidates & (f.candidates - 1)) != 0;
+    return true;
+}
+
+/// True if the corners agree on the translation under some candidate rotation of @p f.
+bool cornersAgree(const Vec3d u[3], const Vec3d w[3], const FaceFit& f) {
+    for (int r = 0; r < 24; ++r) {
+        if (!(f.candidates & (1u << r))) continue;
+        Vec3d d[3];
+        cornerResiduals(u, w, Rotation(r), d);
+        if (residualsAgree(d)) return true;
+    }
+    return false;
+}
+
 } // namespace
 
 void HalffaceTransitions::reset(std::size_t n) {
@@ -141,13 +235,13 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);
         const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
         const Rotation R(rot);
-        Vec3d acc(0, 0, 0);
+        Vec3d u[3], w[3];
         for (int k = 0; k < 3; ++k) {
             const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
-            const int l2 = localIndex(mesh, c2, mesh.cell_vertex(c, lc));
-            acc += params[c2.uidx()][l2] - R.apply(params[c.uidx()][lc]);
+            u[k] = params[c.uidx()][lc];
+            w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
         }
-        const GridTransform g(R, roundVec(acc / 3.0));
+        const GridTransform g(R, faceTranslation(u, w, R));
         const GridTransform gi = g.inverse();
         if (translations) {
             out.halfface.set_rotation_only(h, g.R);
@@ -167,6 +261,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     // that halfface and its opposite only, so chunks never touch the same entries.
     const int chunks = std::max(1, threads);
     std::vector<int> ambiguous(static_cast<std::size_t>(chunks), 0);
+    std::vector<int> inconsistent(static_cast<std::size_t>(chunks), 0);
     std::vector<std::vector<std::pair<std::size_t, FaceFit>>> ambiguousFits(static_cast<std::size_t>(chunks));
     std::vector<std::vector<std::pair<int, Vec3i>>> translations(static_cast<std::size_t>(chunks));
     parallelChunks(nhf, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
@@ -189,7 +284,18 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             // Same chart on both sides of a proper face: identity (already set). A face whose
             // image is degenerate may hide a rotation about it, so it goes through the fit.
             if (u[0] == w[0] && u[1] == w[1] && u[2] == w[2] && ((u[1] - u[0]) % (u[2] - u[0])).sqrnorm() > 0) continue;
-            const FaceFit fit = fitFace(u, w);
+            FaceFit fit = fitFace(u, w);
+            // A corrupted corner makes the three corners disagree on the translation under
+            // the least-squares rotation (and can mislead that rotation): fit by consensus.
+            bool agree;
+            if (fit.ambiguous) {
+                agree = cornersAgree(u, w, fit);
+            } else {
+                Vec3d d[3];
+                cornerResiduals(u, w, Rotation(fit.best), d);
+                agree = residualsAgree(d);
+            }
+            if (!agree && consensusFit(u, w, fit)) ++inconsistent[static_cast<std::size_t>(chunk)];
             if (fit.ambiguous) {
                 ambiguousFits[static_cast<std::size_t>(chunk)].emplace_back(h, fit);
                 ++ambiguous[static_cast<std::size_t>(chunk)];
@@ -205,6 +311,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
         out.halfface.add_translations(std::move(all));
     }
     for (int a : ambiguous) out.n_ambiguous += a;
+    for (int a : inconsistent) out.n_inconsistent += a;
     for (auto& part : ambiguousFits) fits.insert(fits.end(), part.begin(), part.end());  // chunks are in halfface order
     if (out.n_ambiguous == 0) return out;
 

@@ -57,11 +57,17 @@ struct Transitions {
     int n_ambiguous = 0;
     /// Of those, how many could not be resolved by edge consistency (best residual taken).
     int n_unresolved = 0;
+    /// Interior faces with an outlier corner: two shared corners agree on the transition
+    /// (within 0.05 grid units) and the third is more than 0.5 off (a corrupted corner
+    /// parameter); fitted by consensus, to the two that agree.
+    int n_inconsistent = 0;
 };
 
 /// Infers every interior halfface's transition from the corner parameters of the two
 /// cells: the rotation that best maps the shared face's edge vectors, then the rounded
-/// translation. If @p given_rotations is non-null it holds a rotation index (0..23) per
+/// translation. When the three corners do not agree on one translation under that rotation
+/// and one of them is an outlier (a corrupted corner), the transition is the one the other
+/// two agree on (consensus), and the face is counted in Transitions::n_inconsistent. If @p given_rotations is non-null it holds a rotation index (0..23) per
 /// halfface that is used instead of inferring one (the paper's assumption). @p threads
 /// parallelizes the per-face fits; the result does not depend on it.
 Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params,
