@@ -89,17 +89,26 @@ bool residualsAgree(const Vec3d d[3]) {
 /// lot, which is what these thresholds tell apart.
 constexpr double kPairTolerance = 0.05;
 constexpr double kOutlierDistance = 0.5;
+/// Residuals of two corners this close agree exactly (up to the rounding of a solver's
+/// output): used where the least-squares fit looks fine but loose.
+constexpr double kExactPair = 1e-6;
+
+/// True if the three residuals agree within kPairTolerance (every continuous map).
+bool residualsTight(const Vec3d d[3]) {
+    return maxDiff(d[0], d[1]) <= kPairTolerance && maxDiff(d[0], d[2]) <= kPairTolerance &&
+           maxDiff(d[1], d[2]) <= kPairTolerance;
+}
 
 /// The pair of corners (as the index of the third, the outlier) that agree while the third
 /// is far off, and the pair's difference; -1 if there is no such pair.
-int outlierCorner(const Vec3d d[3], double& pairError) {
+int outlierCorner(const Vec3d d[3], double& pairError, double pairTolerance = kPairTolerance) {
     int best = -1;
     pairError = std::numeric_limits<double>::max();
     for (int o = 0; o < 3; ++o) {
         const Vec3d& a = d[(o + 1) % 3];
         const Vec3d& b = d[(o + 2) % 3];
         const double e = maxDiff(a, b);
-        if (e > kPairTolerance || e >= pairError) continue;
+        if (e > pairTolerance || e >= pairError) continue;
         const Vec3d mid = (a + b) * 0.5;
         if (maxDiff(d[o], mid) <= kOutlierDistance) continue;
         best = o;
@@ -126,7 +135,7 @@ Vec3i faceTranslation(const Vec3d u[3], const Vec3d w[3], const Rotation& R) {
 /// (an axis-aligned edge); they become candidates for the edge-consistency resolution like
 /// a degenerate face's. Returns false if no rotation shows such an outlier (noise rather
 /// than a corrupted corner); the least-squares fit is kept then.
-bool consensusFit(const Vec3d u[3], const Vec3d w[3], FaceFit& f) {
+bool consensusFit(const Vec3d u[3], const Vec3d w[3], FaceFit& f, double pairTolerance) {
     double err[24];
     double minErr = std::numeric_limits<double>::max();
     int best = -1;
@@ -134,7 +143,7 @@ bool consensusFit(const Vec3d u[3], const Vec3d w[3], FaceFit& f) {
         Vec3d d[3];
         cornerResiduals(u, w, Rotation(r), d);
         err[r] = std::numeric_limits<double>::max();
-        if (outlierCorner(d, err[r]) < 0) continue;
+        if (outlierCorner(d, err[r], pairTolerance) < 0) continue;
         if (err[r] < minErr) {
             minErr = err[r];
             best = r;
@@ -287,15 +296,21 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             FaceFit fit = fitFace(u, w);
             // A corrupted corner makes the three corners disagree on the translation under
             // the least-squares rotation (and can mislead that rotation): fit by consensus.
-            bool agree;
+            // Residuals that round alike but spread widely may still hide a corrupted corner
+            // that misled the rotation (on a small face a wrong rotation can make them round
+            // alike); there only an exact pair (a continuous map with one bad corner), not a
+            // noisy one, may overrule the least-squares fit.
+            bool agree, loose = false;
             if (fit.ambiguous) {
                 agree = cornersAgree(u, w, fit);
             } else {
                 Vec3d d[3];
                 cornerResiduals(u, w, Rotation(fit.best), d);
                 agree = residualsAgree(d);
+                loose = agree && !residualsTight(d);
             }
-            if (!agree && consensusFit(u, w, fit)) ++inconsistent[static_cast<std::size_t>(chunk)];
+            if ((!agree && consensusFit(u, w, fit, kPairTolerance)) || (loose && consensusFit(u, w, fit, kExactPair)))
+                ++inconsistent[static_cast<std::size_t>(chunk)];
             if (fit.ambiguous) {
                 ambiguousFits[static_cast<std::size_t>(chunk)].emplace_back(h, fit);
                 ++ambiguous[static_cast<std::size_t>(chunk)];
