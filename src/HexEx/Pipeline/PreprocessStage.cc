@@ -225,7 +225,9 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
                                "is not continuous there); their transitions were fitted to the two that agree");
     if (out.transitions.n_unresolved > 0)
         out.warnings.push_back(std::to_string(out.transitions.n_unresolved) +
-                               " transitions on degenerate faces could not be resolved from their neighbours");
+                               " transitions could not be resolved from their neighbours (faces whose parameters leave the "
+                               "rotation open: degenerate faces, or faces with a corrupted corner next to a boundary or "
+                               "singular edge); the best fit was taken");
     return out;
 }
 
