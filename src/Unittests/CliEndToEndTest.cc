@@ -353,6 +353,25 @@ TEST_F(CliEndToEndTest, MaxMemoryRefusesANeedleWithExitTwo) {
     EXPECT_FALSE(fs::exists(path("out.vtu")));
 }
 
+TEST_F(CliEndToEndTest, ACorruptedNumberIsRepairedWithAWarning) {
+    const std::string sphere = "Examples/data/sphere.hexex";
+    if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
+    pm.params[10][2][1] = 1e6;  // one typo
+    HexEx::writeHexExFile(path("typo.hexex"), pm);
+    const RunResult r = run({"extract", path("typo.hexex"), "-o", path("out.vtu"), "--report", path("r.json")});
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("216 hexes, 343 vertices, valid all-hex"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("warning: 1 corner parameter disagreed with the majority of the tets at its vertex and was "
+                         "replaced by the majority value (a corrupted number in the input?): tet 10 corner 2 (vertex 27) "
+                         "(6 1000000 0) -> (6 6 0)"),
+              std::string::npos)
+        << r.err;
+    const std::string json = slurp(path("r.json"));
+    EXPECT_NE(json.find("\"repaired_corners\": 1"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"repairs\": ["), std::string::npos) << json;
+}
+
 TEST_F(CliEndToEndTest, MaxMemoryRejectsABadSize) {
     generateCube("cube.hexex", 1, 1);
     const RunResult r = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "12X"});
