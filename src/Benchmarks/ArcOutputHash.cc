@@ -12,6 +12,8 @@
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
 
+#include "OutputHasher.hh"
+
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
@@ -21,26 +23,7 @@
 
 namespace {
 
-/// FNV-1a over raw bytes: simple, stable across runs and platforms of the same endianness.
-struct Hasher {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const auto* c = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
-    }
-    template <class T>
-    void add(const T& v) { bytes(&v, sizeof v); }
-    template <class T>
-    void all(const std::vector<T>& v) {
-        add(v.size());
-        for (const T& x : v) add(x);
-    }
-    void points(const std::vector<HexEx::Vec3d>& v) {
-        add(v.size());
-        for (const auto& p : v)
-            for (int k = 0; k < 3; ++k) add(p[k]);
-    }
-};
+using Hasher = HexExBench::OutputHasher;
 
 std::uint64_t hashArcs(const HexEx::HexArcs& a) {
     Hasher H;

@@ -10,6 +10,8 @@
 #include <HexEx/Quad/QuadExtraction.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
 
+#include "OutputHasher.hh"
+
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -20,16 +22,7 @@
 
 namespace {
 
-/// FNV-1a over raw bytes: simple, stable across runs and platforms of the same endianness.
-struct Hasher {
-    std::uint64_t h = 1469598103934665603ull;
-    void bytes(const void* p, std::size_t n) {
-        const auto* c = static_cast<const unsigned char*>(p);
-        for (std::size_t i = 0; i < n; ++i) h = (h ^ c[i]) * 1099511628211ull;
-    }
-    template <class T>
-    void add(const T& v) { bytes(&v, sizeof v); }
-};
+using Hasher = HexExBench::OutputHasher;
 
 std::uint64_t hashResult(const HexEx::QuadMesh& qm, const HexEx::QuadExtractionReport& r) {
     Hasher H;

@@ -22,6 +22,14 @@ namespace {
 
 const char* const kSphere = "Examples/data/sphere.hexex";
 
+/// The bundled sphere map with its adjacency; false if the file is absent.
+bool readSphere(ParametrizedTetMesh& pm) {
+    if (!std::ifstream(kSphere)) return false;
+    pm = readHexExFile(kSphere);
+    pm.mesh.build_adjacency();
+    return true;
+}
+
 /// Number of tets at every vertex.
 std::vector<int> tetsPerVertex(const ParametrizedTetMesh& pm) {
     std::vector<int> n(pm.mesh.n_vertices(), 0);
@@ -45,9 +53,8 @@ void expectCleanMesh(const ParametrizedTetMesh& pm, const HexMesh& clean, Extrac
 } // namespace
 
 TEST(CorruptedCorners, EveryCornerOfTheSphereIsRepaired) {
-    if (!std::ifstream(kSphere)) GTEST_SKIP() << kSphere << " not present";
-    ParametrizedTetMesh pm = readHexExFile(kSphere);
-    pm.mesh.build_adjacency();
+    ParametrizedTetMesh pm;
+    if (!readSphere(pm)) GTEST_SKIP() << kSphere << " not present";
     HexMesh clean;
     const ExtractionReport cleanRep = extractHexMesh(pm, clean);
     ASSERT_EQ(clean.hexes.size(), 216u);
@@ -84,9 +91,8 @@ TEST(CorruptedCorners, EveryCornerOfTheSphereIsRepaired) {
 }
 
 TEST(CorruptedCorners, SeveralTyposAtDifferentVerticesAreAllRepairedForAnyThreadCount) {
-    if (!std::ifstream(kSphere)) GTEST_SKIP() << kSphere << " not present";
-    ParametrizedTetMesh pm = readHexExFile(kSphere);
-    pm.mesh.build_adjacency();
+    ParametrizedTetMesh pm;
+    if (!readSphere(pm)) GTEST_SKIP() << kSphere << " not present";
     HexMesh clean;
     extractHexMesh(pm, clean);
     ParametrizedTetMesh bad = pm;
@@ -120,9 +126,8 @@ TEST(CorruptedCorners, SeveralTyposAtDifferentVerticesAreAllRepairedForAnyThread
 }
 
 TEST(CorruptedCorners, RepairIsReportedInJsonAndAsAWarning) {
-    if (!std::ifstream(kSphere)) GTEST_SKIP() << kSphere << " not present";
-    ParametrizedTetMesh pm = readHexExFile(kSphere);
-    pm.mesh.build_adjacency();
+    ParametrizedTetMesh pm;
+    if (!readSphere(pm)) GTEST_SKIP() << kSphere << " not present";
     pm.params[10][2][1] = 1e5;
     HexMesh hm;
     const ExtractionReport rep = extractHexMesh(pm, hm);
@@ -140,9 +145,8 @@ TEST(CorruptedCorners, RepairIsReportedInJsonAndAsAWarning) {
 }
 
 TEST(CorruptedCorners, ATypoBeyondTheVolumeLimitIsRepairedNotRefused) {
-    if (!std::ifstream(kSphere)) GTEST_SKIP() << kSphere << " not present";
-    ParametrizedTetMesh pm = readHexExFile(kSphere);
-    pm.mesh.build_adjacency();
+    ParametrizedTetMesh pm;
+    if (!readSphere(pm)) GTEST_SKIP() << kSphere << " not present";
     HexMesh clean;
     extractHexMesh(pm, clean);
     pm.params[10][2][1] = 1e8;  // raw parametric volume far above max_hexes (4e7)
@@ -153,9 +157,8 @@ TEST(CorruptedCorners, ATypoBeyondTheVolumeLimitIsRepairedNotRefused) {
 
 TEST(CorruptedCorners, ConsistentMapsAreNotTouched) {
     // The interior vertex moved consistently in all its tets (flipped tets, a fold): nothing to repair.
-    if (!std::ifstream(kSphere)) GTEST_SKIP() << kSphere << " not present";
-    ParametrizedTetMesh pm = readHexExFile(kSphere);
-    pm.mesh.build_adjacency();
+    ParametrizedTetMesh pm;
+    if (!readSphere(pm)) GTEST_SKIP() << kSphere << " not present";
     for (std::size_t c = 0; c < pm.params.size(); ++c)
         for (int k = 0; k < 4; ++k)
             if (pm.mesh.cell_vertex(CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += 1e3;

@@ -1,5 +1,6 @@
 #include "ArcTracing.hh"
 
+#include "../Core/Prefetch.hh"
 #include "../Mesh/TetMesh.hh"
 #include "ConnectionTracing.hh"
 
@@ -19,15 +20,6 @@ constexpr std::size_t kMaxPatchTets = 1 << 16;
 /// Parametric distance below which a point counts as on the square's border (only decides
 /// whether a clipped side leads on into a neighbour; see traceFacePatch()).
 constexpr double kBorderTolerance = 1e-9;
-
-/// Asks the CPU to load @p p's cache line early (floods jump around big arrays).
-inline void prefetch(const void* p) {
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
-}
 
 /// Orientation of tet T with corner j replaced by x (o_j(x), the barycentric numerator).
 double subVolume(const TetSoS& T, int j, const Vec3d& x) {

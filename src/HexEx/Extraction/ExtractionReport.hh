@@ -3,6 +3,7 @@
 /// Options and report of the one-call extraction API.
 
 #include "../GMap/GMapValidator.hh"
+#include "../Preprocessing/CornerRepair.hh"
 
 #include <cstddef>
 #include <cstdint>
@@ -69,16 +70,8 @@ struct ExtractionReport {
         long snapped_coordinates = 0;     ///< parameter coordinates snapped to integers
         long inconsistent_transitions = 0;  ///< faces whose corners disagreed; transition by consensus
         long repaired_corners = 0;        ///< corner parameters outvoted at their vertex and replaced
-        /// A replaced corner parameter (see repaired_corners).
-        struct RepairedCorner {
-            int tet = 0;                       ///< the tet
-            int corner = 0;                    ///< its local corner (0..3)
-            int vertex = 0;                    ///< the mesh vertex at that corner
-            double original[3] = {0, 0, 0};    ///< the parameter as given
-            double repaired[3] = {0, 0, 0};    ///< the parameter used
-        };
         /// The first (by vertex) at most 32 replaced corners.
-        std::vector<RepairedCorner> repairs;
+        std::vector<CornerRepair> repairs;
     } input;  ///< input statistics
     /// Output statistics.
     struct Output {

@@ -102,7 +102,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("repaired_corners", in.repaired_corners);
             if (!in.repairs.empty()) {
                 // Bounded: at most 32 entries, the first by vertex.
-                auto vec = [](const double* v) {
+                auto vec = [](const Vec3d& v) {
                     return "[" + jsonNumber(v[0]) + ", " + jsonNumber(v[1]) + ", " + jsonNumber(v[2]) + "]";
                 };
                 std::string list = "[";

@@ -1,6 +1,7 @@
 #include "ArcStage.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/Prefetch.hh"
 #include "HexElementNumbering.hh"
 
 #include <algorithm>
@@ -20,15 +21,6 @@ namespace {
 
 /// A patch whose signed parametric area differs from 1 by more than this is incomplete.
 constexpr double kAreaTolerance = 1e-9;
-
-/// Asks the CPU to load @p p's cache line early (the walks below jump around big arrays).
-inline void prefetch(const void* p) {
-#if defined(__GNUC__)
-    __builtin_prefetch(p);
-#else
-    (void)p;
-#endif
-}
 
 /// Local cube coordinates of the 8 hex corners (VTK order).
 constexpr int kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};

@@ -202,17 +202,7 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.stats.snapped_coordinates = ss.snapped_coordinates;
     out.stats.inconsistent_transitions = out.transitions.n_inconsistent;
     out.stats.repaired_corners = ss.repaired_corners;
-    for (const CornerRepair& r : ss.repairs) {
-        ExtractionReport::Input::RepairedCorner e;
-        e.tet = r.tet;
-        e.corner = r.corner;
-        e.vertex = r.vertex;
-        for (int k = 0; k < 3; ++k) {
-            e.original[k] = r.original[k];
-            e.repaired[k] = r.repaired[k];
-        }
-        out.stats.repairs.push_back(e);
-    }
+    out.stats.repairs = ss.repairs;
     const Singularities sing = findSingularities(mesh, out.params, out.transitions, in.threads);
     out.stats.singular_edges = static_cast<long>(sing.edges.size());
     out.stats.singular_vertices = static_cast<long>(sing.vertices.size());

@@ -145,8 +145,9 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         // (a corrupted corner must not spread over the whole star).
         const std::size_t seed = voteSeed(star, toChart, corner, opt.epsilon, ref, agrees);
         Vec3d u = seed == 0 ? corner(star[0]) : ref[seed];
+        auto& list = repaired[static_cast<std::size_t>(chunk)];
+        const std::size_t firstRepair = list.size();
         if (!agrees.empty()) {
-            auto& list = repaired[static_cast<std::size_t>(chunk)];
             for (std::size_t q = 0; q < star.size(); ++q) {
                 if (agrees[q]) continue;
                 const auto& cv = mesh.cell_vertices(CellHandle(star[q]));
@@ -169,12 +170,8 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         }
         quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
         for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
-        if (!agrees.empty()) {
-            auto& list = repaired[static_cast<std::size_t>(chunk)];
-            for (auto it = list.end() - static_cast<std::ptrdiff_t>(std::count(agrees.begin(), agrees.end(), 0));
-                 it != list.end(); ++it)
-                it->repaired = params[static_cast<std::size_t>(it->tet)][it->corner];
-        }
+        for (std::size_t k = firstRepair; k < list.size(); ++k)
+            list[k].repaired = params[static_cast<std::size_t>(list[k].tet)][list[k].corner];
     }
     });
     for (int n : snapped) stats.snapped_coordinates += n;

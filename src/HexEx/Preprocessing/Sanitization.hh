@@ -4,6 +4,7 @@
 /// vertex in all its tets are related exactly by the transitions, so every later predicate
 /// is exact and consistent across charts.
 
+#include "CornerRepair.hh"
 #include "Transitions.hh"
 
 namespace HexEx {
@@ -15,15 +16,6 @@ struct SanitizeOptions {
     double epsilon = 1e-6;
     /// Worker threads (vertices are independent; the result does not depend on this).
     int threads = 1;
-};
-
-/// One corner parameter that disagreed with the other tets at its vertex and was replaced.
-struct CornerRepair {
-    int tet = 0;       ///< the tet
-    int corner = 0;    ///< its local corner (0..3)
-    int vertex = 0;    ///< the mesh vertex at that corner
-    Vec3d original;    ///< the parameter as given
-    Vec3d repaired;    ///< the parameter after sanitization
 };
 
 /// What the sanitization changed.
