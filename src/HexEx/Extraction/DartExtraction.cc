@@ -131,138 +131,175 @@ void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di
 }
 } // namespace
 
+namespace {
+/// Frame index -> octant of the frame's cell: bit a is set if the frame points in the -a
+/// direction (the cell's lower corner is then z - octant).
+std::array<std::uint8_t, 48> frameOctants() {
+    std::array<std::uint8_t, 48> octant{};
+    const auto& frames = allFrames();
+    for (std::size_t f = 0; f < frames.size(); ++f)
+        for (AxisDir x : frames[f])
+            if (dirSign(x) < 0) octant[f] = static_cast<std::uint8_t>(octant[f] | (1u << dirAxis(x)));
+    return octant;
+}
+
+/// Integer bounding box [lo, hi] of a tet's parameter image and its number of grid points.
+struct GridBox {
+    int lo[3] = {0, 0, 0};  ///< smallest grid point
+    int hi[3] = {0, 0, 0};  ///< largest grid point
+    double points = 0;      ///< grid points in the box
+};
+
+/// The grid box of tet @p c; throws InputError for non-finite or absurd parameters.
+GridBox gridBox(const TetSoS& T, std::size_t c) {
+    Vec3d lo = T.p[0], hi = T.p[0];
+    for (int i = 1; i < 4; ++i) {
+        lo.minimize(T.p[i]);
+        hi.maximize(T.p[i]);
+    }
+    GridBox box;
+    box.points = 1;
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
+            throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
+        box.lo[a] = static_cast<int>(std::ceil(lo[a]));
+        box.hi[a] = static_cast<int>(std::floor(hi[a]));
+        box.points *= std::max(0, box.hi[a] - box.lo[a] + 1);
+    }
+    return box;
+}
+
+/// Calls emit(z, frame index) for every dart of tet @p T in key order: the grid points of
+/// @p box in x-major order, the 48 frames in lexicographic order at each. With a dense index
+/// @p di, the flags (if any) decide membership and implicit octants; with @p record, the
+/// index's offsets are appended (one per box point, the darts emitted before it).
+/// row() is called before every row of constant (x, y).
+template <class Emit, class Row>
+void forEachTetDart(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di, bool record,
+                    const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit, Row&& row) {
+    const auto& frames = allFrames();
+    const bool flagged = di && !di->flags.empty();
+    std::uint32_t emitted = 0;
+    std::size_t l = 0;  // local index of (x, y, zc) in the box
+    for (int x = box.lo[0]; x <= box.hi[0]; ++x)
+        for (int y = box.lo[1]; y <= box.hi[1]; ++y) {
+            row(emitted);
+            for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
+                if (record) di->offset.push_back(emitted);
+                std::array<int, 4> oz;
+                bool interior = true;
+                unsigned implicitOctants = 0;
+                if (flagged) {
+                    // The signs were found while marking the implicit cells.
+                    const std::uint8_t fl = di->flags[l];
+                    if (!(fl & 1)) continue;
+                    for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
+                    interior = (fl >> 4) == 0;
+                    for (unsigned o = 0; o < 8; ++o) {
+                        const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1),
+                                                        zc - static_cast<int>(o >> 2)));
+                        if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
+                    }
+                    if (implicitOctants == 0xFF) continue;  // every cell around z is implicit
+                } else {
+                    bool outside = false;
+                    const Vec3d zp(x, y, zc);
+                    for (int j = 0; j < 4 && !outside; ++j) {
+                        oz[static_cast<std::size_t>(j)] = T.side(j, zp);
+                        if (oz[static_cast<std::size_t>(j)] == -T.vol) outside = true;
+                        if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
+                    }
+                    if (outside) continue;
+                }
+                const Vec3i z(x, y, zc);
+                for (std::size_t fi = 0; fi < frames.size(); ++fi) {
+                    const auto& f = frames[fi];
+                    if ((implicitOctants >> frameOctant[fi]) & 1) continue;
+                    if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
+                    emit(z, fi);
+                    ++emitted;
+                }
+            }
+        }
+    if (record) di->offset.push_back(emitted);
+}
+} // namespace
+
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
-                     const std::vector<FaceMask>* usable_faces, double expected_cells, std::size_t max_darts) {
+                     const std::vector<FaceMask>* usable_faces, std::size_t max_darts) {
     std::atomic<std::size_t> extracted{0};  // all chunks together, for the cap
     constexpr std::size_t kCapCheck = 1u << 16;  // darts of one tet before its own count is checked against the cap
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
-    std::vector<std::vector<Dart>> parts(static_cast<std::size_t>(chunks));
     std::vector<std::vector<DartSet::DenseIndex>> denseParts(static_cast<std::size_t>(chunks));
     constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
     std::vector<std::size_t> count(n, 0);
-    const auto& frames = allFrames();
-    // Octant of every frame's cell: bit a is set if the frame points in the -a direction
-    // (the cell's lower corner is then z - octant).
-    std::array<std::uint8_t, 48> frameOctant{};
-    for (std::size_t f = 0; f < frames.size(); ++f)
-        for (AxisDir x : frames[f])
-            if (dirSign(x) < 0) frameOctant[f] = static_cast<std::uint8_t>(frameOctant[f] | (1u << dirAxis(x)));
-    // Capacity from the expected number of cells (about 48 darts each), so that the vectors
-    // neither reallocate nor get copied when joined: chunk 0 reserves room for all
-    // (reserved but untouched memory costs no RSS). Capped; beyond that vectors grow.
-    constexpr double kMaxReserve = 64.0 * 1024 * 1024;
-    auto reserveFor = [&](double cells) {
-        return static_cast<std::size_t>(std::min(50.0 * std::max(0.0, cells) + 4096.0, kMaxReserve));
+    const std::array<std::uint8_t, 48> frameOctant = frameOctants();
+    auto capError = [&] {
+        return ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
+                             " darts, the most the memory budget allows");
     };
+    // Two passes over the same enumeration: the first counts every tet's darts (and builds
+    // the dense indices), the second writes them straight to their final place. One exact
+    // allocation, no per-thread buffers to join: a grown-and-joined array briefly held two
+    // to three times the darts (on fold-heavy maps, where the parametric volume does not
+    // predict the count, the peak of the whole extraction).
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        auto& out = parts[static_cast<std::size_t>(k)];
-        try {
-            out.reserve(reserveFor(k == 0 ? expected_cells : expected_cells * static_cast<double>(e - b) / static_cast<double>(n)));
-        } catch (const std::bad_alloc&) {  // the estimate is only a hint
-        }
         for (std::size_t c = b; c < e; ++c) {
             const TetSoS& T = tets[c];
             if (T.vol == 0) continue;
-            Vec3d lo = T.p[0], hi = T.p[0];
-            for (int i = 1; i < 4; ++i) {
-                lo.minimize(T.p[i]);
-                hi.maximize(T.p[i]);
-            }
-            double points = 1;
-            int ilo[3], ihi[3];
-            for (int a = 0; a < 3; ++a) {
-                if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
-                    throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
-                ilo[a] = static_cast<int>(std::ceil(lo[a]));
-                ihi[a] = static_cast<int>(std::floor(hi[a]));
-                points *= std::max(0, ihi[a] - ilo[a] + 1);
-            }
-            if (points > max_points)
-                throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(points) +
+            const GridBox box = gridBox(T, c);
+            if (box.points > max_points)
+                throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(box.points) +
                                  " grid points (limit " + std::to_string(max_points) + ")");
-            const std::size_t before = out.size();
             DartSet::DenseIndex* di = nullptr;
-            if (points >= kDenseMinPoints) {
+            if (box.points >= kDenseMinPoints) {
                 denseParts[static_cast<std::size_t>(k)].emplace_back();
                 di = &denseParts[static_cast<std::size_t>(k)].back();
                 di->tet = static_cast<int>(c);
                 for (int a = 0; a < 3; ++a) {
-                    di->lo[a] = ilo[a];
-                    di->dims[a] = ihi[a] - ilo[a] + 1;
+                    di->lo[a] = box.lo[a];
+                    di->dims[a] = box.hi[a] - box.lo[a] + 1;
                 }
-                di->offset.reserve(static_cast<std::size_t>(points) + 1);
+                di->offset.reserve(static_cast<std::size_t>(box.points) + 1);
                 if (implicit_cells && T.vol > 0) markImplicitCells(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), *di);
             }
-            const bool flagged = di && !di->flags.empty();
-            std::size_t l = 0;  // local index of (x, y, zc) in the box
-            for (int x = ilo[0]; x <= ihi[0]; ++x)
-                for (int y = ilo[1]; y <= ihi[1]; ++y) {
-                    // A tet with a huge image must not outgrow the budget before it is done.
-                    if (out.size() - before > kCapCheck && extracted.load(std::memory_order_relaxed) + (out.size() - before) > max_darts)
-                        throw ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
-                                            " darts, the most the memory budget allows");
-                    for (int zc = ilo[2]; zc <= ihi[2]; ++zc, ++l) {
-                        if (di) di->offset.push_back(static_cast<std::uint32_t>(out.size() - before));
-                        std::array<int, 4> oz;
-                        bool interior = true;
-                        unsigned implicitOctants = 0;
-                        if (flagged) {
-                            // The signs were found while marking the implicit cells.
-                            const std::uint8_t fl = di->flags[l];
-                            if (!(fl & 1)) continue;
-                            for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
-                            interior = (fl >> 4) == 0;
-                            for (unsigned o = 0; o < 8; ++o) {
-                                const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1),
-                                                                zc - static_cast<int>(o >> 2)));
-                                if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
-                            }
-                            if (implicitOctants == 0xFF) continue;  // every cell around z is implicit
-                        } else {
-                            bool outside = false;
-                            const Vec3d zp(x, y, zc);
-                            for (int j = 0; j < 4 && !outside; ++j) {
-                                oz[static_cast<std::size_t>(j)] = T.side(j, zp);
-                                if (oz[static_cast<std::size_t>(j)] == -T.vol) outside = true;
-                                if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
-                            }
-                            if (outside) continue;
-                        }
-                        for (std::size_t fi = 0; fi < frames.size(); ++fi) {
-                            const auto& f = frames[fi];
-                            if ((implicitOctants >> frameOctant[fi]) & 1) continue;
-                            if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
-                            Dart d;
-                            d.tet = static_cast<int>(c);
-                            d.z = Vec3i(x, y, zc);
-                            d.d = f;
-                            d.sign = static_cast<signed char>(T.vol);
-                            out.push_back(d);
-                        }
-                    }
-            }
-            count[c] = out.size() - before;
-            if (extracted.fetch_add(count[c], std::memory_order_relaxed) + count[c] > max_darts)
-                throw ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
-                                    " darts, the most the memory budget allows");
-            if (di) di->offset.push_back(static_cast<std::uint32_t>(count[c]));
+            std::size_t cnt = 0;
+            forEachTetDart(T, box, di, di != nullptr, frameOctant, [&](const Vec3i&, std::size_t) { ++cnt; },
+                           [&](std::uint32_t sofar) {
+                               // A tet with a huge image must not run on far beyond the budget.
+                               if (sofar > kCapCheck && extracted.load(std::memory_order_relaxed) + sofar > max_darts)
+                                   throw capError();
+                           });
+            count[c] = cnt;
+            if (extracted.fetch_add(cnt, std::memory_order_relaxed) + cnt > max_darts) throw capError();
         }
     });
     DartSet s;
-    std::size_t total = 0;
-    for (const auto& p : parts) total += p.size();
-    s.darts = std::move(parts[0]);
-    s.darts.reserve(total);
-    for (std::size_t k = 1; k < parts.size(); ++k) {
-        s.darts.insert(s.darts.end(), parts[k].begin(), parts[k].end());
-        std::vector<Dart>().swap(parts[k]);
-    }
-    // Fold darts outnumber the expected cells' darts, and a grown vector may hold up to
-    // twice its size: give the excess back before the later stages allocate per dart.
-    if (s.darts.capacity() > s.darts.size() + s.darts.size() / 4) s.darts.shrink_to_fit();
     s.tet_begin.assign(n + 1, 0);
     for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+    std::vector<std::size_t>().swap(count);
+    s.darts.resize(s.tet_begin[n]);  // default-initialized: no pass over the memory
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        std::size_t nextDense = 0;  // the chunk's dense indices, in tet order
+        auto& dense = denseParts[static_cast<std::size_t>(k)];
+        for (std::size_t c = b; c < e; ++c) {
+            const TetSoS& T = tets[c];
+            if (T.vol == 0) continue;
+            DartSet::DenseIndex* di = nextDense < dense.size() && dense[nextDense].tet == static_cast<int>(c) ? &dense[nextDense++] : nullptr;
+            Dart* out = s.darts.data() + s.tet_begin[c];
+            const auto& frames = allFrames();
+            forEachTetDart(T, gridBox(T, c), di, false, frameOctant,
+                           [&](const Vec3i& z, std::size_t fi) {
+                               Dart& d = *out++;
+                               d.tet = static_cast<int>(c);
+                               d.z = z;
+                               d.d = frames[fi];
+                               d.sign = static_cast<signed char>(T.vol);
+                           },
+                           [](std::uint32_t) {});
+        }
+    });
     s.dense_slot.assign(n, -1);
     for (auto& part : denseParts)
         for (auto& di : part) {

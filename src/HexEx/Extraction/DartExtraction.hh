@@ -5,6 +5,7 @@
 /// Darts of flipped tets are anti darts.
 
 #include "../Mesh/ParametrizedTetMesh.hh"
+#include "../Core/DefaultInitAllocator.hh"
 #include "TetSoS.hh"
 
 #include <array>
@@ -15,12 +16,17 @@ namespace HexEx {
 
 /// A dart as extracted: hex corner z with frame (d1, d2, d3), seen from tet `tet`, in that
 /// tet's chart. The edge runs along d1, the face spans d1, d2, the cell spans d1, d2, d3.
+/// The members have no initializers on purpose: DartSet::darts is sized without a zeroing
+/// pass and filled in parallel (a default-constructed Dart is indeterminate).
 struct Dart {
-    int tet = -1;                  ///< owning tet
-    Vec3i z{0, 0, 0};              ///< grid point in the tet's chart
-    std::array<AxisDir, 3> d{};    ///< frame directions
-    signed char sign = 1;          ///< +1 regular dart, -1 anti dart
+    int tet;                       ///< owning tet
+    Vec3i z;                       ///< grid point in the tet's chart
+    std::array<AxisDir, 3> d;      ///< frame directions
+    signed char sign;              ///< +1 regular dart, -1 anti dart
 };
+
+/// The dart array: a vector that sizes without zeroing (see DefaultInitAllocator).
+using DartVector = std::vector<Dart, DefaultInitAllocator<Dart>>;
 
 /// Equality of frames without std::array's memcmp (hot in lookups).
 inline bool sameFrame(const std::array<AxisDir, 3>& a, const std::array<AxisDir, 3>& b) {
@@ -40,7 +46,7 @@ inline bool dartKeyLess(const Vec3i& za, const std::array<AxisDir, 3>& da, const
 
 /// All darts, grouped by tet (ascending) and sorted by key within a tet.
 struct DartSet {
-    std::vector<Dart> darts;            ///< the darts
+    DartVector darts;                   ///< the darts
     std::vector<std::size_t> tet_begin; ///< darts of tet t are [tet_begin[t], tet_begin[t+1])
     /// Tets with large parameter images get a dense index over their integer bounding box
     /// so that find() is O(1): box (lo, dims) and, per box point, the first dart there.
@@ -106,11 +112,12 @@ using FaceMask = std::uint8_t;
 /// them). A corner of such a cell must lie strictly inside the tet or on a face j with bit
 /// j set in @p usable_faces[t] (the caller allows boundary faces and faces shared with a
 /// proper tet, where vertices can be joined across; without masks only strictly interior
-/// corners are used). @p expected_cells (e.g. the parametric volume) only sizes buffers.
+/// corners are used). The darts are counted first and then written in place (one exact
+/// allocation, no buffers to join).
 /// Throws ResourceError as soon as more than @p max_darts darts have been extracted (the
 /// outcome does not depend on the thread count: the total does not).
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
                      bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
-                     double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1));
+                     std::size_t max_darts = static_cast<std::size_t>(-1));
 
 } // namespace HexEx

@@ -38,9 +38,9 @@ private:
 };
 
 /// Frees a vector's memory now.
-template <class T>
-void release(std::vector<T>& v) {
-    std::vector<T>().swap(v);
+template <class Vector>
+void release(Vector& v) {
+    Vector().swap(v);
 }
 } // namespace
 
@@ -80,7 +80,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.preprocess = clock.lap();
 
     enter("darts");
-    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads, &state.estimate});
+    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, implicit, threads, &state.estimate});
     addToReport(darts, rep);
     rep.timings_s.darts = clock.lap();
 
@@ -91,7 +91,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.connect = clock.lap();
 
     enter("postprocess");
-    AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti});
+    AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts});
     addToReport(survivors, rep);
     ImplicitCells cells;
     if (implicit)

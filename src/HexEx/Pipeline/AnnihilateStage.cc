@@ -5,6 +5,7 @@
 #include "../Postprocessing/FaceConnectionRepair.hh"
 
 #include <cstring>
+#include <functional>
 
 namespace HexEx {
 
@@ -13,7 +14,14 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
     const std::size_t nd = in.alpha->size();
     out.alive.assign(nd, 1);
     if (in.merge) {
-        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir);
+        std::function<bool(int, int)> samePlace;
+        if (in.darts)
+            samePlace = [&ds = in.darts->darts](int a, int b) {
+                const Dart& A = ds[static_cast<std::size_t>(a)];
+                const Dart& B = ds[static_cast<std::size_t>(b)];
+                return A.tet == B.tet && samePoint(A.z, B.z);
+            };
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace);
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;
     } else {
@@ -62,7 +70,10 @@ MapOutput buildMapStage(MapInput&& in) {
         if (dst != chunkBegin[k] && chunkKept[k] > 0)
             std::memmove(static_cast<void*>(&links[dst]), &links[chunkBegin[k]], chunkKept[k] * sizeof(DartLinks));
     for (long u : unconnected) out.unconnected_darts += u;
-    links.resize(static_cast<std::size_t>(in.survivors->n_alive));  // no shrink_to_fit: a copy into fresh memory costs more than the few removed darts save
+    links.resize(static_cast<std::size_t>(in.survivors->n_alive));
+    // Give the removed darts' room back when they were the majority (fold-heavy maps): the
+    // copy is at most half the old array. With few removals the copy costs more than it saves.
+    if (links.size() < nd / 2) links.shrink_to_fit();
     out.map.assign_links(std::move(links));
     if (in.repair_faces) {
         out.repaired_face_connections = completePartialFaceConnections(out.map, threads);

@@ -19,6 +19,9 @@ struct AnnihilateInput {
     const std::vector<signed char>* sign = nullptr;    ///< +1 / -1 per dart
     bool merge = true;                                 ///< annihilate (ExtractionOptions::merge)
     long anti = 0;                                     ///< anti darts extracted (remaining if no merge)
+    /// The darts (optional): removed darts at the same grid point of the same tet as the
+    /// previous one, with the same heir, are then left out of AnnihilateOutput::heir.
+    const DartSet* darts = nullptr;
 };
 
 /// Output of annihilateStage().
@@ -29,7 +32,8 @@ struct AnnihilateOutput {
     long pairs = 0;                ///< annihilated regular/anti pairs
     long remaining_anti = 0;       ///< anti darts left
     /// (removed dart, surviving dart that inherits its h-vertex) pairs, ascending (see
-    /// annihilateDarts()); empty without merge.
+    /// annihilateDarts(); one per grid point and heir if AnnihilateInput::darts is given);
+    /// empty without merge.
     std::vector<std::pair<int, int>> heir;
 };
 

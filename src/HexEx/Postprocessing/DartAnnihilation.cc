@@ -3,40 +3,46 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <utility>
 
 namespace HexEx {
 
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
-                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs) {
+                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs,
+                                  const std::function<bool(int, int)>& same_place) {
     AnnihilationStats st;
     const long n = static_cast<long>(alpha.size());
+    // Per dart: kQueued (on the work list) and kTouched (joined some vertex group).
+    constexpr std::uint8_t kQueued = 1, kTouched = 2;
+    std::vector<std::uint8_t> flag(static_cast<std::size_t>(n), 0);
     // Union-find over all darts, allocated when the first pair annihilates (maps without
-    // folds pay nothing). Dense ids cost 5 bytes per dart; a hash map of the touched darts
+    // folds pay nothing). Dense ids cost 4 bytes per dart; a hash map of the touched darts
     // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
     UnionFind sameVertex(0);
-    std::vector<char> touched;  // per dart: joined some group
     auto idOf = [&](long d) {
-        if (sameVertex.parent.empty()) {
-            sameVertex = UnionFind(static_cast<std::size_t>(n));
-            touched.assign(static_cast<std::size_t>(n), 0);
-        }
-        touched[static_cast<std::size_t>(d)] = 1;
+        if (sameVertex.parent.empty()) sameVertex = UnionFind(static_cast<std::size_t>(n));
+        flag[static_cast<std::size_t>(d)] |= kTouched;
         return static_cast<int>(d);
     };
-    std::deque<long> work;
-    std::vector<char> queued(static_cast<std::size_t>(n), 0);
+    // The work list is every anti dart in ascending order, followed by the darts queued
+    // again on the way (first in, first out). The first part is a scan, not a stored list.
     for (long d = 0; d < n; ++d)
-        if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) {
-            work.push_back(d);
-            queued[static_cast<std::size_t>(d)] = 1;
-        }
+        if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) flag[static_cast<std::size_t>(d)] |= kQueued;
+    std::deque<long> requeued;
+    long scan = 0;
+    auto next = [&]() -> long {
+        for (; scan < n; ++scan)
+            if (flag[static_cast<std::size_t>(scan)] & kQueued && sign[static_cast<std::size_t>(scan)] < 0) return scan++;
+        if (requeued.empty()) return -1;
+        const long d = requeued.front();
+        requeued.pop_front();
+        return d;
+    };
     auto A = [&](long d) -> std::array<int, 4>& { return alpha[static_cast<std::size_t>(d)]; };
-    while (!work.empty()) {
-        const long anti = work.front();
-        work.pop_front();
-        queued[static_cast<std::size_t>(anti)] = 0;
+    for (long anti = next(); anti >= 0; anti = next()) {
+        flag[static_cast<std::size_t>(anti)] &= static_cast<std::uint8_t>(~kQueued);
         if (!alive[static_cast<std::size_t>(anti)]) continue;
         long reg = -1;
         for (int i = 0; i < 4 && reg < 0; ++i) {
@@ -74,33 +80,55 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
                     const long m = A(nb)[k];
                     const long cand = sign[static_cast<std::size_t>(nb)] < 0 ? nb : m;
                     if (cand >= 0 && alive[static_cast<std::size_t>(cand)] && sign[static_cast<std::size_t>(cand)] < 0 &&
-                        !queued[static_cast<std::size_t>(cand)]) {
-                        work.push_back(cand);
-                        queued[static_cast<std::size_t>(cand)] = 1;
+                        !(flag[static_cast<std::size_t>(cand)] & kQueued)) {
+                        requeued.push_back(cand);
+                        flag[static_cast<std::size_t>(cand)] |= kQueued;
                     }
                 }
             }
     }
     for (long d = 0; d < n; ++d)
         if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) ++st.remaining_anti;
-    if (heirs) {
-        // Smallest surviving dart per group, then (removed dart, heir) in dart order.
+    if (heirs && !sameVertex.parent.empty()) {
+        // Smallest surviving dart per group, kept in the union-find's own array: after full
+        // compression every dart points at its root (the group's smallest dart, see
+        // UnionFind::unite()), and a root with an heir holds -2 - heir.
+        std::vector<int>& parent = sameVertex.parent;
+        for (long d = 0; d < n; ++d) parent[static_cast<std::size_t>(d)] = sameVertex.find(static_cast<int>(d));
+        auto rootOf = [&](std::size_t d) { return parent[d] < 0 ? d : static_cast<std::size_t>(parent[d]); };
+        for (std::size_t d = 0; d < flag.size(); ++d) {
+            if (!(flag[d] & kTouched) || !alive[d]) continue;
+            const std::size_t r = rootOf(d);
+            if (parent[r] >= 0) parent[r] = -2 - static_cast<int>(d);  // darts ascend: the first is the smallest
+        }
+        auto heirOf = [&](std::size_t d) {
+            const int p = parent[rootOf(d)];
+            return p < 0 ? -2 - p : -1;
+        };
+        // (removed dart, heir) in dart order; a dart at the same place as the previous
+        // entry with the same heir adds no candidate and is left out.
+        auto wanted = [&](std::size_t d, int h, int lastDart, int lastHeir) {
+            return !(lastDart >= 0 && h == lastHeir && same_place && same_place(lastDart, static_cast<int>(d)));
+        };
+        std::size_t count = 0;
+        for (int pass = 0; pass < 2; ++pass) {  // count, then fill (exact reserve)
+            if (pass == 1) {
+                heirs->clear();
+                heirs->reserve(count);
+            }
+            int lastDart = -1, lastHeir = -1;
+            for (std::size_t d = 0; d < flag.size(); ++d) {
+                if (!(flag[d] & kTouched) || alive[d]) continue;
+                const int h = heirOf(d);
+                if (h < 0 || !wanted(d, h, lastDart, lastHeir)) continue;
+                lastDart = static_cast<int>(d);
+                lastHeir = h;
+                if (pass == 0) ++count;
+                else heirs->emplace_back(static_cast<int>(d), h);
+            }
+        }
+    } else if (heirs) {
         heirs->clear();
-        std::vector<int> heirOf(touched.size(), -1);  // per root
-        for (std::size_t d = 0; d < touched.size(); ++d) {
-            if (!touched[d] || !alive[d]) continue;
-            int& h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
-            if (h < 0) h = static_cast<int>(d);  // darts ascend: the first is the smallest
-        }
-        std::size_t removed = 0;
-        for (std::size_t d = 0; d < touched.size(); ++d) removed += (touched[d] && !alive[d]) ? 1 : 0;
-        heirs->reserve(removed);  // exact: a grown vector may hold twice what it needs
-        for (std::size_t d = 0; d < touched.size(); ++d) {
-            if (!touched[d] || alive[d]) continue;
-            const int h = heirOf[static_cast<std::size_t>(sameVertex.find(static_cast<int>(d)))];
-            if (h >= 0) heirs->emplace_back(static_cast<int>(d), h);
-        }
-        std::sort(heirs->begin(), heirs->end());
     }
     return st;
 }

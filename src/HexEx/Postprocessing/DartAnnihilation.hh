@@ -5,6 +5,7 @@
 /// alpha_j(alpha_j(d)) = alpha_j(d'), alpha_j(alpha_j(d')) = alpha_j(d) for all j with alpha_j(d) != d'.
 
 #include <array>
+#include <functional>
 #include <utility>
 #include <vector>
 
@@ -28,8 +29,11 @@ struct AnnihilationStats {
 /// dart of such a group gets the group's smallest surviving dart. The positions of removed
 /// darts are then candidates for their heir's vertex (VertexMerging.hh): those of regular
 /// darts like the vertex's own, those of anti darts (in the flipped part) only as a last
-/// resort.
+/// resort. With @p same_place (true if two darts, the first the smaller, sit at the same
+/// grid point of the same tet), an entry at the same place and with the same heir as the
+/// entry before it is left out: it would add the same candidate again.
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
-                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs = nullptr);
+                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs = nullptr,
+                                  const std::function<bool(int, int)>& same_place = {});
 
 } // namespace HexEx

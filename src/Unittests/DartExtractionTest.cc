@@ -1,0 +1,135 @@
+/// @file DartExtractionTest.cc
+/// Tests of extractDarts() (counted, then written in place): every dart equals a direct
+/// enumeration (every grid point of every tet's box, every frame, the symbolic-perturbation
+/// test), for any thread count; the dense indices find every dart; the cap on the number of
+/// darts refuses before any dart is stored.
+
+#include <HexEx/Core/Error.hh>
+#include <HexEx/Extraction/DartExtraction.hh>
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/Generators/Perturbation.hh>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace HexEx;
+
+namespace {
+
+/// The darts of @p tets by the definition: for every non-degenerate tet, every grid point
+/// of its bounding box in x-major order and every frame in order, the dart exists if the
+/// perturbed point z + e d1 + e^2 d2 + e^3 d3 lies in the tet.
+std::vector<Dart> directDarts(const std::vector<TetSoS>& tets) {
+    std::vector<Dart> out;
+    for (std::size_t c = 0; c < tets.size(); ++c) {
+        const TetSoS& T = tets[c];
+        if (T.vol == 0) continue;
+        int lo[3], hi[3];
+        for (int a = 0; a < 3; ++a) {
+            double mn = T.p[0][a], mx = T.p[0][a];
+            for (int i = 1; i < 4; ++i) {
+                mn = std::min(mn, T.p[i][a]);
+                mx = std::max(mx, T.p[i][a]);
+            }
+            lo[a] = static_cast<int>(std::ceil(mn));
+            hi[a] = static_cast<int>(std::floor(mx));
+        }
+        for (int x = lo[0]; x <= hi[0]; ++x)
+            for (int y = lo[1]; y <= hi[1]; ++y)
+                for (int z = lo[2]; z <= hi[2]; ++z) {
+                    const Vec3i p(x, y, z);
+                    const std::array<int, 4> oz = T.sides(Vec3d(x, y, z));
+                    for (const auto& f : allFrames())
+                        if (T.contains(oz, f[0], f[1], f[2])) {
+                            Dart d;
+                            d.tet = static_cast<int>(c);
+                            d.z = p;
+                            d.d = f;
+                            d.sign = static_cast<signed char>(T.vol);
+                            out.push_back(d);
+                        }
+                }
+    }
+    return out;
+}
+
+/// extractDarts() on @p pm (without implicit cells) equals directDarts() for 1, 2 and 3
+/// threads, and DartSet::find() returns every dart's own index.
+void expectDirectDarts(ParametrizedTetMesh pm) {
+    const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+    const std::vector<Dart> expected = directDarts(tets);
+    ASSERT_FALSE(expected.empty());
+    for (int threads : {1, 2, 3}) {
+        SCOPED_TRACE("threads = " + std::to_string(threads));
+        const DartSet ds = extractDarts(tets, threads);
+        ASSERT_EQ(ds.darts.size(), expected.size());
+        long mismatches = 0;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            const Dart& a = ds.darts[i];
+            const Dart& b = expected[i];
+            if (a.tet != b.tet || !samePoint(a.z, b.z) || !sameFrame(a.d, b.d) || a.sign != b.sign) ++mismatches;
+        }
+        EXPECT_EQ(mismatches, 0);
+        ASSERT_EQ(ds.tet_begin.size(), tets.size() + 1);
+        for (std::size_t c = 0; c < tets.size(); ++c)
+            for (std::size_t i = ds.tet_begin[c]; i < ds.tet_begin[c + 1]; ++i) ASSERT_EQ(ds.darts[i].tet, static_cast<int>(c));
+        long lost = 0;
+        for (std::size_t i = 0; i < ds.darts.size(); ++i)
+            if (ds.find(ds.darts[i].tet, ds.darts[i].z, ds.darts[i].d) != static_cast<long>(i)) ++lost;
+        EXPECT_EQ(lost, 0);
+    }
+}
+
+} // namespace
+
+TEST(DartExtraction, FoldedCubeEqualsTheDirectEnumeration) {
+    // Small tets (sorted search), flipped tets (anti darts) and grid points on faces.
+    ParametrizedTetMesh pm = generateCube(4, 3);
+    perturbParameters(pm, 0.8, 3);
+    expectDirectDarts(pm);
+}
+
+TEST(DartExtraction, LargeTetsWithDenseIndicesEqualTheDirectEnumeration) {
+    // 6 tets of over 64 grid points each: dense indices; grid points on faces and edges.
+    expectDirectDarts(generateCube(1, 7));
+    ParametrizedTetMesh pm = generateCube(2, 9);
+    perturbParameters(pm, 0.5, 2);
+    expectDirectDarts(pm);
+}
+
+TEST(DartExtraction, ImplicitCellsAreTheSameForAnyThreadCount) {
+    const ParametrizedTetMesh pm = generateCube(2, 12);  // TetSoS points into its parameters
+    const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+    const std::vector<FaceMask> anyFace(tets.size(), FaceMask(0x0F));  // corners may lie on any face
+    const DartSet ref = extractDarts(tets, 1, 1e9, true, &anyFace);
+    EXPECT_GT(ref.n_implicit_cells, 0);
+    for (int threads : {2, 3}) {
+        const DartSet ds = extractDarts(tets, threads, 1e9, true, &anyFace);
+        ASSERT_EQ(ds.darts.size(), ref.darts.size());
+        EXPECT_EQ(ds.tet_begin, ref.tet_begin);
+        EXPECT_EQ(ds.n_implicit_cells, ref.n_implicit_cells);
+        EXPECT_EQ(ds.n_occurrences, ref.n_occurrences);
+        long mismatches = 0;
+        for (std::size_t i = 0; i < ds.darts.size(); ++i)
+            if (ds.darts[i].tet != ref.darts[i].tet || !samePoint(ds.darts[i].z, ref.darts[i].z) || !sameFrame(ds.darts[i].d, ref.darts[i].d))
+                ++mismatches;
+        EXPECT_EQ(mismatches, 0);
+    }
+}
+
+TEST(DartExtraction, CapRefusesWithTheBudgetMessage) {
+    const ParametrizedTetMesh pm = generateCube(2, 4);
+    const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+    const std::size_t all = extractDarts(tets, 1).darts.size();
+    EXPECT_EQ(all, 48u * 64u);  // 48 darts per unit cell of the 4^3 cube
+    EXPECT_EQ(extractDarts(tets, 2, 1e9, false, nullptr, all).darts.size(), all);
+    try {
+        extractDarts(tets, 2, 1e9, false, nullptr, all - 1);
+        ADD_FAILURE() << "no ResourceError";
+    } catch (const ResourceError& e) {
+        EXPECT_NE(std::string(e.what()).find("the most the memory budget allows"), std::string::npos) << e.what();
+    }
+}
