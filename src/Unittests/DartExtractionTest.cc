@@ -57,15 +57,19 @@ std::vector<Dart> directDarts(const std::vector<TetSoS>& tets) {
 }
 
 /// extractDarts() on @p pm (without implicit cells) equals directDarts() for 1, 2 and 3
-/// threads, and DartSet::find() returns every dart's own index.
-void expectDirectDarts(ParametrizedTetMesh pm) {
+/// threads, and DartSet::find() returns every dart's own index. Returns the number of
+/// flipped tets (with flipped tets the darts are counted first, without they are not).
+long expectDirectDarts(ParametrizedTetMesh pm) {
     const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
     const std::vector<Dart> expected = directDarts(tets);
-    ASSERT_FALSE(expected.empty());
+    EXPECT_FALSE(expected.empty());
+    long flipped = 0;
+    for (const TetSoS& T : tets) flipped += T.vol < 0;
     for (int threads : {1, 2, 3}) {
         SCOPED_TRACE("threads = " + std::to_string(threads));
         const DartSet ds = extractDarts(tets, threads);
-        ASSERT_EQ(ds.darts.size(), expected.size());
+        EXPECT_EQ(ds.darts.size(), expected.size());
+        if (ds.darts.size() != expected.size()) continue;
         long mismatches = 0;
         for (std::size_t i = 0; i < expected.size(); ++i) {
             const Dart& a = ds.darts[i];
@@ -73,14 +77,17 @@ void expectDirectDarts(ParametrizedTetMesh pm) {
             if (a.tet != b.tet || !samePoint(a.z, b.z) || !sameFrame(a.d, b.d) || a.sign != b.sign) ++mismatches;
         }
         EXPECT_EQ(mismatches, 0);
-        ASSERT_EQ(ds.tet_begin.size(), tets.size() + 1);
-        for (std::size_t c = 0; c < tets.size(); ++c)
-            for (std::size_t i = ds.tet_begin[c]; i < ds.tet_begin[c + 1]; ++i) ASSERT_EQ(ds.darts[i].tet, static_cast<int>(c));
+        EXPECT_EQ(ds.tet_begin.size(), tets.size() + 1);
+        long misplaced = 0;
+        for (std::size_t c = 0; c + 1 < ds.tet_begin.size(); ++c)
+            for (std::size_t i = ds.tet_begin[c]; i < ds.tet_begin[c + 1]; ++i) misplaced += ds.darts[i].tet != static_cast<int>(c);
+        EXPECT_EQ(misplaced, 0);
         long lost = 0;
         for (std::size_t i = 0; i < ds.darts.size(); ++i)
             if (ds.find(ds.darts[i].tet, ds.darts[i].z, ds.darts[i].d) != static_cast<long>(i)) ++lost;
         EXPECT_EQ(lost, 0);
     }
+    return flipped;
 }
 
 } // namespace
@@ -89,15 +96,18 @@ TEST(DartExtraction, FoldedCubeEqualsTheDirectEnumeration) {
     // Small tets (sorted search), flipped tets (anti darts) and grid points on faces.
     ParametrizedTetMesh pm = generateCube(4, 3);
     perturbParameters(pm, 0.8, 3);
-    expectDirectDarts(pm);
+    EXPECT_GT(expectDirectDarts(pm), 0);
 }
 
 TEST(DartExtraction, LargeTetsWithDenseIndicesEqualTheDirectEnumeration) {
     // 6 tets of over 64 grid points each: dense indices; grid points on faces and edges.
-    expectDirectDarts(generateCube(1, 7));
+    EXPECT_EQ(expectDirectDarts(generateCube(1, 7)), 0);
+    // Large flipped tets: one corner of a 9-unit cube moved through the opposite face.
     ParametrizedTetMesh pm = generateCube(2, 9);
-    perturbParameters(pm, 0.5, 2);
-    expectDirectDarts(pm);
+    for (auto& corners : pm.params)
+        for (auto& p : corners)
+            if (p[0] == 4.5 && p[1] == 4.5 && p[2] == 4.5) p[2] = 13.25;
+    EXPECT_GT(expectDirectDarts(pm), 0);
 }
 
 TEST(DartExtraction, ImplicitCellsAreTheSameForAnyThreadCount) {
@@ -121,15 +131,20 @@ TEST(DartExtraction, ImplicitCellsAreTheSameForAnyThreadCount) {
 }
 
 TEST(DartExtraction, CapRefusesWithTheBudgetMessage) {
-    const ParametrizedTetMesh pm = generateCube(2, 4);
-    const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
-    const std::size_t all = extractDarts(tets, 1).darts.size();
-    EXPECT_EQ(all, 48u * 64u);  // 48 darts per unit cell of the 4^3 cube
-    EXPECT_EQ(extractDarts(tets, 2, 1e9, false, nullptr, all).darts.size(), all);
-    try {
-        extractDarts(tets, 2, 1e9, false, nullptr, all - 1);
-        ADD_FAILURE() << "no ResourceError";
-    } catch (const ResourceError& e) {
-        EXPECT_NE(std::string(e.what()).find("the most the memory budget allows"), std::string::npos) << e.what();
+    for (const bool fold : {false, true}) {
+        ParametrizedTetMesh pm = generateCube(2, 4);
+        if (fold) perturbParameters(pm, 0.9, 5);
+        const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+        const std::size_t all = extractDarts(tets, 1).darts.size();
+        if (!fold) {
+            EXPECT_EQ(all, 48u * 64u);  // 48 darts per unit cell of the 4^3 cube
+        }
+        EXPECT_EQ(extractDarts(tets, 2, 1e9, false, nullptr, 0, all).darts.size(), all);
+        try {
+            extractDarts(tets, 2, 1e9, false, nullptr, 0, all - 1);
+            ADD_FAILURE() << "no ResourceError";
+        } catch (const ResourceError& e) {
+            EXPECT_NE(std::string(e.what()).find("the most the memory budget allows"), std::string::npos) << e.what();
+        }
     }
 }

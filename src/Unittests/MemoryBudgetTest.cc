@@ -159,7 +159,7 @@ TEST(MemoryBudget, DartCapStopsTheDartStage) {
     MemoryEstimate est = estimateMemory(pre, false, 1ull << 20);
     est.max_darts = 1000;  // fewer than the 1296 darts of the cube
     try {
-        extractDartStage({&pm.mesh, &pre.tets, false, 2, &est});
+        extractDartStage({&pm.mesh, &pre.tets, pre.abs_volume, false, 2, &est});
         FAIL() << "no refusal";
     } catch (const ResourceError& e) {
         const std::string msg = e.what();
@@ -167,7 +167,7 @@ TEST(MemoryBudget, DartCapStopsTheDartStage) {
         EXPECT_NE(msg.find("largest parametric images in the input: tet "), std::string::npos) << msg;
     }
     est.max_darts = 1296;  // exactly enough
-    EXPECT_EQ(extractDartStage({&pm.mesh, &pre.tets, false, 2, &est}).darts.darts.size(), 1296u);
+    EXPECT_EQ(extractDartStage({&pm.mesh, &pre.tets, pre.abs_volume, false, 2, &est}).darts.darts.size(), 1296u);
 }
 
 TEST(MemoryBudget, BadAllocBecomesAResourceErrorNamingTheStage) {

@@ -40,7 +40,7 @@ ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitReq
     addToReport(pre, r.report);
     r.preprocess_tets = static_cast<long>(pre.tets.size());
     const bool implicit = useImplicitCells(implicitRequested, pre.stats.flipped_tets);
-    DartStageOutput darts = extractDartStage({&pm.mesh, &pre.tets, implicit, threads});
+    DartStageOutput darts = extractDartStage({&pm.mesh, &pre.tets, pre.abs_volume, implicit, threads});
     addToReport(darts, r.report);
     r.darts = static_cast<long>(darts.darts.darts.size());
     r.anti = darts.anti;

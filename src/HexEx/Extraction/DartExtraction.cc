@@ -169,137 +169,221 @@ GridBox gridBox(const TetSoS& T, std::size_t c) {
     return box;
 }
 
-/// Calls emit(z, frame index) for every dart of tet @p T in key order: the grid points of
-/// @p box in x-major order, the 48 frames in lexicographic order at each. With a dense index
-/// @p di, the flags (if any) decide membership and implicit octants; with @p record, the
-/// index's offsets are appended (one per box point, the darts emitted before it).
-/// row() is called before every row of constant (x, y).
-template <class Emit, class Row>
-void forEachTetDart(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di, bool record,
-                    const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit, Row&& row) {
+/// The darts of tet @p T at grid point (x, y, zc), box index @p l of the dense index @p di
+/// (if any; its flags, if any, decide membership and implicit octants): calls emit(z, frame
+/// index) in frame order and returns their number. With kCountOnly, a point strictly inside
+/// is counted without going through its frames (6 frames per octant not implicit).
+template <bool kCountOnly, class Emit>
+std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, int y, int zc, std::size_t l,
+                         const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit) {
+    std::array<int, 4> oz;
+    bool interior = true;
+    unsigned implicitOctants = 0;
+    if (di && !di->flags.empty()) {
+        // The signs were found while marking the implicit cells.
+        const std::uint8_t fl = di->flags[l];
+        if (!(fl & 1)) return 0;
+        for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
+        interior = (fl >> 4) == 0;
+        for (unsigned o = 0; o < 8; ++o) {
+            const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1), zc - static_cast<int>(o >> 2)));
+            if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
+        }
+        if (implicitOctants == 0xFF) return 0;  // every cell around z is implicit
+    } else {
+        const Vec3d zp(x, y, zc);
+        for (int j = 0; j < 4; ++j) {
+            oz[static_cast<std::size_t>(j)] = T.side(j, zp);
+            if (oz[static_cast<std::size_t>(j)] == -T.vol) return 0;  // outside
+            if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
+        }
+    }
+    if (kCountOnly && interior) {
+        std::uint32_t n = 0;
+        for (unsigned o = 0; o < 8; ++o) n += ((implicitOctants >> o) & 1) ? 0 : 6;
+        return n;
+    }
     const auto& frames = allFrames();
-    const bool flagged = di && !di->flags.empty();
-    std::uint32_t emitted = 0;
+    const Vec3i z(x, y, zc);
+    std::uint32_t n = 0;
+    for (std::size_t fi = 0; fi < frames.size(); ++fi) {
+        const auto& f = frames[fi];
+        if ((implicitOctants >> frameOctant[fi]) & 1) continue;
+        if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
+        emit(z, fi);
+        ++n;
+    }
+    return n;
+}
+
+/// Enumerates the darts of tet @p T, the grid points of @p box in x-major order (calls
+/// emit(z, frame index) unless kCountOnly) and returns their number; with a dense index
+/// @p di, appends its offsets (one per box point: the darts before it, and the total).
+/// row(darts so far) is called before every row of constant (x, y).
+template <bool kCountOnly, class Emit, class Row>
+std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di,
+                              const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit, Row&& row) {
+    std::uint32_t counted = 0;
     std::size_t l = 0;  // local index of (x, y, zc) in the box
     for (int x = box.lo[0]; x <= box.hi[0]; ++x)
         for (int y = box.lo[1]; y <= box.hi[1]; ++y) {
-            row(emitted);
+            row(counted);
             for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
-                if (record) di->offset.push_back(emitted);
-                std::array<int, 4> oz;
-                bool interior = true;
-                unsigned implicitOctants = 0;
-                if (flagged) {
-                    // The signs were found while marking the implicit cells.
-                    const std::uint8_t fl = di->flags[l];
-                    if (!(fl & 1)) continue;
-                    for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
-                    interior = (fl >> 4) == 0;
-                    for (unsigned o = 0; o < 8; ++o) {
-                        const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1),
-                                                        zc - static_cast<int>(o >> 2)));
-                        if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
-                    }
-                    if (implicitOctants == 0xFF) continue;  // every cell around z is implicit
-                } else {
-                    bool outside = false;
-                    const Vec3d zp(x, y, zc);
-                    for (int j = 0; j < 4 && !outside; ++j) {
-                        oz[static_cast<std::size_t>(j)] = T.side(j, zp);
-                        if (oz[static_cast<std::size_t>(j)] == -T.vol) outside = true;
-                        if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
-                    }
-                    if (outside) continue;
-                }
-                const Vec3i z(x, y, zc);
-                for (std::size_t fi = 0; fi < frames.size(); ++fi) {
-                    const auto& f = frames[fi];
-                    if ((implicitOctants >> frameOctant[fi]) & 1) continue;
-                    if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
-                    emit(z, fi);
-                    ++emitted;
-                }
+                if (di) di->offset.push_back(counted);
+                counted += pointDarts<kCountOnly>(T, di, x, y, zc, l, frameOctant, emit);
             }
         }
-    if (record) di->offset.push_back(emitted);
+    if (di) di->offset.push_back(counted);
+    return counted;
+}
+
+/// Writes the darts of tet @p c (key order) to @p out. With a dense index, its offsets
+/// (from the counting pass) skip the points without darts and give the points with all 48
+/// at once; other points repeat the counting pass's tests.
+void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::DenseIndex* di,
+                   const std::array<std::uint8_t, 48>& frameOctant, Dart* out) {
+    const auto& frames = allFrames();
+    const signed char sign = static_cast<signed char>(T.vol);
+    auto emit = [&](const Vec3i& z, std::size_t fi) {
+        Dart& d = *out++;
+        d.tet = c;
+        d.z = z;
+        d.d = frames[fi];
+        d.sign = sign;
+    };
+    std::size_t l = 0;
+    for (int x = box.lo[0]; x <= box.hi[0]; ++x)
+        for (int y = box.lo[1]; y <= box.hi[1]; ++y)
+            for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
+                if (di) {
+                    const std::uint32_t n = di->offset[l + 1] - di->offset[l];
+                    if (n == 0) continue;
+                    if (n == frames.size()) {
+                        const Vec3i z(x, y, zc);
+                        for (std::size_t fi = 0; fi < frames.size(); ++fi) emit(z, fi);
+                        continue;
+                    }
+                }
+                pointDarts<false>(T, di, x, y, zc, l, frameOctant, emit);
+            }
 }
 } // namespace
 
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
-                     const std::vector<FaceMask>* usable_faces, std::size_t max_darts) {
+                     const std::vector<FaceMask>* usable_faces, double expected_cells, std::size_t max_darts) {
     std::atomic<std::size_t> extracted{0};  // all chunks together, for the cap
     constexpr std::size_t kCapCheck = 1u << 16;  // darts of one tet before its own count is checked against the cap
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<DartSet::DenseIndex>> denseParts(static_cast<std::size_t>(chunks));
     constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
-    std::vector<std::size_t> count(n, 0);
+    std::vector<std::size_t> count(n, 0);  // darts per tet
     const std::array<std::uint8_t, 48> frameOctant = frameOctants();
     auto capError = [&] {
         return ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
                              " darts, the most the memory budget allows");
     };
-    // Two passes over the same enumeration: the first counts every tet's darts (and builds
-    // the dense indices), the second writes them straight to their final place. One exact
-    // allocation, no per-thread buffers to join: a grown-and-joined array briefly held two
-    // to three times the darts (on fold-heavy maps, where the parametric volume does not
-    // predict the count, the peak of the whole extraction).
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        for (std::size_t c = b; c < e; ++c) {
-            const TetSoS& T = tets[c];
-            if (T.vol == 0) continue;
-            const GridBox box = gridBox(T, c);
-            if (box.points > max_points)
-                throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(box.points) +
-                                 " grid points (limit " + std::to_string(max_points) + ")");
-            DartSet::DenseIndex* di = nullptr;
-            if (box.points >= kDenseMinPoints) {
-                denseParts[static_cast<std::size_t>(k)].emplace_back();
-                di = &denseParts[static_cast<std::size_t>(k)].back();
-                di->tet = static_cast<int>(c);
-                for (int a = 0; a < 3; ++a) {
-                    di->lo[a] = box.lo[a];
-                    di->dims[a] = box.hi[a] - box.lo[a] + 1;
-                }
-                di->offset.reserve(static_cast<std::size_t>(box.points) + 1);
-                if (implicit_cells && T.vol > 0) markImplicitCells(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), *di);
-            }
-            std::size_t cnt = 0;
-            forEachTetDart(T, box, di, di != nullptr, frameOctant, [&](const Vec3i&, std::size_t) { ++cnt; },
-                           [&](std::uint32_t sofar) {
-                               // A tet with a huge image must not run on far beyond the budget.
-                               if (sofar > kCapCheck && extracted.load(std::memory_order_relaxed) + sofar > max_darts)
-                                   throw capError();
-                           });
-            count[c] = cnt;
-            if (extracted.fetch_add(cnt, std::memory_order_relaxed) + cnt > max_darts) throw capError();
+    // The tet's grid box and, for a large image, its dense index (with the implicit-cell
+    // flags); null for a small tet.
+    auto prepareTet = [&](int k, std::size_t c, GridBox& box) -> DartSet::DenseIndex* {
+        const TetSoS& T = tets[c];
+        box = gridBox(T, c);
+        if (box.points > max_points)
+            throw InputError("tet " + std::to_string(c) + ": parameter image spans " + std::to_string(box.points) +
+                             " grid points (limit " + std::to_string(max_points) + ")");
+        if (box.points < kDenseMinPoints) return nullptr;
+        auto& di = denseParts[static_cast<std::size_t>(k)].emplace_back();
+        di.tet = static_cast<int>(c);
+        for (int a = 0; a < 3; ++a) {
+            di.lo[a] = box.lo[a];
+            di.dims[a] = box.hi[a] - box.lo[a] + 1;
         }
-    });
+        di.offset.reserve(static_cast<std::size_t>(box.points) + 1);
+        if (implicit_cells && T.vol > 0) markImplicitCells(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), di);
+        return &di;
+    };
+    auto capCheck = [&](std::uint32_t sofar) {
+        // A tet with a huge image must not run on far beyond the budget.
+        if (sofar > kCapCheck && extracted.load(std::memory_order_relaxed) + sofar > max_darts) throw capError();
+    };
+    auto counted = [&](std::size_t c, std::size_t cnt) {
+        count[c] = cnt;
+        if (extracted.fetch_add(cnt, std::memory_order_relaxed) + cnt > max_darts) throw capError();
+    };
     DartSet s;
-    s.tet_begin.assign(n + 1, 0);
-    for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
-    std::vector<std::size_t>().swap(count);
-    s.darts.resize(s.tet_begin[n]);  // default-initialized: no pass over the memory
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        std::size_t nextDense = 0;  // the chunk's dense indices, in tet order
-        auto& dense = denseParts[static_cast<std::size_t>(k)];
-        for (std::size_t c = b; c < e; ++c) {
-            const TetSoS& T = tets[c];
-            if (T.vol == 0) continue;
-            DartSet::DenseIndex* di = nextDense < dense.size() && dense[nextDense].tet == static_cast<int>(c) ? &dense[nextDense++] : nullptr;
-            Dart* out = s.darts.data() + s.tet_begin[c];
-            const auto& frames = allFrames();
-            forEachTetDart(T, gridBox(T, c), di, false, frameOctant,
-                           [&](const Vec3i& z, std::size_t fi) {
-                               Dart& d = *out++;
-                               d.tet = static_cast<int>(c);
-                               d.z = z;
-                               d.d = frames[fi];
-                               d.sign = static_cast<signed char>(T.vol);
-                           },
-                           [](std::uint32_t) {});
+    const auto& frames = allFrames();
+    const bool folds = std::any_of(tets.begin(), tets.end(), [](const TetSoS& T) { return T.vol < 0; });
+    if (!folds) {
+        // Without flipped tets every unit cell has its 48 darts once: the volume predicts the
+        // count, chunk 0 reserves room for all (untouched reserved memory costs no RSS) and
+        // the other chunks' darts are appended to it. One pass.
+        std::vector<DartVector> parts(static_cast<std::size_t>(chunks));
+        parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+            auto& out = parts[static_cast<std::size_t>(k)];
+            const double cells = k == 0 ? expected_cells : expected_cells * static_cast<double>(e - b) / static_cast<double>(n);
+            try {
+                out.reserve(static_cast<std::size_t>(std::min(50.0 * std::max(0.0, cells) + 4096.0, 64.0 * 1024 * 1024)));
+            } catch (const std::bad_alloc&) {  // the estimate is only a hint
+            }
+            for (std::size_t c = b; c < e; ++c) {
+                const TetSoS& T = tets[c];
+                if (T.vol == 0) continue;
+                GridBox box;
+                DartSet::DenseIndex* di = prepareTet(k, c, box);
+                const int tet = static_cast<int>(c);
+                const signed char sign = static_cast<signed char>(T.vol);
+                counted(c, enumerateTetDarts<false>(T, box, di, frameOctant,
+                                                    [&](const Vec3i& z, std::size_t fi) {
+                                                        Dart& d = out.emplace_back();
+                                                        d.tet = tet;
+                                                        d.z = z;
+                                                        d.d = frames[fi];
+                                                        d.sign = sign;
+                                                    },
+                                                    capCheck));
+            }
+        });
+        std::size_t total = 0;
+        for (const auto& p : parts) total += p.size();
+        s.darts = std::move(parts[0]);
+        s.darts.reserve(total);
+        for (std::size_t k = 1; k < parts.size(); ++k) {
+            s.darts.insert(s.darts.end(), parts[k].begin(), parts[k].end());
+            DartVector().swap(parts[k]);
         }
-    });
+        s.tet_begin.assign(n + 1, 0);
+        for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+    } else {
+        // With folds the count is not predictable (fold layers multiply it), and growing and
+        // joining buffers briefly held two to three times the darts, the peak of the whole
+        // extraction. So two passes over the same enumeration: the first counts every tet's
+        // darts (points strictly inside without going through their frames) and builds the
+        // dense indices, the second writes the darts straight to their place in one array
+        // allocated at the exact size.
+        parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+            for (std::size_t c = b; c < e; ++c) {
+                if (tets[c].vol == 0) continue;
+                GridBox box;
+                DartSet::DenseIndex* di = prepareTet(k, c, box);
+                counted(c, enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, capCheck));
+            }
+        });
+        s.tet_begin.assign(n + 1, 0);
+        for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+        std::vector<std::size_t>().swap(count);
+        s.darts.resize(s.tet_begin[n]);  // default-initialized: no pass over the memory
+        parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+            std::size_t nextDense = 0;  // the chunk's dense indices, in tet order
+            auto& dense = denseParts[static_cast<std::size_t>(k)];
+            for (std::size_t c = b; c < e; ++c) {
+                const TetSoS& T = tets[c];
+                if (T.vol == 0) continue;
+                const DartSet::DenseIndex* di =
+                    nextDense < dense.size() && dense[nextDense].tet == static_cast<int>(c) ? &dense[nextDense++] : nullptr;
+                writeTetDarts(T, static_cast<int>(c), gridBox(T, c), di, frameOctant, s.darts.data() + s.tet_begin[c]);
+            }
+        });
+    }
     s.dense_slot.assign(n, -1);
     for (auto& part : denseParts)
         for (auto& di : part) {

@@ -112,12 +112,13 @@ using FaceMask = std::uint8_t;
 /// them). A corner of such a cell must lie strictly inside the tet or on a face j with bit
 /// j set in @p usable_faces[t] (the caller allows boundary faces and faces shared with a
 /// proper tet, where vertices can be joined across; without masks only strictly interior
-/// corners are used). The darts are counted first and then written in place (one exact
-/// allocation, no buffers to join).
+/// corners are used). @p expected_cells (e.g. the parametric volume) sizes the buffers of a
+/// map without flipped tets; with flipped tets the darts are counted first and then
+/// written in place (one exact allocation: fold layers make the count unpredictable).
 /// Throws ResourceError as soon as more than @p max_darts darts have been extracted (the
 /// outcome does not depend on the thread count: the total does not).
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
                      bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
-                     std::size_t max_darts = static_cast<std::size_t>(-1));
+                     double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1));
 
 } // namespace HexEx

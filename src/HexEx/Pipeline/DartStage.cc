@@ -17,7 +17,7 @@ DartStageOutput extractDartStage(const DartStageInput& in) {
     const std::size_t maxDarts = in.budget ? in.budget->max_darts : static_cast<std::size_t>(-1);
     try {
         out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
-                                 maxDarts);
+                                 in.abs_volume, maxDarts);
     } catch (const ResourceError&) {
         throw ResourceError(memoryRefusal("the darts of the map need more than the memory budget of " +
                                               formatBytes(static_cast<double>(in.budget->budget)) + " (stopped after " +

@@ -15,6 +15,7 @@ namespace HexEx {
 struct DartStageInput {
     const TetMesh* mesh = nullptr;             ///< the tet mesh (adjacency built)
     const std::vector<TetSoS>* tets = nullptr; ///< per-tet predicates (PreprocessOutput::tets)
+    double abs_volume = 0;                     ///< unsigned parametric volume (sizes buffers)
     bool implicit_cells = false;               ///< use the implicit-cell fast path (useImplicitCells())
     int threads = 1;                           ///< worker threads (resolved, >= 1)
     const MemoryEstimate* budget = nullptr;    ///< memory estimate and budget (null: no cap)
