@@ -12,27 +12,16 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
+
 #include <fstream>
 #include <new>
 #include <string>
 
 using namespace HexEx;
+using HexExTest::sphereWithNeedle;
 
 namespace {
-
-/// Examples/data/sphere.hexex with its interior vertex 40 moved by @p value along v in
-/// every tet: a genuine needle fold (all tets agree, nothing to repair); false if the file
-/// is absent.
-bool sphereWithNeedle(double value, ParametrizedTetMesh& pm) {
-    const std::string path = "Examples/data/sphere.hexex";
-    if (!std::ifstream(path)) return false;
-    pm = readHexExFile(path);
-    for (std::size_t c = 0; c < pm.params.size(); ++c)
-        for (int k = 0; k < 4; ++k)
-            if (pm.mesh.cell_vertex(CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += value;
-    pm.mesh.build_adjacency();
-    return true;
-}
 
 /// The message of the ResourceError that extracting @p pm with @p opt throws ("" if none).
 std::string refusal(const ParametrizedTetMesh& pm, const ExtractionOptions& opt) {

@@ -2,14 +2,31 @@
 // Mesh checks shared by the extraction tests.
 
 #include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexExFile.hh>
 #include <HexEx/Mesh/HexMesh.hh>
 
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
 namespace HexExTest {
+
+/// Examples/data/sphere.hexex with its interior vertex 40 moved by @p value along v in
+/// every tet: a genuine needle fold (all tets agree, nothing to repair; the fold cancels
+/// to the clean sphere's 216 hexes), adjacency built; false if the file is absent.
+inline bool sphereWithNeedle(double value, HexEx::ParametrizedTetMesh& pm) {
+    const std::string path = "Examples/data/sphere.hexex";
+    if (!std::ifstream(path)) return false;
+    pm = HexEx::readHexExFile(path);
+    for (std::size_t c = 0; c < pm.params.size(); ++c)
+        for (int k = 0; k < 4; ++k)
+            if (pm.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += value;
+    pm.mesh.build_adjacency();
+    return true;
+}
 
 /// The hex mesh extracted from @p pm with default options (adjacency built here).
 inline HexEx::HexMesh extracted(HexEx::ParametrizedTetMesh pm) {

@@ -236,12 +236,26 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
             if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
         if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
     }
+    // Cancelled fold points passed on the way (each occurrence at most once per direction).
+    long passed = 0;
+    const long maxPassed = 2 * set.n_cancelled + 2;
     for (int step = 0; step < kMaxSteps; ++step) {
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
         if (T.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
             const long found = set.find(t, target.z, target.d);
             if (found >= 0) return found;
             if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+            if (i == 0 && set.cancelledPoint(t, target.z) &&
+                T.contains(T.sides(Vec3d(target.z[0], target.z[1], target.z[2])), target.d[0], target.d[1], target.d[2])) {
+                // The edge's end is a cancelled fold point (FoldCancellation.hh): go on along
+                // the line as the dart there would, to the next grid point, in this tet first.
+                // Annihilation would have joined this dart to the one found that way.
+                if (++passed > maxPassed) return kUnconnected;
+                start = Desc{target.z, {dirNeg(target.d[0]), target.d[1], target.d[2]}};
+                target = alphaStar(0, start);
+                --step;
+                continue;
+            }
         }
         const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry, mesh, t);
         if (f < 0) return kUnconnected;
@@ -447,6 +461,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         if (p == kUnconnected) ++st.unconnected[i];
         else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
     };
+    // Walks that pass cancelled fold points are traced per dart (traceOne() handles them).
+    shareEdgeTraces = shareEdgeTraces && darts.n_cancelled == 0;
     const auto& D = darts.darts;
     auto sameRun = [&](std::size_t x, std::size_t y) { return D[x].tet == D[y].tet && samePoint(D[x].z, D[y].z); };
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {

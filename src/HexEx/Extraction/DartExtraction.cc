@@ -2,6 +2,7 @@
 
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
+#include "FoldCancellation.hh"
 
 #include <algorithm>
 #include <atomic>
@@ -270,7 +271,8 @@ void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::De
 } // namespace
 
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
-                     const std::vector<FaceMask>* usable_faces, double expected_cells, std::size_t max_darts) {
+                     const std::vector<FaceMask>* usable_faces, double expected_cells, std::size_t max_darts,
+                     const std::vector<int>* chart_component) {
     std::atomic<std::size_t> extracted{0};  // all chunks together, for the cap
     constexpr std::size_t kCapCheck = 1u << 16;  // darts of one tet before its own count is checked against the cap
     const std::size_t n = tets.size();
@@ -368,6 +370,12 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                 counted(c, enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, capCheck));
             }
         });
+        if (chart_component) {
+            std::vector<DartSet::DenseIndex*> all;
+            for (auto& part : denseParts)
+                for (auto& di : part) all.push_back(&di);
+            s.n_cancelled = cancelFoldPoints(tets, *chart_component, all, count);
+        }
         s.tet_begin.assign(n + 1, 0);
         for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
         std::vector<std::size_t>().swap(count);

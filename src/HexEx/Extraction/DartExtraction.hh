@@ -60,6 +60,9 @@ struct DartSet {
         /// cell, bits 4..7 = lies on face j (o_j = 0). Empty unless implicit cells are on.
         std::vector<std::uint8_t> flags;
         long occ_base = 0;                  ///< first occurrence id of this box (see occurrence())
+        /// Per box point: a cancelled fold point (FoldCancellation.hh), without darts. Empty
+        /// if the tet has none.
+        std::vector<bool> cancelled;
         /// Local index of @p z in the box, or -1 outside.
         long local(const Vec3i& z) const {
             long l = 0;
@@ -76,12 +79,24 @@ struct DartSet {
 
     long n_occurrences = 0;             ///< total box points of the dense indices
     long n_implicit_cells = 0;          ///< unit cells produced without darts
+    long n_cancelled = 0;               ///< (tet, grid point) occurrences cancelled as fold points (no darts)
 
     /// Index of the dart of tet @p t with key (z, d), or -1.
     long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
     /// Occurrence id of grid point @p z in the closed image of tet @p t (a vertex known
     /// without darts), or -1 if @p t has no dense index with flags or @p z is outside.
     long occurrence(int t, const Vec3i& z) const;
+    /// True if @p z is a cancelled fold point of tet @p t: inside it, all its darts cancelled
+    /// and not stored (the alpha_0 tracing walks through it).
+    bool cancelledPoint(int t, const Vec3i& z) const {
+        if (n_cancelled == 0) return false;
+        const int slot = dense_slot[static_cast<std::size_t>(t)];
+        if (slot < 0) return false;
+        const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+        if (di.cancelled.empty()) return false;
+        const long l = di.local(z);
+        return l >= 0 && di.cancelled[static_cast<std::size_t>(l)];
+    }
     /// True if the unit cell of the dart (z, d) in tet @p t is implicit (no darts stored).
     bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
 };
@@ -115,10 +130,13 @@ using FaceMask = std::uint8_t;
 /// corners are used). @p expected_cells (e.g. the parametric volume) sizes the buffers of a
 /// map without flipped tets; with flipped tets the darts are counted first and then
 /// written in place (one exact allocation: fold layers make the count unpredictable).
+/// With @p chart_component (identityChartComponents()) and flipped tets, cancelled fold
+/// points get no darts (cancelFoldPoints(); DartSet::n_cancelled counts them).
 /// Throws ResourceError as soon as more than @p max_darts darts have been extracted (the
 /// outcome does not depend on the thread count: the total does not).
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
                      bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
-                     double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1));
+                     double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1),
+                     const std::vector<int>* chart_component = nullptr);
 
 } // namespace HexEx

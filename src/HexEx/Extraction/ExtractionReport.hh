@@ -31,6 +31,10 @@ struct ExtractionOptions {
     /// without darts (much less memory for coarse tet meshes). Used only when no tet is
     /// flipped; the output is the same as without it.
     bool implicit_cells = true;
+    /// Cheap folds: grid points covered by exactly one proper and one flipped large tet of
+    /// one chart (their darts would all annihilate) get no darts, and the tracing walks
+    /// through them. Not used with #arcs. Off: every dart is extracted and annihilated.
+    bool cheap_folds = true;
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
     double max_hexes = 4e7;
@@ -91,6 +95,7 @@ struct ExtractionReport {
         long remaining_anti = 0;     ///< anti darts left after annihilation
         long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
         long implicit_cells = 0;     ///< hexes built from the grid inside one tet, without darts
+        long cancelled_fold_points = 0;  ///< (tet, grid point) occurrences of cancelled fold points (no darts; ExtractionOptions::cheap_folds)
     } darts;  ///< dart statistics
     /// Edge arcs and face patches (only with ExtractionOptions::arcs).
     struct Arcs {

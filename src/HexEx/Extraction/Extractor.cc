@@ -80,7 +80,8 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.preprocess = clock.lap();
 
     enter("darts");
-    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads, &state.estimate});
+    DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads, &state.estimate, &pre.transitions,
+                                                   opt.cheap_folds && !opt.arcs});
     addToReport(darts, rep);
     rep.timings_s.darts = clock.lap();
 

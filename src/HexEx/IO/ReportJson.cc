@@ -130,6 +130,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("annihilated_pairs", d.annihilated_pairs);
             w.num("remaining_anti", d.remaining_anti);
             w.num("asymmetric_links", d.asymmetric_links);
+            w.num("cancelled_fold_points", d.cancelled_fold_points);
         }));
         if (r.arcs.edges > 0 || r.arcs.faces > 0) {
             // Only with ExtractionOptions::arcs (hexex extract --edge-arcs / --face-patches).

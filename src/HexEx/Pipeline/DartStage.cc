@@ -3,7 +3,10 @@
 #include "../Core/Error.hh"
 #include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
+#include "../Extraction/FoldCancellation.hh"
 #include "ImplicitCellPath.hh"
+
+#include <algorithm>
 
 #include <limits>
 
@@ -15,9 +18,12 @@ DartStageOutput extractDartStage(const DartStageInput& in) {
     std::vector<FaceMask> usableFaces;
     if (in.implicit_cells) usableFaces = implicitCellFaces(*in.mesh, *in.tets);
     const std::size_t maxDarts = in.budget ? in.budget->max_darts : static_cast<std::size_t>(-1);
+    std::vector<int> components;
+    const bool folds = std::any_of(in.tets->begin(), in.tets->end(), [](const TetSoS& T) { return T.vol < 0; });
+    if (in.cheap_folds && in.transitions && folds) components = identityChartComponents(*in.mesh, *in.transitions);
     try {
         out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
-                                 in.abs_volume, maxDarts);
+                                 in.abs_volume, maxDarts, components.empty() ? nullptr : &components);
     } catch (const ResourceError&) {
         throw ResourceError(memoryRefusal("the darts of the map need more than the memory budget of " +
                                               formatBytes(static_cast<double>(in.budget->budget)) + " (stopped after " +

@@ -4,6 +4,7 @@
 /// grid points they sit on), with the implicit-cell fast path where it applies.
 
 #include "../Extraction/DartExtraction.hh"
+#include "../Preprocessing/Transitions.hh"
 #include "../Mesh/TetMesh.hh"
 #include "MemoryBudget.hh"
 
@@ -19,6 +20,10 @@ struct DartStageInput {
     bool implicit_cells = false;               ///< use the implicit-cell fast path (useImplicitCells())
     int threads = 1;                           ///< worker threads (resolved, >= 1)
     const MemoryEstimate* budget = nullptr;    ///< memory estimate and budget (null: no cap)
+    /// Transitions per halfface; with @p cheap_folds, fold points whose darts all cancel get
+    /// no darts (FoldCancellation.hh; only with flipped tets).
+    const Transitions* transitions = nullptr;
+    bool cheap_folds = false;                  ///< see @p transitions (ExtractionOptions::cheap_folds)
 };
 
 /// Output of extractDartStage().

@@ -17,6 +17,7 @@ void addToReport(const PreprocessOutput& out, ExtractionReport& rep) {
 void addToReport(const DartStageOutput& out, ExtractionReport& rep) {
     rep.darts.extracted = static_cast<long>(out.darts.darts.size());
     rep.darts.anti = out.anti;
+    rep.darts.cancelled_fold_points = out.darts.n_cancelled;
 }
 
 void addToReport(const ConnectOutput& out, ExtractionReport& rep) { rep.darts.asymmetric_links = out.asymmetric_links; }
