@@ -372,6 +372,27 @@ TEST_F(CliEndToEndTest, ACorruptedNumberIsRepairedWithAWarning) {
     EXPECT_NE(json.find("\"repairs\": ["), std::string::npos) << json;
 }
 
+TEST_F(CliEndToEndTest, ANeedleFoldIsSkippedUnlessFullAnnihilationIsAsked) {
+    const std::string sphere = "Examples/data/sphere.hexex";
+    if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
+    for (std::size_t c = 0; c < pm.params.size(); ++c)
+        for (int k = 0; k < 4; ++k)
+            if (pm.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += 500;
+    HexEx::writeHexExFile(path("needle.hexex"), pm);
+    const RunResult cheap = run({"extract", path("needle.hexex"), "-o", path("cheap.ovm"), "--report", path("cheap.json")});
+    ASSERT_EQ(cheap.status, 0) << cheap.err;
+    EXPECT_NE(cheap.out.find("216 hexes, 343 vertices, valid all-hex"), std::string::npos) << cheap.out;
+    const RunResult full = run({"extract", path("needle.hexex"), "-o", path("full.ovm"), "--report", path("full.json"),
+                                "--full-annihilation"});
+    ASSERT_EQ(full.status, 0) << full.err;
+    EXPECT_EQ(slurp(path("cheap.ovm")), slurp(path("full.ovm")));  // the same mesh, byte for byte
+    const std::string cj = slurp(path("cheap.json")), fj = slurp(path("full.json"));
+    EXPECT_NE(fj.find("\"cancelled_fold_points\": 0"), std::string::npos) << fj;
+    EXPECT_EQ(cj.find("\"cancelled_fold_points\": 0"), std::string::npos) << cj;
+    EXPECT_NE(cj.find("\"cancelled_fold_points\": "), std::string::npos) << cj;
+}
+
 TEST_F(CliEndToEndTest, MaxMemoryRejectsABadSize) {
     generateCube("cube.hexex", 1, 1);
     const RunResult r = run({"extract", path("cube.hexex"), "-o", path("out.vtu"), "--max-memory", "12X"});

@@ -44,6 +44,8 @@ const char* kExtractUsage =
     "  --threads N             worker threads (0 = all hardware threads, default); output is identical\n"
     "  --epsilon E             snap parameters this close to an integer (default 1e-6)\n"
     "  --no-merge              keep regular/anti dart pairs (skip annihilation and vertex merging)\n"
+    "  --full-annihilation     extract and annihilate the darts of fold points that cancel out\n"
+    "                          instead of skipping them (slower; may pick other fold copies)\n"
     "  --max-memory SIZE       memory budget, e.g. 2G, 500M (default: half of the available memory);\n"
     "                          maps that would need more are refused at once with the likely cause\n"
     "  --singularities S.vtk   write the singular edges of the input as legacy VTK lines\n"
@@ -202,7 +204,7 @@ int runExtract(const Args& args) {
         {"--output", true, "-o"},   {"--report", true, ""},        {"--threads", true, ""},
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
-        {"--encoding", true, ""},         {"--max-memory", true, ""},
+        {"--encoding", true, ""},         {"--max-memory", true, ""},      {"--full-annihilation", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
@@ -239,6 +241,7 @@ int runExtract(const Args& args) {
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
         opt.merge = !pa.has("--no-merge");
+        opt.cheap_folds = !pa.has("--full-annihilation");
         if (pa.has("--max-memory")) {
             try {
                 opt.max_memory = HexEx::parseByteSize(pa.get("--max-memory"));
