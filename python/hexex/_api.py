@@ -49,7 +49,7 @@ def _check_float(value, name: str) -> float:
 
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
-            rotations=None, max_memory: int = 0) -> ExtractionResult:
+            rotations=None, max_memory: int = 0, cheap_folds: bool = True) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
     Args:
@@ -69,6 +69,9 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             The extractor estimates what it needs before allocating and raises
             ``MemoryError`` (naming the tets with the largest parametric images) if the
             estimate exceeds the budget.
+        cheap_folds: skip grid points where a fold layer exactly cancels a proper layer
+            (their darts would all annihilate); False extracts and annihilates them like
+            all others (``hexex extract --full-annihilation``).
 
     Returns:
         ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
@@ -90,7 +93,7 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
         rotations = as_index_array(rotations, "rotations", (tets.shape[0], 4), dtypes=(np.int32,))
     max_memory = _check_int(max_memory, "max_memory", 0, maximum=2**64 - 1)
     pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
-                                                  max_memory)
+                                                  max_memory, bool(cheap_folds))
     return ExtractionResult(pts, hexes, polyhedra, json.loads(report))
 
 

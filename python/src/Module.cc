@@ -33,7 +33,8 @@ double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>
 /// Extracts the hex mesh of the map given as arrays; returns (points, hexes, polyhedra,
 /// report JSON). The GIL is released from the conversion to the end of the extraction.
 nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const DoubleArray& params, int threads,
-                  double epsilon, bool merge, const std::optional<Int32Array>& rotations, std::uint64_t max_memory) {
+                  double epsilon, bool merge, const std::optional<Int32Array>& rotations, std::uint64_t max_memory,
+                  bool cheap_folds) {
     if (threads < 0) throw std::invalid_argument("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(threads));
     if (!(epsilon >= 0 && epsilon < 0.5)) throw std::invalid_argument("epsilon must be in [0, 0.5), got " + HexEx::jsonNumber(epsilon));
     const TetIndices tetIdx = tetIndices(tets);
@@ -58,6 +59,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
             opt.epsilon = epsilon;
             opt.merge = merge;
             opt.max_memory = max_memory;
+            opt.cheap_folds = cheap_folds;
             if (rotations) opt.given_rotations = &given;
             rep = HexEx::extractHexMesh(pm, hm, opt);
         }
@@ -89,7 +91,7 @@ NB_MODULE(_core, m) {
     });
     m.def("version", &HexEx::version, "Library version string (x.y.z).");
     m.def("extract", &HexExPython::extract, nb::arg("points"), nb::arg("tets"), nb::arg("params"), nb::arg("threads"),
-          nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(), nb::arg("max_memory"),
+          nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(), nb::arg("max_memory"), nb::arg("cheap_folds"),
           "Extracts the hex mesh of checked arrays; returns (points, hexes, polyhedra, report_json).");
     HexExPython::bindMapFunctions(m);
     HexExPython::bindHexMeshFunctions(m);

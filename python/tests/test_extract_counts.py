@@ -96,3 +96,17 @@ def test_empty_mesh_gives_empty_result():
     assert r.report["input"]["tets"] == 0
     # The mesh-level validator wants at least one cell.
     assert hexex.validate(r)["valid_all_hex"] is False
+
+
+def test_needle_fold_is_skipped_with_the_same_mesh(repo_root):
+    m = hexex.read_map(repo_root / "Examples" / "data" / "sphere.hexex")
+    params = m.params.copy()
+    params[m.tets == 40, 1] += 400.0  # the interior vertex 40 moved far in all its tets: a needle fold
+    cheap = extract_checked((m.points, m.tets, params))
+    full = extract_checked((m.points, m.tets, params), cheap_folds=False)
+    assert (len(cheap.hexes), len(cheap.points)) == (216, 343) and cheap.valid_all_hex
+    np.testing.assert_array_equal(cheap.points, full.points)
+    np.testing.assert_array_equal(cheap.hexes, full.hexes)
+    assert cheap.report["darts"]["cancelled_fold_points"] > 0
+    assert full.report["darts"]["cancelled_fold_points"] == 0
+    assert cheap.report["darts"]["extracted"] < full.report["darts"]["extracted"] // 4
