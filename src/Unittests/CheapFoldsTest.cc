@@ -74,7 +74,9 @@ TEST(CheapFolds, NeedleGivesTheCleanMeshWithDartsIndependentOfItsLength) {
         EXPECT_TRUE(r.report.valid_all_hex);
         EXPECT_GT(r.report.darts.cancelled_fold_points, 0);
         // The fold's inside costs no darts: the same number for any length of the needle.
-        if (darts >= 0) EXPECT_EQ(r.report.darts.extracted, darts);
+        if (darts >= 0) {
+            EXPECT_EQ(r.report.darts.extracted, darts);
+        }
         darts = r.report.darts.extracted;
     }
 }

@@ -245,8 +245,9 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
             const long found = set.find(t, target.z, target.d);
             if (found >= 0) return found;
             if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
-            if (i == 0 && set.cancelledPoint(t, target.z) &&
-                T.contains(T.sides(Vec3d(target.z[0], target.z[1], target.z[2])), target.d[0], target.d[1], target.d[2])) {
+            const int cancelled = i == 0 ? set.cancelledPoint(t, target.z) : 0;
+            if (cancelled == 1 ||
+                (cancelled == 2 && T.contains(set.pointSides(t, T, target.z), target.d[0], target.d[1], target.d[2]))) {
                 // The edge's end is a cancelled fold point (FoldCancellation.hh): go on along
                 // the line as the dart there would, to the next grid point, in this tet first.
                 // Annihilation would have joined this dart to the one found that way.

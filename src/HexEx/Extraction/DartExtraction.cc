@@ -66,6 +66,20 @@ long DartSet::occurrence(int t, const Vec3i& z) const {
     return di.occ_base + l;
 }
 
+std::array<int, 4> DartSet::pointSides(int t, const TetSoS& T, const Vec3i& z) const {
+    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
+    if (slot >= 0) {
+        const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+        const long l = di.flags.empty() ? -1 : di.local(z);
+        if (l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 1)) {
+            std::array<int, 4> oz;
+            for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((di.flags[static_cast<std::size_t>(l)] >> (4 + j)) & 1) ? 0 : T.vol;
+            return oz;
+        }
+    }
+    return T.sides(Vec3d(z[0], z[1], z[2]));
+}
+
 bool DartSet::implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
     const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
     if (slot < 0) return false;
@@ -76,51 +90,65 @@ bool DartSet::implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& 
 }
 
 namespace {
-/// Fills the flags of a proper tet's dense index: which box points lie in the closed image
-/// (and on which faces), which may be implicit-cell corners, and which unit cells are
-/// implicit (all 8 corners usable: the closed image is convex, so it contains the cell).
-void markImplicitCells(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di) {
+/// Fills the flags of a tet's dense index: which box points lie in the closed image (and on
+/// which faces) and, with @p implicit (proper tets only), which may be implicit-cell corners
+/// and which unit cells are implicit (all 8 corners usable: the closed image is convex, so
+/// it contains the cell). Costs O(log) predicates per row instead of four per point.
+void markBoxFlags(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di, bool implicit) {
+    di.implicit_marks = implicit;
     const int dx = di.dims[0], dy = di.dims[1], dz = di.dims[2];
     di.flags.assign(static_cast<std::size_t>(dx) * static_cast<std::size_t>(dy) * static_cast<std::size_t>(dz), 0);
-    // o_j is affine along a row of constant (x, y): its signs along the row are s(lo), then
-    // at most one zero, then s(hi). Exact signs at the row ends and a binary search for the
-    // change replace one predicate per point by O(log dz) per row.
-    std::vector<int> sign(static_cast<std::size_t>(dz) * 4);
-    std::size_t l = 0;
-    for (int x = 0; x < dx; ++x)
-        for (int y = 0; y < dy; ++y, l += static_cast<std::size_t>(dz)) {
-            auto side = [&](int j, int zc) { return T.side(j, Vec3d(di.lo[0] + x, di.lo[1] + y, di.lo[2] + zc)); };
-            bool rowOutside = false;
-            for (int j = 0; j < 4 && !rowOutside; ++j) {
-                int* sj = sign.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(dz);
-                const int s0 = side(j, 0), s1 = dz > 1 ? side(j, dz - 1) : s0;
-                if (s0 == s1) {  // constant along the row (zero twice: identically zero)
-                    if (s0 == -T.vol) rowOutside = true;
-                    std::fill(sj, sj + dz, s0);
+    // o_j is affine along a line of the box: its signs along the line are s(first), then at
+    // most one zero, then s(last). Exact signs at the line ends and a binary search for the
+    // change replace one predicate per point by O(log n) per line. The lines run along the
+    // longest axis of the box (a needle's box is long in one direction only).
+    const std::size_t stride[3] = {static_cast<std::size_t>(dy) * static_cast<std::size_t>(dz), static_cast<std::size_t>(dz), 1};
+    const int ra = dz >= dx && dz >= dy ? 2 : (dy >= dx ? 1 : 0);  // line axis (z on ties: contiguous)
+    const int ob = ra == 0 ? 1 : 0, oc = ra == 2 ? 1 : 2;          // the other two axes
+    const int n = di.dims[ra];
+    std::vector<int> sign(static_cast<std::size_t>(n) * 4);
+    for (int ib = 0; ib < di.dims[ob]; ++ib)
+        for (int ic = 0; ic < di.dims[oc]; ++ic) {
+            int p[3];
+            p[ob] = ib;
+            p[oc] = ic;
+            auto side = [&](int j, int k) {
+                p[ra] = k;
+                return T.side(j, Vec3d(di.lo[0] + p[0], di.lo[1] + p[1], di.lo[2] + p[2]));
+            };
+            bool lineOutside = false;
+            for (int j = 0; j < 4 && !lineOutside; ++j) {
+                int* sj = sign.data() + static_cast<std::size_t>(j) * static_cast<std::size_t>(n);
+                const int s0 = side(j, 0), s1 = n > 1 ? side(j, n - 1) : s0;
+                if (s0 == s1) {  // constant along the line (zero twice: identically zero)
+                    if (s0 == -T.vol) lineOutside = true;
+                    std::fill(sj, sj + n, s0);
                     continue;
                 }
-                // First index whose sign differs from s0 (sign at dz-1 differs).
-                int a = 0, b = dz - 1;
+                // First index whose sign differs from s0 (the sign at n-1 differs).
+                int a = 0, b = n - 1;
                 while (b - a > 1) {
                     const int m = a + (b - a) / 2;
                     (side(j, m) == s0 ? a : b) = m;
                 }
                 std::fill(sj, sj + b, s0);
-                std::fill(sj + b, sj + dz, s1);
-                if (s0 != 0 && b < dz - 1 && side(j, b) == 0) sj[b] = 0;
+                std::fill(sj + b, sj + n, s1);
+                if (s0 != 0 && b < n - 1 && side(j, b) == 0) sj[b] = 0;
             }
-            if (rowOutside) continue;
-            for (int zc = 0; zc < dz; ++zc) {
+            if (lineOutside) continue;
+            const std::size_t base = static_cast<std::size_t>(ib) * stride[ob] + static_cast<std::size_t>(ic) * stride[oc];
+            for (int k = 0; k < n; ++k) {
                 unsigned fl = 1;
                 for (int j = 0; j < 4 && fl; ++j) {
-                    const int s = sign[static_cast<std::size_t>(j) * static_cast<std::size_t>(dz) + static_cast<std::size_t>(zc)];
-                    if (s == -T.vol) fl = 0;
-                    else if (s == 0) fl |= 16u << j;
+                    const int sk = sign[static_cast<std::size_t>(j) * static_cast<std::size_t>(n) + static_cast<std::size_t>(k)];
+                    if (sk == -T.vol) fl = 0;
+                    else if (sk == 0) fl |= 16u << j;
                 }
-                if (fl && ((fl >> 4) & ~static_cast<unsigned>(usable)) == 0) fl |= 4;
-                di.flags[l + static_cast<std::size_t>(zc)] = static_cast<std::uint8_t>(fl);
+                if (implicit && fl && ((fl >> 4) & ~static_cast<unsigned>(usable)) == 0) fl |= 4;
+                di.flags[base + static_cast<std::size_t>(k) * stride[ra]] = static_cast<std::uint8_t>(fl);
             }
         }
+    if (!implicit) return;
     auto at = [&](int x, int y, int zc) { return di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
     for (int x = 0; x + 1 < dx; ++x)
         for (int y = 0; y + 1 < dy; ++y)
@@ -186,7 +214,7 @@ std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, 
         if (!(fl & 1)) return 0;
         for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
         interior = (fl >> 4) == 0;
-        for (unsigned o = 0; o < 8; ++o) {
+        for (unsigned o = 0; o < 8 && di->implicit_marks; ++o) {
             const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1), zc - static_cast<int>(o >> 2)));
             if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
         }
@@ -285,6 +313,11 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         return ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
                              " darts, the most the memory budget allows");
     };
+    // With flipped tets the counting pass comes first: the dense indices then get their
+    // in-image and on-face flags by rows (a few predicates per row instead of four per
+    // point), which both passes read.
+    const bool folds = std::any_of(tets.begin(), tets.end(), [](const TetSoS& T) { return T.vol < 0; });
+    const bool rowSigns = folds;
     // The tet's grid box and, for a large image, its dense index (with the implicit-cell
     // flags); null for a small tet.
     auto prepareTet = [&](int k, std::size_t c, GridBox& box) -> DartSet::DenseIndex* {
@@ -301,7 +334,8 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
             di.dims[a] = box.hi[a] - box.lo[a] + 1;
         }
         di.offset.reserve(static_cast<std::size_t>(box.points) + 1);
-        if (implicit_cells && T.vol > 0) markImplicitCells(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), di);
+        if (implicit_cells && T.vol > 0) markBoxFlags(T, usable_faces ? (*usable_faces)[c] : FaceMask(0), di, true);
+        else if (rowSigns) markBoxFlags(T, FaceMask(0), di, false);
         return &di;
     };
     auto capCheck = [&](std::uint32_t sofar) {
@@ -314,7 +348,6 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     };
     DartSet s;
     const auto& frames = allFrames();
-    const bool folds = std::any_of(tets.begin(), tets.end(), [](const TetSoS& T) { return T.vol < 0; });
     if (!folds) {
         // Without flipped tets every unit cell has its 48 darts once: the volume predicts the
         // count, chunk 0 reserves room for all (untouched reserved memory costs no RSS) and

@@ -57,12 +57,17 @@ struct DartSet {
         std::vector<std::uint32_t> offset;  ///< per box point (x-major), first dart relative to tet_begin; one extra at the end
         /// Per box point: bit 0 = in the closed tet image, bit 1 = the unit cell with this
         /// lower corner is implicit (no darts stored), bit 2 = may be a corner of an implicit
-        /// cell, bits 4..7 = lies on face j (o_j = 0). Empty unless implicit cells are on.
+        /// cell, bits 4..7 = lies on face j (o_j = 0). Empty unless implicit cells are on or
+        /// the map has flipped tets (then bits 1 and 2 are never set).
         std::vector<std::uint8_t> flags;
+        bool implicit_marks = false;        ///< bits 1 and 2 of #flags were computed
         long occ_base = 0;                  ///< first occurrence id of this box (see occurrence())
         /// Per box point: a cancelled fold point (FoldCancellation.hh), without darts. Empty
         /// if the tet has none.
         std::vector<bool> cancelled;
+        /// Per box point: cancelled, and the tet owned only some of its frames there (the
+        /// point is on its boundary). Empty if the tet has no such point.
+        std::vector<bool> cancelled_partly;
         /// Local index of @p z in the box, or -1 outside.
         long local(const Vec3i& z) const {
             long l = 0;
@@ -86,17 +91,23 @@ struct DartSet {
     /// Occurrence id of grid point @p z in the closed image of tet @p t (a vertex known
     /// without darts), or -1 if @p t has no dense index with flags or @p z is outside.
     long occurrence(int t, const Vec3i& z) const;
-    /// True if @p z is a cancelled fold point of tet @p t: inside it, all its darts cancelled
-    /// and not stored (the alpha_0 tracing walks through it).
-    bool cancelledPoint(int t, const Vec3i& z) const {
-        if (n_cancelled == 0) return false;
+    /// Whether @p z is a cancelled fold point of tet @p t (its darts cancelled and not
+    /// stored; the alpha_0 tracing walks through it): 0 no, 1 yes and @p t owned all 48
+    /// frames there, 2 yes and @p t owned some of them (z on its boundary).
+    int cancelledPoint(int t, const Vec3i& z) const {
+        if (n_cancelled == 0) return 0;
         const int slot = dense_slot[static_cast<std::size_t>(t)];
-        if (slot < 0) return false;
+        if (slot < 0) return 0;
         const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
-        if (di.cancelled.empty()) return false;
+        if (di.cancelled.empty()) return 0;
         const long l = di.local(z);
-        return l >= 0 && di.cancelled[static_cast<std::size_t>(l)];
+        if (l < 0 || !di.cancelled[static_cast<std::size_t>(l)]) return 0;
+        return !di.cancelled_partly.empty() && di.cancelled_partly[static_cast<std::size_t>(l)] ? 2 : 1;
     }
+    /// Signs of the four face functions of tet @p t (data @p T) at grid point @p z: read from
+    /// the dense index's flags when it has them and @p z is in the closed image, else
+    /// computed (TetSoS::sides()).
+    std::array<int, 4> pointSides(int t, const TetSoS& T, const Vec3i& z) const;
     /// True if the unit cell of the dart (z, d) in tet @p t is implicit (no darts stored).
     bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
 };

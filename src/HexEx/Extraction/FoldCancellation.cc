@@ -85,9 +85,9 @@ void forEachPoint(const IntBox& b, F&& f) {
             for (long z = b.lo[2]; z <= b.hi[2]; ++z) f(x, y, z);
 }
 
-/// The frames (bit = index in allFrames()) that tet @p T owns at grid point @p z.
-std::uint64_t frameMask(const TetSoS& T, long x, long y, long z) {
-    const std::array<int, 4> oz = T.sides(Vec3d(static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)));
+/// The frames (bit = index in allFrames()) that a tet with face signs @p oz at a grid point
+/// owns there.
+std::uint64_t frameMask(const TetSoS& T, const std::array<int, 4>& oz) {
     const auto& frames = allFrames();
     std::uint64_t m = 0;
     for (std::size_t f = 0; f < frames.size(); ++f)
@@ -166,7 +166,16 @@ long cancelFoldPoints(const std::vector<TetSoS>& tets, const std::vector<int>& c
             if (n == 0) return;
             const std::size_t g = r.box.local(x, y, z);
             if (r.mixed[g]) return;
-            const std::uint64_t m = n == kAll ? kAllFrames : frameMask(T, x, y, z);
+            std::uint64_t m = kAllFrames;
+            if (n != kAll) {
+                std::array<int, 4> oz;
+                const std::size_t l = own.local(x, y, z);
+                if (!di.flags.empty() && (di.flags[l] & 1))  // signs found by rows in the counting pass
+                    for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((di.flags[l] >> (4 + j)) & 1) ? 0 : T.vol;
+                else
+                    oz = T.sides(Vec3d(static_cast<double>(x), static_cast<double>(y), static_cast<double>(z)));
+                m = frameMask(T, oz);
+            }
             std::uint64_t& owned = T.vol > 0 ? r.regular[g] : r.anti[g];
             if (owned & m) r.mixed[g] = 1;
             owned |= m;
@@ -187,6 +196,10 @@ long cancelFoldPoints(const std::vector<TetSoS>& tets, const std::vector<int>& c
             if (n == 0 || r.mixed[g] || r.regular[g] != kAllFrames || r.anti[g] != kAllFrames) return;
             if (di->cancelled.empty()) di->cancelled.assign(di->offset.size() - 1, false);
             di->cancelled[l] = true;
+            if (n != kAll) {
+                if (di->cancelled_partly.empty()) di->cancelled_partly.assign(di->offset.size() - 1, false);
+                di->cancelled_partly[l] = true;
+            }
             removed += n;
             ++occurrences;
         });
