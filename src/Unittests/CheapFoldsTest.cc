@@ -12,12 +12,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
 #include <string>
 
 #include "TestMeshChecks.hh"
 
 using namespace HexEx;
+using HexExTest::expectSameMesh;
 
 namespace {
 
@@ -33,17 +33,6 @@ FoldRun extractWith(const ParametrizedTetMesh& pm, bool cheap, int threads = 2) 
     opt.cheap_folds = cheap;
     r.report = extractHexMesh(pm, r.mesh, opt);
     return r;
-}
-
-/// Bitwise equality of two meshes.
-void expectSameMesh(const HexMesh& a, const HexMesh& b) {
-    ASSERT_EQ(a.vertices.size(), b.vertices.size());
-    long moved = 0;
-    for (std::size_t v = 0; v < a.vertices.size(); ++v)
-        moved += std::memcmp(a.vertices[v].data(), b.vertices[v].data(), 3 * sizeof(double)) != 0;
-    EXPECT_EQ(moved, 0);
-    EXPECT_EQ(a.hexes, b.hexes);
-    EXPECT_EQ(a.polyhedra.size(), b.polyhedra.size());
 }
 
 /// Cheap folds on and off give the same mesh and counts; returns the run with them on.

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "TestMeshChecks.hh"
 #include "ToolPath.hh"
 
 #include <HexEx/IO/HexExFile.hh>
@@ -375,10 +376,8 @@ TEST_F(CliEndToEndTest, ACorruptedNumberIsRepairedWithAWarning) {
 TEST_F(CliEndToEndTest, ANeedleFoldIsSkippedUnlessFullAnnihilationIsAsked) {
     const std::string sphere = "Examples/data/sphere.hexex";
     if (!std::ifstream(sphere)) GTEST_SKIP() << sphere << " not present";
-    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(sphere);
-    for (std::size_t c = 0; c < pm.params.size(); ++c)
-        for (int k = 0; k < 4; ++k)
-            if (pm.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += 500;
+    HexEx::ParametrizedTetMesh pm;
+    ASSERT_TRUE(HexExTest::sphereWithNeedle(500, pm));
     HexEx::writeHexExFile(path("needle.hexex"), pm);
     const RunResult cheap = run({"extract", path("needle.hexex"), "-o", path("cheap.ovm"), "--report", path("cheap.json")});
     ASSERT_EQ(cheap.status, 0) << cheap.err;

@@ -16,10 +16,12 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
+#include "TestMeshChecks.hh"
+
 #include <fstream>
 
 using namespace HexEx;
+using HexExTest::expectSameMesh;
 
 namespace {
 
@@ -70,16 +72,6 @@ ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitReq
     addToReport(out, r.report);
     r.mesh = std::move(out.mesh);
     return r;
-}
-
-/// Bitwise equality of two meshes (positions compared as bytes).
-void expectSameMesh(const HexMesh& a, const HexMesh& b) {
-    ASSERT_EQ(a.vertices.size(), b.vertices.size());
-    for (std::size_t v = 0; v < a.vertices.size(); ++v)
-        EXPECT_EQ(std::memcmp(a.vertices[v].data(), b.vertices[v].data(), 3 * sizeof(double)), 0) << "vertex " << v;
-    EXPECT_EQ(a.hexes, b.hexes);
-    ASSERT_EQ(a.polyhedra.size(), b.polyhedra.size());
-    for (std::size_t c = 0; c < a.polyhedra.size(); ++c) EXPECT_EQ(a.polyhedra[c].faces, b.polyhedra[c].faces) << "polyhedron " << c;
 }
 
 /// The manual run equals extractHexMesh() in mesh and report counts; returns the manual run.

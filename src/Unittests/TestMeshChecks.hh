@@ -5,7 +5,10 @@
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/Mesh/HexMesh.hh>
 
+#include <gtest/gtest.h>
+
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <string>
@@ -26,6 +29,16 @@ inline bool sphereWithNeedle(double value, HexEx::ParametrizedTetMesh& pm) {
             if (pm.mesh.cell_vertex(HexEx::CellHandle(static_cast<int>(c)), k).idx() == 40) pm.params[c][k][1] += value;
     pm.mesh.build_adjacency();
     return true;
+}
+
+/// Bitwise equality of two meshes (positions compared as bytes, hexes, polyhedron faces).
+inline void expectSameMesh(const HexEx::HexMesh& a, const HexEx::HexMesh& b) {
+    ASSERT_EQ(a.vertices.size(), b.vertices.size());
+    for (std::size_t v = 0; v < a.vertices.size(); ++v)
+        EXPECT_EQ(std::memcmp(a.vertices[v].data(), b.vertices[v].data(), 3 * sizeof(double)), 0) << "vertex " << v;
+    EXPECT_EQ(a.hexes, b.hexes);
+    ASSERT_EQ(a.polyhedra.size(), b.polyhedra.size());
+    for (std::size_t c = 0; c < a.polyhedra.size(); ++c) EXPECT_EQ(a.polyhedra[c].faces, b.polyhedra[c].faces) << "polyhedron " << c;
 }
 
 /// The hex mesh extracted from @p pm with default options (adjacency built here).

@@ -56,6 +56,24 @@ std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads) {
     return out;
 }
 
+GridBox gridBox(const TetSoS& T, std::size_t c) {
+    Vec3d lo = T.p[0], hi = T.p[0];
+    for (int i = 1; i < 4; ++i) {
+        lo.minimize(T.p[i]);
+        hi.maximize(T.p[i]);
+    }
+    GridBox box;
+    box.points = 1;
+    for (int a = 0; a < 3; ++a) {
+        if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
+            throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
+        box.lo[a] = static_cast<int>(std::ceil(lo[a]));
+        box.hi[a] = static_cast<int>(std::floor(hi[a]));
+        box.points *= std::max(0, box.hi[a] - box.lo[a] + 1);
+    }
+    return box;
+}
+
 long DartSet::occurrence(int t, const Vec3i& z) const {
     const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
     if (slot < 0) return -1;
@@ -170,32 +188,6 @@ std::array<std::uint8_t, 48> frameOctants() {
         for (AxisDir x : frames[f])
             if (dirSign(x) < 0) octant[f] = static_cast<std::uint8_t>(octant[f] | (1u << dirAxis(x)));
     return octant;
-}
-
-/// Integer bounding box [lo, hi] of a tet's parameter image and its number of grid points.
-struct GridBox {
-    int lo[3] = {0, 0, 0};  ///< smallest grid point
-    int hi[3] = {0, 0, 0};  ///< largest grid point
-    double points = 0;      ///< grid points in the box
-};
-
-/// The grid box of tet @p c; throws InputError for non-finite or absurd parameters.
-GridBox gridBox(const TetSoS& T, std::size_t c) {
-    Vec3d lo = T.p[0], hi = T.p[0];
-    for (int i = 1; i < 4; ++i) {
-        lo.minimize(T.p[i]);
-        hi.maximize(T.p[i]);
-    }
-    GridBox box;
-    box.points = 1;
-    for (int a = 0; a < 3; ++a) {
-        if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
-            throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
-        box.lo[a] = static_cast<int>(std::ceil(lo[a]));
-        box.hi[a] = static_cast<int>(std::floor(hi[a]));
-        box.points *= std::max(0, box.hi[a] - box.lo[a] + 1);
-    }
-    return box;
 }
 
 /// The darts of tet @p T at grid point (x, y, zc), box index @p l of the dense index @p di

@@ -115,6 +115,17 @@ struct DartSet {
 /// The 48 axis frames (d1, d2, d3) in lexicographic order.
 const std::array<std::array<AxisDir, 3>, 48>& allFrames();
 
+/// Integer bounding box [lo, hi] of a tet's parameter image and its number of grid points.
+struct GridBox {
+    int lo[3] = {0, 0, 0};  ///< smallest grid point
+    int hi[3] = {0, 0, 0};  ///< largest grid point
+    double points = 0;      ///< grid points in the box
+};
+
+/// The grid box of tet @p c (data @p T); throws InputError for non-finite or absurd
+/// parameters (|u| > 1e9).
+GridBox gridBox(const TetSoS& T, std::size_t c);
+
 /// Per-tet symbolic-perturbation data for every tet (computed in parallel).
 std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads);
 

@@ -3,7 +3,6 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <map>
 
@@ -62,17 +61,13 @@ IntBox denseBox(const DartSet::DenseIndex& di) {
     return b;
 }
 
-/// The integer box of a tet's parameter image (the extraction has checked the values).
-IntBox tetBox(const TetSoS& T) {
+/// The integer box of tet @p t's parameter image.
+IntBox tetBox(const TetSoS& T, std::size_t t) {
+    const GridBox g = gridBox(T, t);
     IntBox b;
     for (int a = 0; a < 3; ++a) {
-        double mn = T.p[0][a], mx = T.p[0][a];
-        for (int i = 1; i < 4; ++i) {
-            mn = std::min(mn, T.p[i][a]);
-            mx = std::max(mx, T.p[i][a]);
-        }
-        b.lo[a] = static_cast<long>(std::ceil(mn));
-        b.hi[a] = static_cast<long>(std::floor(mx));
+        b.lo[a] = g.lo[a];
+        b.hi[a] = g.hi[a];
     }
     return b;
 }
@@ -156,7 +151,7 @@ long cancelFoldPoints(const std::vector<TetSoS>& tets, const std::vector<int>& c
                 r.mixed.assign(r.mixed.size(), 1);
                 continue;
             }
-            forEachPoint(tetBox(T).meet(r.box), [&](long x, long y, long z) { r.mixed[r.box.local(x, y, z)] = 1; });
+            forEachPoint(tetBox(T, t).meet(r.box), [&](long x, long y, long z) { r.mixed[r.box.local(x, y, z)] = 1; });
             continue;
         }
         const DartSet::DenseIndex& di = *dense[static_cast<std::size_t>(denseOf[t])];
