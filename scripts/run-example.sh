@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Sets up and builds HexEx (scripts/setup.sh), then extracts the hex mesh of a bundled
+# Installs what the tool needs and builds only the `hexex` target (scripts/setup.sh, profile
+# "tool": no test, documentation or Python packages), then extracts the hex mesh of a bundled
 # example (Examples/data/sphere.hexex) with the hexex tool and prints the report.
 # Output: $OUT_DIR (default /tmp/hexex-example)/sphere.vtu and sphere-report.json.
 set -euo pipefail
@@ -9,6 +10,7 @@ BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 OUT_DIR="${OUT_DIR:-/tmp/hexex-example}"
 INPUT="$REPO_ROOT/Examples/data/sphere.hexex"
 export BUILD_DIR
+export HEXEX_PROFILE="${HEXEX_PROFILE:-tool}"
 
 bash "$REPO_ROOT/scripts/setup.sh"
 
@@ -36,4 +38,7 @@ case "$status" in
     *) echo "hexex extract failed with status $status" >&2 ; exit "$status" ;;
 esac
 [[ -f "$REPORT" ]] && cat "$REPORT"
+echo
+echo "Output: $OUT (hex mesh), $REPORT (report)."
+echo "Look at it: paraview $OUT   (or: $HEXEX validate $OUT)"
 exit "$status"

@@ -9,6 +9,7 @@ set -euo pipefail
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 export BUILD_DIR
+export HEXEX_PROFILE=full
 
 bash "$REPO_ROOT/scripts/setup.sh"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j2

@@ -3,17 +3,36 @@
 # configures + builds HexEx in Release mode into <repo>/build.
 # Idempotent: a second run skips apt and only rebuilds what changed.
 #
+# Two profiles (HEXEX_PROFILE):
+#   tool  - what the library and the `hexex` tool need (compiler, CMake, CGAL, Eigen, OpenMesh,
+#           pugixml, zlib), and builds only the `hexex` target (and its library). Used by
+#           scripts/run-example.sh so a first result needs no test or documentation packages.
+#   full  - (default) adds GoogleTest, Doxygen, xz, Python with numpy/meshio/venv (the test
+#           suite, the documentation test and the Python package tests) and builds every target.
+#
 # Environment: BUILD_DIR (default <repo>/build), BUILD_TYPE (default Release),
-#              HEXEX_SKIP_APT=1 to never touch apt, CMAKE_ARGS for extra configure flags.
+#              HEXEX_PROFILE (tool|full, default full), HEXEX_SKIP_APT=1 to never touch apt,
+#              CMAKE_ARGS for extra configure flags.
 set -euo pipefail
 
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 BUILD_TYPE="${BUILD_TYPE:-Release}"
+PROFILE="${HEXEX_PROFILE:-full}"
 
-PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev libgtest-dev
-          libpugixml-dev zlib1g-dev
-          doxygen xz-utils python3 python3-numpy python3-meshio python3-venv python3-dev)
+TOOL_PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev
+               libpugixml-dev zlib1g-dev)
+TEST_PACKAGES=(libgtest-dev doxygen xz-utils python3 python3-numpy python3-meshio python3-venv python3-dev)
+
+case "$PROFILE" in
+    tool) PACKAGES=("${TOOL_PACKAGES[@]}")
+          CONFIGURE_ARGS=(-DHEXEX_BUILD_TESTS=OFF -DHEXEX_BUILD_BENCHMARKS=OFF)
+          BUILD_TARGETS=(--target hexex) ;;
+    full) PACKAGES=("${TOOL_PACKAGES[@]}" "${TEST_PACKAGES[@]}")
+          CONFIGURE_ARGS=(-DHEXEX_BUILD_TESTS=ON -DHEXEX_BUILD_BENCHMARKS=ON)
+          BUILD_TARGETS=() ;;
+    *) echo "setup: HEXEX_PROFILE must be 'tool' or 'full', not '$PROFILE'" >&2; exit 2 ;;
+esac
 
 missing_packages() {
     local p status
@@ -33,10 +52,10 @@ if [[ "${HEXEX_SKIP_APT:-0}" != 1 ]] && command -v dpkg-query >/dev/null 2>&1; t
             SUDO=(sudo)
         fi
         export DEBIAN_FRONTEND=noninteractive
-        "${SUDO[@]}" apt-get update
-        "${SUDO[@]}" apt-get install -y --no-install-recommends "${PACKAGES[@]}"
+        "${SUDO[@]}" apt-get update -q
+        "${SUDO[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"
     else
-        echo "setup: all build dependencies are installed"
+        echo "setup: all $PROFILE-profile dependencies are installed"
     fi
 fi
 
@@ -46,6 +65,7 @@ if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]] && command -v ninja >/dev/null 2>&1; t
     GENERATOR_ARGS=(-G Ninja)
 fi
 # shellcheck disable=SC2086  # CMAKE_ARGS is a list of flags
-cmake -S "$REPO_ROOT" -B "$BUILD_DIR" "${GENERATOR_ARGS[@]}" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" ${CMAKE_ARGS:-}
-cmake --build "$BUILD_DIR" --parallel "$(nproc 2>/dev/null || echo 2)"
-echo "setup: built $BUILD_TYPE into $BUILD_DIR"
+cmake -S "$REPO_ROOT" -B "$BUILD_DIR" "${GENERATOR_ARGS[@]}" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
+    "${CONFIGURE_ARGS[@]}" ${CMAKE_ARGS:-}
+cmake --build "$BUILD_DIR" --parallel "$(nproc 2>/dev/null || echo 2)" "${BUILD_TARGETS[@]}"
+echo "setup: built $BUILD_TYPE ($PROFILE profile) into $BUILD_DIR"
