@@ -1,24 +1,12 @@
 #pragma once
 /// @file HexEx.hh
 /// The one-call API: extract a hex mesh from a tet mesh with an integer-grid map.
+/// HexEx::extractHexMesh() is declared by the pipeline's driver (Pipeline/Extractor.hh);
+/// this header gathers it with the output types and the library version.
 
+#include "Core/Version.hh"
 #include "Extraction/ExtractionReport.hh"
 #include "Mesh/HexArcs.hh"
 #include "Mesh/HexMesh.hh"
 #include "Mesh/ParametrizedTetMesh.hh"
-
-namespace HexEx {
-
-/// Extracts the hex mesh of @p input (adjacency must be built; see TetMesh::build_adjacency())
-/// into @p output. Never throws for defective maps: what could not be resolved is counted
-/// in the report and non-hex cells are returned as polyhedra. Throws InputError only for
-/// unusable input (e.g. non-finite or absurdly large parameters), and its subclass
-/// ResourceError when the map would need more memory than ExtractionOptions::max_memory
-/// or an allocation fails (std::bad_alloc never escapes).
-ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output,
-                                const ExtractionOptions& options = {});
-
-/// Library version string (x.y.z).
-const char* version();
-
-} // namespace HexEx
+#include "Pipeline/Extractor.hh"

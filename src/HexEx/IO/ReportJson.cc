@@ -3,7 +3,7 @@
 
 #include "ReportJson.hh"
 
-#include "../HexEx.hh"
+#include "../Core/Version.hh"
 
 #include <charconv>
 #include <cmath>

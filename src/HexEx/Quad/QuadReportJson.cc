@@ -1,6 +1,6 @@
 #include "QuadReportJson.hh"
 
-#include "../HexEx.hh"
+#include "../Core/Version.hh"
 #include "../IO/ReportJson.hh"
 
 #include <sstream>

@@ -1,18 +1,18 @@
-#include "../HexEx.hh"
+#include "Extractor.hh"
 
 #include "../Core/Error.hh"
 #include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
-#include "../Pipeline/AnnihilateStage.hh"
-#include "../Pipeline/ArcStage.hh"
-#include "../Pipeline/AssembleStage.hh"
-#include "../Pipeline/ConnectStage.hh"
-#include "../Pipeline/DartStage.hh"
-#include "../Pipeline/ImplicitCellPath.hh"
-#include "../Pipeline/MemoryBudget.hh"
-#include "../Pipeline/PlacementStage.hh"
-#include "../Pipeline/PreprocessStage.hh"
-#include "../Pipeline/ReportStage.hh"
+#include "AnnihilateStage.hh"
+#include "ArcStage.hh"
+#include "AssembleStage.hh"
+#include "ConnectStage.hh"
+#include "DartStage.hh"
+#include "ImplicitCellPath.hh"
+#include "MemoryBudget.hh"
+#include "PlacementStage.hh"
+#include "PreprocessStage.hh"
+#include "ReportStage.hh"
 
 #include <chrono>
 #include <new>
@@ -43,8 +43,6 @@ void release(Vector& v) {
     Vector().swap(v);
 }
 } // namespace
-
-const char* version() { return "0.1.0"; }
 
 namespace {
 /// Where the pipeline is, for the message of an allocation failure.

@@ -1,0 +1,21 @@
+#pragma once
+/// @file Extractor.hh
+/// The pipeline's driver: runs the stages of this folder in order (Documentation/algorithm.md,
+/// "Stages") and fills the report as data flows. Included through HexEx.hh.
+
+#include "../Extraction/ExtractionReport.hh"
+#include "../Mesh/HexMesh.hh"
+#include "../Mesh/ParametrizedTetMesh.hh"
+
+namespace HexEx {
+
+/// Extracts the hex mesh of @p input (adjacency must be built; see TetMesh::build_adjacency())
+/// into @p output. Never throws for defective maps: what could not be resolved is counted
+/// in the report and non-hex cells are returned as polyhedra. Throws InputError only for
+/// unusable input (e.g. non-finite or absurdly large parameters), and its subclass
+/// ResourceError when the map would need more memory than ExtractionOptions::max_memory
+/// or an allocation fails (std::bad_alloc never escapes).
+ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output,
+                                const ExtractionOptions& options = {});
+
+} // namespace HexEx
