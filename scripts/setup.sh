@@ -20,7 +20,7 @@ BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 BUILD_TYPE="${BUILD_TYPE:-Release}"
 PROFILE="${HEXEX_PROFILE:-full}"
 
-TOOL_PACKAGES=(cmake ninja-build g++ libcgal-dev libeigen3-dev libopenmesh-dev
+TOOL_PACKAGES=(cmake ninja-build g++ ccache libcgal-dev libeigen3-dev libopenmesh-dev
                libpugixml-dev zlib1g-dev)
 TEST_PACKAGES=(libgtest-dev doxygen xz-utils python3 python3-numpy python3-meshio python3-venv python3-dev)
 
@@ -60,9 +60,12 @@ if [[ "${HEXEX_SKIP_APT:-0}" != 1 ]] && command -v dpkg-query >/dev/null 2>&1; t
 fi
 
 GENERATOR_ARGS=()
-# Keep the generator of an existing build tree; use Ninja for new ones when available.
-if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]] && command -v ninja >/dev/null 2>&1; then
-    GENERATOR_ARGS=(-G Ninja)
+# Keep the generator and launcher of an existing build tree. New trees use Ninja, and ccache
+# so that the Python package's build (scripts/run-python-tests.sh, which compiles the library
+# again in its own tree with the same flags) takes the library's objects from the cache.
+if [[ ! -f "$BUILD_DIR/CMakeCache.txt" ]]; then
+    command -v ninja >/dev/null 2>&1 && GENERATOR_ARGS+=(-G Ninja)
+    command -v ccache >/dev/null 2>&1 && GENERATOR_ARGS+=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
 fi
 # shellcheck disable=SC2086  # CMAKE_ARGS is a list of flags
 cmake -S "$REPO_ROOT" -B "$BUILD_DIR" "${GENERATOR_ARGS[@]}" -DCMAKE_BUILD_TYPE="$BUILD_TYPE" \
