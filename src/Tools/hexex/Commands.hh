@@ -26,5 +26,6 @@ bool isShape2D(const std::string& name);
 /// @p seed and writes @p output (OBJ).
 int runPerturb2D(const std::string& input, const std::string& output, double a, unsigned seed, bool quiet);
 int runConvert(const Args& args);   ///< hexex convert IN OUT [--encoding E]
+int runUntangle(const Args& args);  ///< hexex untangle HEX -o OUT [--surface-from MAP] [...]
 
 } // namespace HexExTool

@@ -5,6 +5,7 @@
 
 #include "ArgParser.hh"
 #include "Commands.hh"
+#include "UntangleOutput.hh"
 
 #include <HexEx/Core/Error.hh>
 #include <HexEx/Core/Memory.hh>
@@ -18,6 +19,8 @@
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Predicates/ExactPredicates.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
+#include <HexEx/Untangling/TriangleSurface.hh>
+#include <HexEx/Untangling/Untangler.hh>
 
 #include <cctype>
 #include <chrono>
@@ -55,10 +58,13 @@ const char* kExtractUsage =
     "  --edge-arcs A.vtu       write the exact image of every hex edge in the input as VTK polylines\n"
     "                          (cell data edge_id, vertex0, vertex1)\n"
     "  --face-patches P.vtu    write the exact image of every hex face as VTK triangles (cell data face_id)\n"
+    "  --untangle              move vertices so that no hex is inverted (folded maps), boundary\n"
+    "                          vertices on the input's boundary surface; prints a report\n"
     "  -q, --quiet             print nothing but errors\n"
     "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
-    "exit status: 0 all-hex mesh written, 3 written but not all-hex, 2 bad input or usage\n";
+    "exit status: 0 all-hex mesh written, 3 written but not all-hex (or --untangle left inverted hexes),\n"
+    "2 bad input or usage\n";
 
 double secondsSince(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -205,13 +211,13 @@ int runExtract(const Args& args) {
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
         {"--encoding", true, ""},         {"--max-memory", true, ""},      {"--full-annihilation", false, ""},
-        {"--edge-arcs", true, ""},        {"--face-patches", true, ""},
+        {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
     HexEx::HexArcs arcs;
     HexEx::ExtractionOptions opt;
     HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
-    bool quiet = false;
+    bool quiet = false, untangle = false;
     try {
         const ParsedArgs pa = parseArgs(args, spec);
         if (pa.has("--help")) {
@@ -250,6 +256,7 @@ int runExtract(const Args& args) {
             }
         }
         quiet = pa.has("--quiet");
+        untangle = pa.has("--untangle");
         surface_path = pa.get("--surface");
         if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))
             throw UsageError("--surface: unknown surface format '" + surface_path + "' (expected .obj, .off, .ply or .stl)");
@@ -313,6 +320,14 @@ int runExtract(const Args& args) {
                                "vertices and " + std::to_string(dropped.second) + " cells that could not be written");
     }
     extras.quality = HexEx::computeQuality(hm);
+    HexEx::UntangleReport untangle_rep;
+    if (untangle) {
+        const HexEx::TriangleSurface input_boundary = HexEx::tetMeshBoundary(pm.mesh);
+        HexEx::UntangleOptions uo;
+        uo.threads = opt.threads;
+        untangle_rep = HexEx::untangleHexMesh(hm, uo, &input_boundary);
+        extras.quality = HexEx::computeQuality(hm);
+    }
 
     // Write.
     progress.update("write", 0);
@@ -369,8 +384,10 @@ int runExtract(const Args& args) {
         std::ostream& os = report_path == "-" ? std::cerr : std::cout;
         os << "wrote " << output << ": " << rep.output.hexes << " hexes, " << rep.output.vertices << " vertices, "
            << (rep.valid_all_hex ? "valid all-hex" : "NOT all-hex") << "\n";
+        if (untangle) printUntangleReport(os, untangle_rep);
     }
-    if (rep.valid_all_hex) return 0;
+    if (untangle && untangle_rep.inverted_after > 0) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
+    if (rep.valid_all_hex) return untangle && untangle_rep.inverted_after > 0 ? 3 : 0;
 
     // Written, but not all-hex: say why.
     std::cerr << "hexex extract: the output is not a valid all-hex mesh:\n";

@@ -20,11 +20,12 @@ const char* kUsage =
     "  generate from-hex MESH [--perturb A] -o OUT.hexex  map whose hex mesh is MESH\n"
     "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
     "  validate MESH [--json]                    check a hex mesh file\n"
+    "  untangle HEX -o OUT [--surface-from MAP]  move vertices so that no hex is inverted\n"
     "  quad IN.obj -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
     "                                            2D: extract the quad mesh of a triangle mesh\n"
     "                                            with per-corner vt parameters (.obj, .off, .ply, .vtu)\n"
     "  generate square|cone-disk|torus|quarter-seam [options] -o OUT.obj   2D test maps\n"
-    "exit status: 0 ok, 2 bad input or usage, 3 output not all-hex (all-quad for quad)\n";
+    "exit status: 0 ok, 2 bad input or usage, 3 output not all-hex (all-quad for quad; untangle: inverted hexes left)\n";
 }
 
 int main(int argc, char** argv) {
@@ -42,6 +43,7 @@ int main(int argc, char** argv) {
         if (cmd == "validate") return HexExTool::runValidate(args);
         if (cmd == "quad") return HexExTool::runQuad(args);
         if (cmd == "convert") return HexExTool::runConvert(args);
+        if (cmd == "untangle") return HexExTool::runUntangle(args);
     } catch (const std::bad_alloc&) {
         std::cerr << "hexex " << cmd << ": error: out of memory (std::bad_alloc) outside the extraction (reading or "
                      "writing a mesh); free memory or use a smaller input\n";

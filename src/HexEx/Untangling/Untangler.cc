@@ -1,0 +1,413 @@
+/// @file Untangler.cc
+/// The untangling driver: neighbourhood selection, boundary constraints, the eps schedule
+/// of the regularised elliptic energy and its L-BFGS minimisation.
+
+#include "Untangler.hh"
+
+#include "../Core/Parallel.hh"
+#include "../Mesh/HexArcs.hh"
+#include "../Mesh/HexMeshQuality.hh"
+#include "EllipticEnergy.hh"
+#include "Lbfgs.hh"
+#include "SurfaceProjection.hh"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+
+namespace HexEx {
+
+namespace {
+
+/// Smallest corner Jacobian det(a, b, c) of hex @p h (non-finite counts as -infinity).
+double minCornerDet(const std::vector<Vec3d>& pos, const std::array<int, 8>& h) {
+    double worst = std::numeric_limits<double>::infinity();
+    for (const auto& f : kHexCornerFrames) {
+        const Vec3d& o = pos[static_cast<std::size_t>(h[static_cast<std::size_t>(f[0])])];
+        const Vec3d a = pos[static_cast<std::size_t>(h[static_cast<std::size_t>(f[1])])] - o;
+        const Vec3d b = pos[static_cast<std::size_t>(h[static_cast<std::size_t>(f[2])])] - o;
+        const Vec3d c = pos[static_cast<std::size_t>(h[static_cast<std::size_t>(f[3])])] - o;
+        const double d = (a % b) | c;
+        worst = std::isfinite(d) ? std::min(worst, d) : -std::numeric_limits<double>::infinity();
+    }
+    return worst;
+}
+
+/// Vertex -> hexes incidence in CSR form.
+struct VertexHexes {
+    std::vector<int> offset, hexes;
+    VertexHexes(std::size_t n_vertices, const std::vector<std::array<int, 8>>& hx) : offset(n_vertices + 1, 0) {
+        for (const auto& h : hx)
+            for (const int v : h) ++offset[static_cast<std::size_t>(v) + 1];
+        for (std::size_t i = 0; i < n_vertices; ++i) offset[i + 1] += offset[i];
+        hexes.resize(static_cast<std::size_t>(offset.back()));
+        std::vector<int> fill(offset.begin(), offset.end() - 1);
+        for (std::size_t c = 0; c < hx.size(); ++c)
+            for (const int v : hx[c]) hexes[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(c);
+    }
+};
+
+/// Vertex roles: 0 interior (free), 1 boundary (surface or fixed by the mode), 2 never moves.
+std::vector<char> vertexRoles(const HexMesh& mesh) {
+    std::vector<char> role(mesh.vertices.size(), 0);
+    const TriangleSurface b = hexMeshBoundary(mesh);
+    for (const auto& t : b.triangles)
+        for (const int v : t) role[static_cast<std::size_t>(v)] = 1;
+    for (const auto& p : mesh.polyhedra)
+        for (const auto& f : p.faces)
+            for (const int v : f)
+                if (v >= 0 && static_cast<std::size_t>(v) < role.size()) role[static_cast<std::size_t>(v)] = 2;
+    return role;
+}
+
+/// Two unit vectors orthogonal to the unit vector @p n and to each other.
+std::array<Vec3d, 2> tangentFrame(const Vec3d& n) {
+    const Vec3d helper = std::abs(n[0]) < 0.6 ? Vec3d(1, 0, 0) : Vec3d(0, 1, 0);
+    const Vec3d t1 = (helper - n * (helper | n)).normalized();
+    return {{t1, n % t1}};
+}
+
+/// How one free vertex moves: position = base + scale * sum_k basis[k] q[k].
+struct FreeVertex {
+    int vertex = -1;
+    int kind = 0;  ///< 0 interior (3 dof), 1 surface (2 dof), 2 feature curve (1 dof)
+    int offset = 0;  ///< first variable
+    Vec3d base;
+    std::array<Vec3d, 3> basis;
+};
+
+/// One minimisation problem: the free vertices of a neighbourhood and the hexes they touch.
+class Problem {
+public:
+    Problem(HexMesh& mesh, const UntangleOptions& opt, const SurfaceProjection* proj, double tol,
+            const std::vector<char>& role, const std::vector<int>& region_vertices, const VertexHexes& vh,
+            const std::vector<double>& h)
+        : mesh_(mesh), opt_(opt), proj_(proj), h_(h), threads_(resolveThreadCount(opt.threads)) {
+        slot_.assign(mesh.vertices.size(), -1);
+        for (const int v : region_vertices) {
+            const char r = role[static_cast<std::size_t>(v)];
+            if (r == 2 || (r == 1 && (opt.boundary == BoundaryMode::Fixed || !proj_))) continue;
+            FreeVertex fv;
+            fv.vertex = v;
+            if (r == 1) {
+                const Vec3d p = mesh.vertices[static_cast<std::size_t>(v)];
+                if (proj_->distanceToCorner(p) <= tol) continue;  // feature corner: fixed
+                fv.kind = proj_->hasFeatures() && (proj_->closestOnFeature(p) - p).norm() <= tol ? 2 : 1;
+            }
+            slot_[static_cast<std::size_t>(v)] = static_cast<int>(free_.size());
+            free_.push_back(fv);
+        }
+        std::vector<char> in(mesh.hexes.size(), 0);
+        for (const auto& fv : free_)
+            for (int k = vh.offset[static_cast<std::size_t>(fv.vertex)]; k < vh.offset[static_cast<std::size_t>(fv.vertex) + 1]; ++k)
+                in[static_cast<std::size_t>(vh.hexes[static_cast<std::size_t>(k)])] = 1;
+        for (std::size_t c = 0; c < in.size(); ++c)
+            if (in[c]) elems_.push_back(static_cast<int>(c));
+        double sum = 0;
+        for (const int e : elems_) sum += h_[static_cast<std::size_t>(e)];
+        scale_ = elems_.empty() ? 1.0 : sum / static_cast<double>(elems_.size());
+        rebase();
+    }
+
+    std::size_t freeVertices() const { return free_.size(); }
+    const std::vector<int>& elements() const { return elems_; }
+    int variables() const { return n_vars_; }
+
+    /// Projects boundary vertices onto their curve/surface and resets bases (q = 0).
+    void rebase() {
+        n_vars_ = 0;
+        for (auto& fv : free_) {
+            Vec3d& p = mesh_.vertices[static_cast<std::size_t>(fv.vertex)];
+            fv.offset = n_vars_;
+            if (fv.kind == 0) {
+                fv.basis = {{Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)}};
+                n_vars_ += 3;
+            } else if (fv.kind == 1) {
+                Vec3d n;
+                p = proj_->closestOnSurface(p, &n);
+                const auto t = tangentFrame(n);
+                fv.basis = {{t[0], t[1], Vec3d(0, 0, 0)}};
+                n_vars_ += 2;
+            } else {
+                Vec3d t;
+                p = proj_->closestOnFeature(p, &t);
+                fv.basis = {{t, Vec3d(0, 0, 0), Vec3d(0, 0, 0)}};
+                n_vars_ += 1;
+            }
+            fv.base = p;
+        }
+    }
+
+    /// Writes the positions for variables @p q into the mesh.
+    void apply(const Eigen::VectorXd& q) {
+        for (const auto& fv : free_) {
+            const int dof = fv.kind == 0 ? 3 : fv.kind == 1 ? 2 : 1;
+            Vec3d p = fv.base;
+            for (int k = 0; k < dof; ++k) p += fv.basis[static_cast<std::size_t>(k)] * (scale_ * q[fv.offset + k]);
+            mesh_.vertices[static_cast<std::size_t>(fv.vertex)] = p;
+        }
+    }
+
+    /// Energy at @p q for @p eps; gradient into @p grad if non-null; smallest corner
+    /// D = det J into @p min_det if non-null. Per-hex values are computed in parallel and
+    /// summed in hex order, so the result does not depend on the thread count.
+    double energy(const Eigen::VectorXd& q, double eps, Eigen::VectorXd* grad, double* min_det) {
+        apply(q);
+        const std::size_t ne = elems_.size();
+        e_val_.resize(ne);
+        e_det_.resize(ne);
+        if (grad) e_grad_.resize(ne);
+        const auto& pos = mesh_.vertices;
+        parallelChunks(ne, threads_, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i) {
+                const int c = elems_[i];
+                const auto& hx = mesh_.hexes[static_cast<std::size_t>(c)];
+                const double h = h_[static_cast<std::size_t>(c)];
+                double sum = 0, dmin = std::numeric_limits<double>::infinity();
+                std::array<Vec3d, 8> g;
+                if (grad) g.fill(Vec3d(0, 0, 0));
+                for (const auto& f : kHexCornerFrames) {
+                    const Vec3d& o = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[0])])];
+                    const Vec3d a = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[1])])] - o;
+                    const Vec3d b2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[2])])] - o;
+                    const Vec3d c2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[3])])] - o;
+                    std::array<Vec3d, 3> cg;
+                    sum += cornerEnergy(a, b2, c2, h, eps, opt_.theta, grad ? &cg : nullptr);
+                    dmin = std::min(dmin, ((a % b2) | c2) / (h * h * h));
+                    if (grad) {
+                        for (int k = 0; k < 3; ++k) {
+                            g[static_cast<std::size_t>(f[static_cast<std::size_t>(k + 1)])] += cg[static_cast<std::size_t>(k)];
+                            g[static_cast<std::size_t>(f[0])] -= cg[static_cast<std::size_t>(k)];
+                        }
+                    }
+                }
+                e_val_[i] = sum;
+                e_det_[i] = dmin;
+                if (grad) e_grad_[i] = g;
+            }
+        });
+        double total = 0, dmin = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < ne; ++i) {
+            total += e_val_[i];
+            dmin = std::min(dmin, e_det_[i]);
+        }
+        if (min_det) *min_det = dmin;
+        if (grad) {
+            vgrad_.assign(free_.size(), Vec3d(0, 0, 0));
+            for (std::size_t i = 0; i < ne; ++i) {
+                const auto& hx = mesh_.hexes[static_cast<std::size_t>(elems_[i])];
+                for (std::size_t k = 0; k < 8; ++k) {
+                    const int s = slot_[static_cast<std::size_t>(hx[k])];
+                    if (s >= 0) vgrad_[static_cast<std::size_t>(s)] += e_grad_[i][k];
+                }
+            }
+            grad->resize(n_vars_);
+            for (std::size_t s = 0; s < free_.size(); ++s) {
+                const auto& fv = free_[s];
+                const int dof = fv.kind == 0 ? 3 : fv.kind == 1 ? 2 : 1;
+                for (int k = 0; k < dof; ++k) (*grad)[fv.offset + k] = scale_ * (fv.basis[static_cast<std::size_t>(k)] | vgrad_[s]);
+            }
+        }
+        return total;
+    }
+
+    /// Number of inverted hexes among the elements (at the current mesh positions).
+    long invertedElements() const {
+        long n = 0;
+        for (const int e : elems_) n += minCornerDet(mesh_.vertices, mesh_.hexes[static_cast<std::size_t>(e)]) <= 0;
+        return n;
+    }
+
+private:
+    HexMesh& mesh_;
+    const UntangleOptions& opt_;
+    const SurfaceProjection* proj_;
+    const std::vector<double>& h_;
+    int threads_;
+    std::vector<int> slot_;
+    std::vector<FreeVertex> free_;
+    std::vector<int> elems_;
+    double scale_ = 1;
+    int n_vars_ = 0;
+    std::vector<double> e_val_, e_det_;
+    std::vector<std::array<Vec3d, 8>> e_grad_;
+    std::vector<Vec3d> vgrad_;
+};
+
+/// Runs the eps schedule on @p pb; returns true if no element is inverted at the end.
+bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep) {
+    Eigen::VectorXd q = Eigen::VectorXd::Zero(pb.variables());
+    Eigen::VectorXd g;
+    double dmin = 0;
+    pb.energy(q, 1.0, nullptr, &dmin);
+    double eps = std::sqrt(1e-12 + 0.04 * std::min(dmin, 0.0) * std::min(dmin, 0.0));
+    if (eps < 1e-6) eps = 1e-6;
+    LbfgsOptions lo;
+    lo.max_iterations = opt.max_lbfgs_iterations;
+    lo.relative_decrease = 1e-6;
+    int steps_untangled = 0;
+    for (int it = 0; it < opt.max_outer_iterations; ++it) {
+        q.setZero(pb.variables());
+        const double e_prev = pb.energy(q, eps, nullptr, nullptr);
+        auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& gr) { return pb.energy(x, eps, &gr, nullptr); };
+        const LbfgsResult r = minimizeLbfgs(f, q, lo);
+        rep.lbfgs_iterations += r.iterations;
+        ++rep.outer_iterations;
+        const double e = pb.energy(q, eps, nullptr, &dmin);  // also leaves the positions of q in the mesh
+        pb.rebase();
+        const long inverted = pb.invertedElements();
+        const double decrease = (e_prev - e) / std::max(std::abs(e), 1e-300);
+        // Done when untangled and the energy has settled, or 5 steps after untangling
+        // (further steps only improve the shape).
+        if (inverted == 0 && (decrease < 1e-3 || ++steps_untangled >= 5)) return true;
+        const double sigma = std::max(1.0 - e / e_prev, 0.1);
+        const double mu = (1.0 - sigma) * regularizedDeterminant(dmin, eps);
+        eps = dmin < mu ? 2.0 * std::sqrt(mu * (mu - dmin)) : 1e-10;
+        eps = std::max(eps, 1e-12);
+    }
+    return pb.invertedElements() == 0;
+}
+
+} // namespace
+
+UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, const TriangleSurface* surface) {
+    const auto t0 = std::chrono::steady_clock::now();
+    UntangleReport rep;
+    const std::size_t nv = mesh.vertices.size();
+    for (const auto& h : mesh.hexes)
+        for (const int v : h)
+            if (v < 0 || static_cast<std::size_t>(v) >= nv)
+                throw std::invalid_argument("untangle: a hex references vertex " + std::to_string(v) + " of " +
+                                            std::to_string(nv));
+    rep.hexes = static_cast<long>(mesh.hexes.size());
+    const QualityStats before = computeQuality(mesh);
+    rep.inverted_before = before.inverted_hexes;
+    rep.min_scaled_jacobian_before = before.min_scaled_jacobian;
+    rep.mean_scaled_jacobian_before = before.mean_scaled_jacobian;
+    auto finish = [&]() {
+        const QualityStats after = computeQuality(mesh);
+        rep.inverted_after = after.inverted_hexes;
+        rep.min_scaled_jacobian_after = after.min_scaled_jacobian;
+        rep.mean_scaled_jacobian_after = after.mean_scaled_jacobian;
+        rep.success = rep.inverted_after == 0;
+        rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return rep;
+    };
+    std::vector<int> inverted;
+    for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
+        if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
+    if (inverted.empty()) return finish();
+
+    const std::vector<Vec3d> original = mesh.vertices;
+    Vec3d lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
+    for (const auto& p : mesh.vertices) {
+        lo.minimize(p);
+        hi.maximize(p);
+    }
+    const double diag = (hi - lo).norm() > 0 ? (hi - lo).norm() : 1.0;
+
+    // Reference edge length per hex: its mean edge length (at least 10 % of the mesh mean).
+    std::vector<double> h(mesh.hexes.size());
+    double h_sum = 0;
+    for (std::size_t c = 0; c < mesh.hexes.size(); ++c) {
+        double s = 0;
+        for (const auto& e : HexArcs::kHexEdges)
+            s += (mesh.vertices[static_cast<std::size_t>(mesh.hexes[c][static_cast<std::size_t>(e[0])])] -
+                  mesh.vertices[static_cast<std::size_t>(mesh.hexes[c][static_cast<std::size_t>(e[1])])]).norm();
+        h[c] = s / 12.0;
+        h_sum += h[c];
+    }
+    const double h_floor = 0.1 * h_sum / static_cast<double>(mesh.hexes.size());
+    for (auto& x : h) x = std::max(x, h_floor > 0 ? h_floor : 1.0);
+
+    const std::vector<char> role = vertexRoles(mesh);
+    std::unique_ptr<SurfaceProjection> proj;
+    if (options.boundary == BoundaryMode::Surface) {
+        proj.reset(new SurfaceProjection(surface ? *surface : hexMeshBoundary(mesh), options.feature_angle_deg));
+        if (!proj->hasSurface()) proj.reset();
+    }
+    const double tol = options.on_surface_tolerance * diag;
+    const VertexHexes vh(nv, mesh.hexes);
+
+    int rings = std::max(1, options.rings);
+    for (;;) {
+        // Region: vertices within `rings` hex rings of the inverted hexes.
+        std::vector<char> in_v(nv, 0), in_h(mesh.hexes.size(), 0);
+        std::vector<int> frontier;
+        for (const int c : inverted) {
+            in_h[static_cast<std::size_t>(c)] = 1;
+            for (const int v : mesh.hexes[static_cast<std::size_t>(c)])
+                if (!in_v[static_cast<std::size_t>(v)]) {
+                    in_v[static_cast<std::size_t>(v)] = 1;
+                    frontier.push_back(v);
+                }
+        }
+        for (int r = 0; r < rings && !frontier.empty(); ++r) {
+            std::vector<int> next;
+            for (const int v : frontier)
+                for (int k = vh.offset[static_cast<std::size_t>(v)]; k < vh.offset[static_cast<std::size_t>(v) + 1]; ++k) {
+                    const int c = vh.hexes[static_cast<std::size_t>(k)];
+                    if (in_h[static_cast<std::size_t>(c)]) continue;
+                    in_h[static_cast<std::size_t>(c)] = 1;
+                    for (const int w : mesh.hexes[static_cast<std::size_t>(c)])
+                        if (!in_v[static_cast<std::size_t>(w)]) {
+                            in_v[static_cast<std::size_t>(w)] = 1;
+                            next.push_back(w);
+                        }
+                }
+            frontier.swap(next);
+        }
+        const bool whole = frontier.empty();
+        std::vector<int> region;
+        for (std::size_t v = 0; v < nv; ++v)
+            if (in_v[v]) region.push_back(static_cast<int>(v));
+        Problem pb(mesh, options, proj.get(), tol, role, region, vh, h);
+        ++rep.attempts;
+        rep.rings = whole ? -1 : rings;
+        rep.free_vertices = static_cast<long>(pb.freeVertices());
+        if (pb.freeVertices() > 0) minimise(pb, options, rep);
+        inverted.clear();
+        for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
+            if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
+        if (inverted.empty() || whole || rep.attempts >= 3) break;
+        rings *= 4;
+    }
+
+    // Displacements.
+    double max_d = 0, sum_d = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+        if (mesh.vertices[v] == original[v]) continue;
+        const double d = (mesh.vertices[v] - original[v]).norm();
+        ++rep.moved_vertices;
+        max_d = std::max(max_d, d);
+        sum_d += d;
+    }
+    rep.max_displacement = max_d / diag;
+    rep.mean_displacement = rep.moved_vertices > 0 ? sum_d / static_cast<double>(rep.moved_vertices) / diag : 0;
+    finish();
+    if (!inverted.empty()) {
+        long stuck = 0;
+        for (const int c : inverted) {
+            bool any_free = false;
+            for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) {
+                const char r = role[static_cast<std::size_t>(v)];
+                any_free = any_free || r == 0 || (r == 1 && options.boundary == BoundaryMode::Surface);
+            }
+            stuck += !any_free;
+        }
+        rep.message = std::to_string(inverted.size()) + " hexes remain inverted";
+        if (stuck > 0)
+            rep.message += "; " + std::to_string(stuck) + " of them have no vertex that may move (all on a fixed "
+                           "boundary or on polyhedra), so the boundary itself forces the inversion";
+        else
+            rep.message += ": the minimisation found no foldover-free placement within its limits (" +
+                           std::to_string(rep.outer_iterations) + " regularisation steps)" +
+                           (options.boundary == BoundaryMode::Fixed ? "; the fixed boundary may not admit one" : "");
+    }
+    return rep;
+}
+
+} // namespace HexEx

@@ -1,0 +1,81 @@
+#pragma once
+/// @file Untangler.hh
+/// Untangling of hex meshes: moves vertices so that every hexahedron has positive
+/// Jacobians at its 8 corners, changing the mesh only near the inverted hexes.
+///
+/// Method: the regularised elliptic energy of Garanzha, Kaporin, Kudryavtseva, Protais,
+/// Ray and Sokolov, "Foldover-free maps in 50 lines of code" (ACM TOG 40(4), 2021), summed
+/// over the 8 corner tets of every hex near the inverted ones (EllipticEnergy.hh), is
+/// minimised with L-BFGS (Lbfgs.hh) for a decreasing sequence of regularisation parameters
+/// eps. Only the vertices within `rings` hex rings of an inverted hex move; if hexes stay
+/// inverted the ring count is doubled and the minimisation repeated, up to the whole mesh.
+///
+/// Boundary: with BoundaryMode::Surface, boundary vertices move in the tangent plane of
+/// the given surface and are projected back onto it after every outer iteration; vertices
+/// on sharp feature curves move along the curve, feature corners stay fixed
+/// (SurfaceProjection.hh). With BoundaryMode::Fixed no boundary vertex moves. Vertices of
+/// polyhedra (non-hex cells) never move.
+///
+/// Example:
+/// ```
+/// HexEx::HexMesh hm = HexEx::readHexMesh("folded.vtu");
+/// HexEx::UntangleReport r = HexEx::untangleHexMesh(hm);   // boundary on hm's own boundary
+/// if (r.inverted_after > 0) std::cerr << r.message << "\n";
+/// ```
+
+#include "../Mesh/HexMesh.hh"
+#include "TriangleSurface.hh"
+
+#include <string>
+
+namespace HexEx {
+
+/// How boundary vertices of the hex mesh may move.
+enum class BoundaryMode {
+    Surface,  ///< along the boundary surface (features kept, corners fixed)
+    Fixed,    ///< not at all
+};
+
+/// Settings of untangleHexMesh().
+struct UntangleOptions {
+    BoundaryMode boundary = BoundaryMode::Surface;  ///< boundary vertex handling
+    int threads = 0;               ///< worker threads for the energy (0 = all); the result does not depend on it
+    int rings = 1;                 ///< hex rings around inverted hexes whose vertices move at first
+    int max_outer_iterations = 60; ///< regularisation steps (eps updates) per attempt
+    int max_lbfgs_iterations = 300;///< L-BFGS iterations per regularisation step
+    double feature_angle_deg = 40; ///< surface edges with a larger normal angle are feature curves
+    double theta = 1.0 / 128;      ///< weight of the volume term g in the energy (shape term f: 1 - theta)
+    double on_surface_tolerance = 1e-6;  ///< relative to the bbox diagonal: vertices this close to a feature curve/corner are on it
+};
+
+/// What untangleHexMesh() did. Scaled Jacobians are per hex (minimum over its corners).
+struct UntangleReport {
+    long hexes = 0;                    ///< hexes in the mesh
+    long inverted_before = 0;          ///< hexes with a corner Jacobian <= 0 before
+    long inverted_after = 0;           ///< and after
+    double min_scaled_jacobian_before = 0;   ///< minimum scaled Jacobian before
+    double mean_scaled_jacobian_before = 0;  ///< mean scaled Jacobian before
+    double min_scaled_jacobian_after = 0;    ///< minimum scaled Jacobian after
+    double mean_scaled_jacobian_after = 0;   ///< mean scaled Jacobian after
+    long free_vertices = 0;            ///< vertices that were allowed to move (last attempt)
+    long moved_vertices = 0;           ///< vertices whose position changed
+    double max_displacement = 0;       ///< largest displacement / bbox diagonal
+    double mean_displacement = 0;      ///< mean displacement of the moved vertices / bbox diagonal
+    int attempts = 0;                  ///< neighbourhood sizes tried (rings 2, 4, 8, ...)
+    int rings = 0;                     ///< ring count of the last attempt (-1: whole mesh)
+    int outer_iterations = 0;          ///< regularisation steps in total
+    int lbfgs_iterations = 0;          ///< L-BFGS iterations in total
+    double seconds = 0;                ///< wall time
+    bool success = true;               ///< inverted_after == 0
+    std::string message;               ///< why hexes remain inverted (empty on success)
+};
+
+/// Untangles @p mesh in place. @p surface is the surface boundary vertices stay on with
+/// BoundaryMode::Surface (e.g. tetMeshBoundary() of the input tet mesh); if null, the
+/// boundary of @p mesh itself (hexMeshBoundary()) is used. A mesh without inverted hexes is
+/// returned unchanged.
+/// @throws std::invalid_argument if a hex references a vertex out of range.
+UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options = {},
+                               const TriangleSurface* surface = nullptr);
+
+} // namespace HexEx
