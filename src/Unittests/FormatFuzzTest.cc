@@ -1,5 +1,5 @@
 // Seeded mutation fuzzing of every mesh file reader (.ovm, .ovmb, .vtu in all encodings,
-// legacy .vtk ASCII and binary, .mesh): truncations, flipped bytes, huge numbers, deleted
+// legacy .vtk ASCII and binary, .mesh, the 2D pipeline's .obj): truncations, flipped bytes, huge numbers, deleted
 // and repeated ranges. Each mutant must read or fail with an InputError that names the
 // file; nothing else may escape (no crash, no std::bad_alloc). Bounded in time.
 
@@ -10,6 +10,9 @@
 #include <HexEx/IO/HexMeshReaders.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
 #include <HexEx/IO/OvmTetReader.hh>
+#include <HexEx/Quad/ObjWriter.hh>
+#include <HexEx/Quad/QuadGenerators.hh>
+#include <HexEx/Quad/TriObjReader.hh>
 
 #include <gtest/gtest.h>
 
@@ -157,4 +160,15 @@ TEST(FormatFuzz, LegacyBinaryVtkReadsAndHugeCountsAreRejected) {
     std::string ovmb = writeOvmBinary(ovmFromTetMesh(generateCube(1, 1)));
     ovmb[16 + 8 * 2 + 5] = 1;  // faces: 2^40 + ...
     EXPECT_NE(error(ovmb, HexMeshFormat::Ovmb, "c.ovmb").find("c.ovmb: byte 32: face count "), std::string::npos);
+}
+
+TEST(FormatFuzz, QuadObjReader) {
+    // A perturbed cone disk (flipped triangles, full-precision parameters) as our writer
+    // writes it, plus a hand-made file with comments, normals and relative indices.
+    ParametrizedTriMesh disk = generateConeDisk(5, 2, 2);
+    perturbTriParameters(disk, 0.4, 3);
+    const auto read = [](const std::string& s) { parseTriObj(s, "q.obj"); };
+    fuzz(formatTriObj(disk), "q.obj", read, 40);
+    fuzz("# c\nv 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0 0\nvt 0 1\nvn 0 0 1\nf 1/1/1 2/2/1 3/3/1\nf -3/-3 -2/-2 -1/-1\n", "q.obj",
+         read, 41);
 }

@@ -94,11 +94,11 @@ int runQuad(const Args& args) {
     HexEx::QuadMesh qm;
     try {
         auto tr = std::chrono::steady_clock::now();
-        const HexEx::ParametrizedTriMesh m = HexEx::readParametrizedTriMesh(input);
+        const HexEx::ParametrizedTriMesh m = HexEx::readParametrizedTriMesh(input, opt.threads);
         extras.read_s = secondsSince(tr);
         rep = HexEx::extractQuadMesh(m, qm, opt);
         auto tw = std::chrono::steady_clock::now();
-        HexEx::writeQuadMesh(output, qm);
+        HexEx::writeQuadMesh(output, qm, opt.threads);
         extras.write_s = secondsSince(tw);
     } catch (const HexEx::InputError& e) {
         std::cerr << "hexex quad: error: " << e.what() << "\n";
@@ -170,7 +170,7 @@ int runGenerate2D(const Args& args) {
             HexEx::applyRandomTriCharts(m, static_cast<unsigned>(pa.getInt("--chart-noise", 0, 0, std::numeric_limits<unsigned>::max())));
         if (pa.has("--fp-noise")) HexEx::applyTriParameterNoise(m, pa.getDouble("--fp-noise", 0, 0, 1e6), 1);
         try {
-            HexEx::writeParametrizedTriMesh(out, m);
+            HexEx::writeParametrizedTriMesh(out, m, 0);
         } catch (const std::exception& e) {
             std::cerr << "hexex generate: error: " << e.what() << "\n";
             return 2;
@@ -187,10 +187,10 @@ int runGenerate2D(const Args& args) {
 
 int runPerturb2D(const std::string& input, const std::string& output, double a, unsigned seed, bool quiet) {
     try {
-        HexEx::ParametrizedTriMesh m = HexEx::readParametrizedTriMesh(input);
+        HexEx::ParametrizedTriMesh m = HexEx::readParametrizedTriMesh(input, 0);
         HexEx::TriPerturbStats st;
         HexEx::perturbTriParameters(m, a, seed, &st);
-        HexEx::writeParametrizedTriMesh(output, m);
+        HexEx::writeParametrizedTriMesh(output, m, 0);
         if (!quiet)
             std::cout << "wrote " << output << ": " << st.moved_vertices << " of " << st.vertices << " vertices moved ("
                       << st.fixed_vertices << " fixed, " << st.boundary_vertices << " on the boundary)\n";
