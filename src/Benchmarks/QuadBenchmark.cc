@@ -3,13 +3,17 @@
 /// triangles, per stage, at the given thread counts: median wall-clock and CPU time
 /// (std::clock(), all threads) of the runs, the stage times of the median run.
 ///
-/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick]`
+/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--io]`
 /// Cases: disk5 (a flat disk around a valence-5 cone, 998,560 triangles, 499,280 quads,
 /// exact map) and disk5-perturbed (the same map perturbed with a = 0.3, many flipped
-/// triangles). `--quick` uses about 10,000 triangles (a smoke test).
+/// triangles). `--quick` uses about 10,000 triangles (a smoke test). `--io` times, instead
+/// of the extraction, the OBJ text of each case in memory: formatting it (formatTriObj())
+/// and parsing it (parseTriObj()), median of the runs, in MB/s of OBJ text.
 
 #include <HexEx/Quad/QuadExtraction.hh>
+#include <HexEx/Quad/ObjWriter.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
+#include <HexEx/Quad/TriObjReader.hh>
 
 #include <algorithm>
 #include <chrono>
@@ -23,7 +27,7 @@
 int main(int argc, char** argv) {
     std::vector<int> threads = {1, 2};
     int runs = 3;
-    bool quick = false;
+    bool quick = false, io = false;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
             threads.clear();
@@ -34,8 +38,10 @@ int main(int argc, char** argv) {
             runs = std::max(1, std::stoi(argv[++i]));
         } else if (!std::strcmp(argv[i], "--quick")) {
             quick = true;
+        } else if (!std::strcmp(argv[i], "--io")) {
+            io = true;
         } else {
-            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick]\n");
+            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--io]\n");
             return 2;
         }
     }
@@ -48,6 +54,31 @@ int main(int argc, char** argv) {
     cases.push_back({"disk5", HexEx::generateConeDisk(5, n, n)});
     cases.push_back({"disk5-perturbed", cases[0].mesh});
     HexEx::perturbTriParameters(cases[1].mesh, 0.3, 1);
+    if (io) {
+        std::printf("%-16s %8s %7s %9s %9s %10s %9s %10s\n", "case", "tris", "threads", "MB", "format_s", "format_MB/s",
+                    "parse_s", "parse_MB/s");
+        for (const Case& c : cases)
+            for (int t : threads) {
+                std::vector<double> fs, ps;
+                std::size_t bytes = 0;
+                for (int r = 0; r < runs; ++r) {
+                    auto t0 = std::chrono::steady_clock::now();
+                    const std::string text = HexEx::formatTriObj(c.mesh, t);
+                    fs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                    bytes = text.size();
+                    t0 = std::chrono::steady_clock::now();
+                    const HexEx::ParametrizedTriMesh back = HexEx::parseTriObj(text, c.name, t);
+                    ps.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                    if (back.triangles.size() != c.mesh.triangles.size()) return 1;
+                }
+                std::sort(fs.begin(), fs.end());
+                std::sort(ps.begin(), ps.end());
+                const double mb = static_cast<double>(bytes) / 1e6, f = fs[fs.size() / 2], p = ps[ps.size() / 2];
+                std::printf("%-16s %8zu %7d %9.1f %9.3f %10.0f %9.3f %10.0f\n", c.name.c_str(), c.mesh.triangles.size(), t, mb,
+                            f, mb / f, p, mb / p);
+            }
+        return 0;
+    }
     std::printf("%-16s %8s %7s %10s %9s %6s %8s %8s %8s %8s %8s %8s %8s %8s\n", "case", "tris", "threads", "quads",
                 "flipped", "valid", "total_s", "min_s", "cpu_s", "prep_s", "darts_s", "conn_s", "post_s", "asm_s");
     for (const Case& c : cases)

@@ -89,33 +89,34 @@ struct LineCursor {
     /// Reads a finite real number; @p what names it in errors.
     double real(const char* what) {
         if (!more()) throw ParseFailure{std::string("expected ") + what + ", the line ends"};
-        const char* te = tokenEnd();
         const char* first = p;
-        if (*first == '+' && te - first > 1 && first[1] != '-') ++first;
+        if (*first == '+' && e - first > 1 && first[1] != '-') ++first;
         double x = 0;
-        const auto r = std::from_chars(first, te, x, std::chars_format::general);
-        if (r.ec != std::errc() || r.ptr != te) {
+        const auto r = std::from_chars(first, e, x, std::chars_format::general);
+        if (r.ec != std::errc() || (r.ptr < e && !isBlank(*r.ptr))) {
+            const char* te = tokenEnd();
             if (r.ec == std::errc::result_out_of_range && r.ptr == te)
                 throw ParseFailure{std::string(what) + " " + quoted(p, te) + " is out of range"};
             throw ParseFailure{std::string("expected ") + what + ", got " + quoted(p, te)};
         }
-        if (!std::isfinite(x)) throw ParseFailure{std::string(what) + " " + quoted(p, te) + " is not finite"};
-        p = te;
+        if (!std::isfinite(x)) throw ParseFailure{std::string(what) + " " + quoted(p, r.ptr) + " is not finite"};
+        p = r.ptr;
         return x;
     }
-    /// Reads an integer up to the next '/' or blank (at least one digit).
+    /// Reads an integer (optional sign, at least one digit) ending at a '/', a blank or
+    /// the end of the line.
     long long integer(const char* what) {
         const char* q = p;
-        while (q < e && !isBlank(*q) && *q != '/') ++q;
-        long long x = 0;
-        const char* first = p;
-        if (first < q && *first == '+' && q - first > 1 && first[1] != '-') ++first;
-        const auto r = std::from_chars(first, q, x);
-        if (r.ec == std::errc::result_out_of_range) throw ParseFailure{std::string(what) + " " + quoted(p, q) + " is out of range"};
-        if (r.ec != std::errc() || r.ptr != q || first == q)
+        const bool negative = q < e && *q == '-';
+        if (q < e && (*q == '-' || *q == '+')) ++q;
+        const char* digits = q;
+        unsigned long long x = 0;
+        while (q < e && static_cast<unsigned>(*q - '0') < 10u) x = 10 * x + static_cast<unsigned>(*q++ - '0');
+        if (q == digits || (q < e && !isBlank(*q) && *q != '/'))
             throw ParseFailure{std::string("expected ") + what + ", got " + quoted(p, tokenEnd())};
+        if (q - digits > 18) throw ParseFailure{std::string(what) + " " + quoted(p, q) + " is out of range"};
         p = q;
-        return x;
+        return negative ? -static_cast<long long>(x) : static_cast<long long>(x);
     }
 };
 
