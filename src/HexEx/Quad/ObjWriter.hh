@@ -14,8 +14,8 @@ namespace HexEx {
 
 /// OBJ text of @p m: one `v` per point, one `vt` per triangle corner (3 f + k + 1 is the
 /// `vt` of corner k of triangle f, so every `vt` is finite and used exactly once) and
-/// `f v/vt v/vt v/vt` per triangle. Throws InputError if a coordinate is not finite.
-/// @param threads worker threads (0 = all hardware threads); small meshes use one
+/// `f v/vt v/vt v/vt` per triangle, formatted on @p threads threads (0 = all hardware
+/// threads; small meshes use one). Throws InputError if a coordinate is not finite.
 std::string formatTriObj(const ParametrizedTriMesh& m, int threads = 1);
 
 /// Writes formatTriObj() to @p path. Throws InputError naming the file on a write error.

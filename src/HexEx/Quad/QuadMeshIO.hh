@@ -15,8 +15,8 @@ namespace HexEx {
 /// Reads a triangle mesh with per-corner texture coordinates (`vt`, `f v/vt`) from an OBJ
 /// file (parseTriObj()). Throws InputError naming the file (and the line) if it is not
 /// .obj, cannot be read, is malformed or has no faces. Whether the surface is a manifold
-/// is checked by the extraction (buildTriAdjacency()).
-/// @param threads parsing threads (0 = all hardware threads); the result does not depend on it
+/// is checked by the extraction (buildTriAdjacency()). Parsed on @p threads threads (0 =
+/// all hardware threads); the result does not depend on it.
 ParametrizedTriMesh readParametrizedTriMesh(const std::string& path, int threads = 1);
 
 /// Writes @p m as OBJ with one `vt` per triangle corner (formatTriObj(): shortest

@@ -19,8 +19,8 @@ namespace HexEx {
 /// `vn`, `o`, `g`, `s`, `usemtl`, `mtllib`, `l`, comments and other lines are ignored.
 /// Throws InputError "<name>:<line>: <reason>" for a malformed number, a non-finite
 /// coordinate, a face that is not a triangle, a corner without `vt` index, an index out of
-/// range; "<name>: no faces" for a file without faces.
-/// @param threads worker threads (0 = all hardware threads); files under 1 MB use one
+/// range; "<name>: no faces" for a file without faces. Parsed on @p threads threads (0 =
+/// all hardware threads; texts under 1 MB use one); the result does not depend on it.
 ParametrizedTriMesh parseTriObj(std::string_view text, const std::string& name, int threads = 1);
 
 /// Reads the file @p path (whole, one read) and parses it with parseTriObj(). Throws
