@@ -247,8 +247,9 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep) {
     if (eps < 1e-6) eps = 1e-6;
     LbfgsOptions lo;
     lo.max_iterations = opt.max_lbfgs_iterations;
-    lo.relative_decrease = 1e-6;
-    int steps_untangled = 0;
+    lo.relative_decrease = 1e-8;
+    int steps_untangled = 0, steps_without_progress = 0;
+    long fewest_inverted = std::numeric_limits<long>::max();
     for (int it = 0; it < opt.max_outer_iterations; ++it) {
         q.setZero(pb.variables());
         const double e_prev = pb.energy(q, eps, nullptr, nullptr);
@@ -263,6 +264,14 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep) {
         // Done when untangled and the energy has settled, or 5 steps after untangling
         // (further steps only improve the shape).
         if (inverted == 0 && (decrease < 1e-3 || ++steps_untangled >= 5)) return true;
+        // Give up on this neighbourhood when the count of inverted hexes has not dropped
+        // for 8 steps (a larger one may have room; a fixed boundary may admit no solution).
+        if (inverted < fewest_inverted) {
+            fewest_inverted = inverted;
+            steps_without_progress = 0;
+        } else if (++steps_without_progress >= 8) {
+            return false;
+        }
         const double sigma = std::max(1.0 - e / e_prev, 0.1);
         const double mu = (1.0 - sigma) * regularizedDeterminant(dmin, eps);
         eps = dmin < mu ? 2.0 * std::sqrt(mu * (mu - dmin)) : 1e-10;
@@ -332,7 +341,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     const double tol = options.on_surface_tolerance * diag;
     const VertexHexes vh(nv, mesh.hexes);
 
-    int rings = std::max(1, options.rings);
+    int rings = std::max(0, options.rings);
     for (;;) {
         // Region: vertices within `rings` hex rings of the inverted hexes.
         std::vector<char> in_v(nv, 0), in_h(mesh.hexes.size(), 0);
@@ -373,7 +382,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
         for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
             if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
         if (inverted.empty() || whole || rep.attempts >= 3) break;
-        rings *= 4;
+        rings = rings == 0 ? 1 : 4 * rings;
     }
 
     // Displacements.
@@ -389,20 +398,25 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     rep.mean_displacement = rep.moved_vertices > 0 ? sum_d / static_cast<double>(rep.moved_vertices) / diag : 0;
     finish();
     if (!inverted.empty()) {
-        long stuck = 0;
+        long stuck = 0, at_polyhedra = 0;
         for (const int c : inverted) {
-            bool any_free = false;
+            bool any_free = false, poly = false;
             for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) {
                 const char r = role[static_cast<std::size_t>(v)];
                 any_free = any_free || r == 0 || (r == 1 && options.boundary == BoundaryMode::Surface);
+                poly = poly || r == 2;
             }
             stuck += !any_free;
+            at_polyhedra += any_free && poly;
         }
         rep.message = std::to_string(inverted.size()) + " hexes remain inverted";
         if (stuck > 0)
             rep.message += "; " + std::to_string(stuck) + " of them have no vertex that may move (all on a fixed "
                            "boundary or on polyhedra), so the boundary itself forces the inversion";
-        else
+        if (at_polyhedra > 0)
+            rep.message += "; " + std::to_string(at_polyhedra) + " of them share vertices with non-hex cells "
+                           "(polyhedra), whose vertices do not move";
+        if (stuck == 0 && at_polyhedra == 0)
             rep.message += ": the minimisation found no foldover-free placement within its limits (" +
                            std::to_string(rep.outer_iterations) + " regularisation steps)" +
                            (options.boundary == BoundaryMode::Fixed ? "; the fixed boundary may not admit one" : "");

@@ -61,7 +61,7 @@ int runUntangle(const Args& args) {
             throw UsageError("--fixed-boundary and --surface-from exclude each other");
         if (pa.has("--fixed-boundary")) opt.boundary = HexEx::BoundaryMode::Fixed;
         opt.feature_angle_deg = pa.getDouble("--feature-angle", opt.feature_angle_deg, 0, 180);
-        opt.rings = static_cast<int>(pa.getInt("--rings", opt.rings, 1, 1000000));
+        opt.rings = static_cast<int>(pa.getInt("--rings", opt.rings, 0, 1000000));
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         quiet = pa.has("--quiet");
         try {

@@ -1,0 +1,85 @@
+/// @file UntanglePublishedMeshesTest.cc
+/// untangleHexMesh() on folded maps of the shared published hex meshes
+/// (`/work/shared/data/hexmeshes/*.vtk.xz`, or $HEXEX_HEXMESH_DIR): `from-hex` maps with face
+/// and cell centres moved by 0.8 grid units give inverted hexes; after untangling none
+/// remain except next to non-hex cells (whose vertices do not move). Skipped when the data
+/// or the `xz` program is absent.
+
+#include <HexEx/Generators/MapFromHexMesh.hh>
+#include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexMeshReaders.hh>
+#include <HexEx/Mesh/HexMeshQuality.hh>
+#include <HexEx/Untangling/Untangler.hh>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+#include <string>
+#include <unistd.h>
+
+using namespace HexEx;
+
+namespace {
+
+/// The published mesh @p name unpacked into a temporary directory; empty mesh if unavailable.
+HexMesh publishedMesh(const std::string& name) {
+    namespace fs = std::filesystem;
+    const char* env = std::getenv("HEXEX_HEXMESH_DIR");
+    const fs::path src = fs::path(env ? env : "/work/shared/data/hexmeshes") / (name + ".vtk.xz");
+    std::error_code ec;
+    if (!fs::is_regular_file(src, ec)) return {};
+    const fs::path dst = fs::temp_directory_path() / ("hexex_untangle_" + std::to_string(::getpid()) + "_" + name + ".vtk");
+    const std::string cmd = "xz -dc '" + src.string() + "' > '" + dst.string() + "' 2>/dev/null";
+    HexMesh m;
+    if (std::system(cmd.c_str()) == 0) m = readHexMesh(dst.string());
+    fs::remove(dst, ec);
+    return m;
+}
+
+} // namespace
+
+TEST(UntanglePublishedMeshes, FromHexMapsAtAmplitude08) {
+    struct Case {
+        const char* mesh;
+        unsigned seed;
+    };
+    long inverted_before = 0;
+    int cases = 0;
+    for (const Case& c : {Case{"cfpc16_hollow8", 2}, Case{"cfpc16_hollow8", 3}, Case{"sss19_pig_in", 1}}) {
+        const HexMesh source = publishedMesh(c.mesh);
+        if (source.hexes.empty()) continue;
+        ++cases;
+        MapFromHexOptions mo;
+        mo.perturb = 0.8;
+        mo.seed = c.seed;
+        MapFromHexResult map = mapFromHexMesh(source, mo);
+        map.map.mesh.build_adjacency();
+        HexMesh hm;
+        extractHexMesh(map.map, hm);
+        const TriangleSurface surface = tetMeshBoundary(map.map.mesh);
+        UntangleOptions uo;
+        uo.threads = 2;
+        const UntangleReport r = untangleHexMesh(hm, uo, &surface);
+        inverted_before += r.inverted_before;
+        // Hexes that share a vertex with a non-hex cell cannot always be fixed (those
+        // vertices stay); every other hex must end positive.
+        std::set<int> poly;
+        for (const auto& p : hm.polyhedra)
+            for (const auto& f : p.faces) poly.insert(f.begin(), f.end());
+        const std::vector<double> sj = scaledJacobians(hm);
+        long bad = 0;
+        for (std::size_t h = 0; h < hm.hexes.size(); ++h) {
+            bool at_poly = false;
+            for (const int v : hm.hexes[h]) at_poly = at_poly || poly.count(v) > 0;
+            bad += sj[h] <= 0 && !at_poly;
+        }
+        EXPECT_EQ(bad, 0) << c.mesh << " seed " << c.seed << ": " << r.message;
+        std::printf("%s seed %u: %ld hexes, %ld polyhedra, inverted %ld -> %ld, min sj %.3g, %.2f s\n", c.mesh, c.seed,
+                    r.hexes, static_cast<long>(hm.polyhedra.size()), r.inverted_before, r.inverted_after,
+                    r.min_scaled_jacobian_after, r.seconds);
+    }
+    if (cases == 0) GTEST_SKIP() << "published hex meshes not found (set HEXEX_HEXMESH_DIR)";
+    EXPECT_GT(inverted_before, 0) << "the folded maps should give inverted hexes";
+}
