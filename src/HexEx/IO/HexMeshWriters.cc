@@ -15,7 +15,7 @@
 #include <cctype>
 #include <charconv>
 #include <cstdint>
-#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <stdexcept>
 #include <type_traits>
@@ -24,40 +24,7 @@ namespace HexEx {
 
 namespace {
 
-/// Appends text with fast number formatting.
-class Out {
-public:
-    /// Appends raw bytes.
-    Out& operator<<(std::string_view s) {
-        buf_ += s;
-        return *this;
-    }
-    /// Appends a character.
-    Out& operator<<(char c) {
-        buf_ += c;
-        return *this;
-    }
-    /// Appends an integer.
-    template <class I, class = std::enable_if_t<std::is_integral_v<I>>>
-    Out& operator<<(I v) {
-        char tmp[32];
-        buf_.append(tmp, std::to_chars(tmp, tmp + sizeof tmp, v).ptr);
-        return *this;
-    }
-    /// Appends a double with 17 significant digits.
-    Out& num(double x) {
-        char tmp[40];
-        buf_.append(tmp, static_cast<std::size_t>(std::max(0, std::snprintf(tmp, sizeof tmp, "%.17g", x))));
-        return *this;
-    }
-    /// Appends "x y z".
-    Out& vec(const Vec3d& p) { return num(p[0]) << ' ', num(p[1]) << ' ', num(p[2]); }
-    /// The text.
-    const std::string& str() const { return buf_; }
-
-private:
-    std::string buf_;
-};
+using detail::BlockOutput;
 
 /// True on little-endian hosts (arrays are written in host byte order and labelled so).
 bool hostIsLittleEndian() {
@@ -71,7 +38,7 @@ bool hostIsLittleEndian() {
 /// point into the caller's arrays (binary) or hold their compressed bytes.
 class VtuWriter {
 public:
-    VtuWriter(Out& o, VtuEncoding enc) : o_(o), enc_(enc) {}
+    VtuWriter(BlockOutput& o, VtuEncoding enc) : o_(o), enc_(enc) {}
 
     /// Adds a DataArray element for the @p count values at @p values (@p type is the VTK
     /// name of T); binary data is not copied, so @p values must live until finish().
@@ -89,22 +56,18 @@ public:
         }
         o_ << " format=\"ascii\">\n";
         for (std::size_t i = 0; i < count; ++i) {
-            if constexpr (std::is_floating_point_v<T>) o_.num(values[i]);
+            if constexpr (std::is_floating_point_v<T>) o_.real17(values[i]);
             else o_ << static_cast<long long>(values[i]);
             o_ << ((i + 1) % static_cast<std::size_t>(comps) == 0 ? '\n' : ' ');
         }
         o_ << "        </DataArray>\n";
     }
-    /// Writes the XML, the appended blocks and the closing tags to @p out.
-    void finish(std::ostream& out) {
+    /// Appends the closing tags of the XML, the appended blocks and the last closing tags.
+    void finish() {
         o_ << "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n";
         if (enc_ != VtuEncoding::Ascii) o_ << "  <AppendedData encoding=\"raw\">\n_";
-        out.write(o_.str().data(), static_cast<std::streamsize>(o_.str().size()));
-        for (const auto& [owned, borrowed] : blocks_) {
-            out.write(owned.data(), static_cast<std::streamsize>(owned.size()));
-            out.write(borrowed.data(), static_cast<std::streamsize>(borrowed.size()));
-        }
-        out << (enc_ != VtuEncoding::Ascii ? "\n  </AppendedData>\n</VTKFile>\n" : "</VTKFile>\n");
+        for (const auto& [owned, borrowed] : blocks_) o_ << std::string_view(owned) << borrowed;
+        o_ << (enc_ != VtuEncoding::Ascii ? "\n  </AppendedData>\n</VTKFile>\n" : "</VTKFile>\n");
     }
 
 private:
@@ -115,7 +78,7 @@ private:
         return h;
     }
 
-    Out& o_;
+    BlockOutput& o_;
     VtuEncoding enc_;
     std::size_t offset_ = 0;
     std::vector<std::pair<std::string, std::string_view>> blocks_;  // owned bytes, then borrowed bytes
@@ -160,10 +123,9 @@ struct VtuCells {
     }
 };
 
-void writeVtu(std::ostream& out, const HexMesh& m, VtuEncoding enc) {
+void writeVtu(BlockOutput& o, const HexMesh& m, VtuEncoding enc) {
     static_assert(sizeof(Vec3d) == 3 * sizeof(double) && sizeof(std::array<int, 8>) == 8 * sizeof(int),
                   "points and hexes are written from the mesh's own arrays");
-    Out o;
     o << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\""
       << (hostIsLittleEndian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt64\""
       << (enc == VtuEncoding::Compressed ? " compressor=\"vtkZLibDataCompressor\"" : "") << ">\n"
@@ -179,30 +141,32 @@ void writeVtu(std::ostream& out, const HexMesh& m, VtuEncoding enc) {
     VtuCells<std::int64_t> large;
     if (total < static_cast<std::size_t>(INT32_MAX)) small.add(w, m);
     else large.add(w, m);
-    w.finish(out);
+    w.finish();
 }
 
 /// The header of an ASCII legacy VTK file titled @p title and its POINTS section.
-void vtkHeader(Out& o, const char* title, const char* dataset, const std::vector<Vec3d>& points) {
+void vtkHeader(BlockOutput& o, const char* title, const char* dataset, const std::vector<Vec3d>& points,
+               int threads) {
     o << "# vtk DataFile Version 3.0\n" << title << "\nASCII\nDATASET " << dataset << "\nPOINTS " << points.size()
       << " double\n";
-    for (const auto& p : points) o.vec(p) << '\n';
+    detail::formatItems(o, points.size(), threads,
+                        [&](BlockOutput& t, std::size_t i) { t.vec17(points[i].data()) << '\n'; });
 }
 
-void writeVtk(Out& o, const HexMesh& m) {
+void writeVtk(BlockOutput& o, const HexMesh& m, int threads) {
     const std::size_t nh = m.hexes.size();
     std::size_t ncells = nh, size = 9 * nh;
     for (const auto& p : m.polyhedra) {
         ncells += p.faces.size();
         for (const auto& f : p.faces) size += 1 + f.size();
     }
-    vtkHeader(o, "HexEx hex mesh", "UNSTRUCTURED_GRID", m.vertices);
+    vtkHeader(o, "HexEx hex mesh", "UNSTRUCTURED_GRID", m.vertices, threads);
     o << "CELLS " << ncells << ' ' << size << '\n';
-    for (const auto& h : m.hexes) {
-        o << "8";
-        for (const int v : h) o << ' ' << v;
-        o << '\n';
-    }
+    detail::formatItems(o, nh, threads, [&](BlockOutput& t, std::size_t c) {
+        t << '8';
+        for (const int v : m.hexes[c]) t << ' ' << v;
+        t << '\n';
+    });
     for (const auto& p : m.polyhedra)
         for (const auto& f : p.faces) {
             o << f.size();
@@ -220,15 +184,16 @@ void writeVtk(Out& o, const HexMesh& m) {
     }
 }
 
-std::vector<std::string> writeMedit(Out& o, const HexMesh& m) {
+std::vector<std::string> writeMedit(BlockOutput& o, const HexMesh& m, int threads) {
     o << "MeshVersionFormatted 2\n\nDimension 3\n\nVertices\n" << m.vertices.size() << '\n';
-    for (const auto& p : m.vertices) o.vec(p) << " 0\n";
+    detail::formatItems(o, m.vertices.size(), threads,
+                        [&](BlockOutput& t, std::size_t i) { t.vec17(m.vertices[i].data()) << " 0\n"; });
     if (!m.hexes.empty()) {
         o << "\nHexahedra\n" << m.hexes.size() << '\n';
-        for (const auto& h : m.hexes) {
-            for (const int v : h) o << (v + 1) << ' ';
-            o << "0\n";
-        }
+        detail::formatItems(o, m.hexes.size(), threads, [&](BlockOutput& t, std::size_t c) {
+            for (const int v : m.hexes[c]) t << (v + 1) << ' ';
+            t << "0\n";
+        });
     }
     o << "\nEnd\n";
     std::vector<std::string> warnings;
@@ -238,21 +203,20 @@ std::vector<std::string> writeMedit(Out& o, const HexMesh& m) {
     return warnings;
 }
 
-std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc) {
+std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc,
+                                 int threads) {
     detail::checkCellIndices(mesh);
-    if (format == HexMeshFormat::Vtu) {
-        writeVtu(out, mesh, enc);
-        return {};
-    }
-    Out o;
+    threads = resolveThreadCount(threads);
+    BlockOutput o(&out);
     std::vector<std::string> warnings;
     switch (format) {
-    case HexMeshFormat::Vtk: writeVtk(o, mesh); break;
-    case HexMeshFormat::Ovm: o << writeOvmAscii(ovmFromHexMesh(mesh)); break;
-    case HexMeshFormat::Ovmb: o << writeOvmBinary(ovmFromHexMesh(mesh)); break;
-    default: warnings = writeMedit(o, mesh);
+    case HexMeshFormat::Vtu: writeVtu(o, mesh, enc); break;
+    case HexMeshFormat::Vtk: writeVtk(o, mesh, threads); break;
+    case HexMeshFormat::Ovm: writeOvmAscii(o, ovmFlatFromHexMesh(mesh, threads), threads); break;
+    case HexMeshFormat::Ovmb: writeOvmBinary(o, ovmFlatFromHexMesh(mesh, threads)); break;
+    default: warnings = writeMedit(o, mesh, threads);
     }
-    out.write(o.str().data(), static_cast<std::streamsize>(o.str().size()));
+    o.flush();
     return warnings;
 }
 
@@ -281,16 +245,17 @@ HexMeshFormat hexMeshFormatFromPath(const std::string& path) {
 }
 
 std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
-                                            VtuEncoding encoding) {
-    return writeTo(out, mesh, format, encoding);
+                                            VtuEncoding encoding, int threads) {
+    return writeTo(out, mesh, format, encoding, threads);
 }
 
-std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh, VtuEncoding encoding) {
+std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh, VtuEncoding encoding,
+                                      int threads) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
     detail::checkCellIndices(mesh);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(path + ": cannot open file for writing");
-    auto warnings = writeTo(out, mesh, format, encoding);
+    auto warnings = writeTo(out, mesh, format, encoding, threads);
     out.flush();
     if (!out) throw InputError(path + ": error while writing the file");
     for (auto& w : warnings) w = path + ": " + w;
@@ -309,13 +274,13 @@ void writeSingularEdgesVtk(const std::string& path, const std::vector<Vec3d>& po
                 throw std::invalid_argument("writeSingularEdgesVtk: segment " + std::to_string(s) +
                                             " references point " + std::to_string(v) + " (" + std::to_string(np) +
                                             " points)");
-    Out o;
-    vtkHeader(o, "HexEx singular edges", "POLYDATA", points);
+    BlockOutput o;
+    vtkHeader(o, "HexEx singular edges", "POLYDATA", points, 1);
     o << "LINES " << segments.size() << ' ' << 3 * segments.size() << '\n';
     for (const auto& s : segments) o << "2 " << s[0] << ' ' << s[1] << '\n';
     o << "CELL_DATA " << segments.size() << '\n' << "SCALARS valence int 1\n" << "LOOKUP_TABLE default\n";
     for (const int v : valences) o << v << '\n';
-    detail::writeWholeFile(path, o.str());
+    detail::writeWholeFile(path, o.take());
 }
 
 } // namespace HexEx

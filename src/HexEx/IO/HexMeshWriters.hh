@@ -59,19 +59,22 @@ VtuEncoding vtuEncodingFromName(const std::string& name);
 /// @throws InputError naming the path if the extension is none of .vtu, .vtk, .ovm, .ovmb, .mesh.
 HexMeshFormat hexMeshFormatFromPath(const std::string& path);
 
-/// Writes @p mesh in @p format to @p out (`.vtu` data arrays in @p encoding).
+/// Writes @p mesh in @p format to @p out (`.vtu` data arrays in @p encoding), in blocks of
+/// about 1 MiB; text is formatted and `.ovm`/`.ovmb` faces are numbered on @p threads
+/// threads (0 = all hardware threads); the bytes do not depend on the thread count.
 /// @return warnings (e.g. cells a format cannot store); empty if everything was written.
 /// @throws std::invalid_argument if the mesh references a vertex out of range or has a
 ///         polyhedron face with fewer than three vertices.
 std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
-                                            VtuEncoding encoding = VtuEncoding::Binary);
+                                            VtuEncoding encoding = VtuEncoding::Binary, int threads = 0);
 
-/// Writes @p mesh to @p path in the format given by its extension (see the file overview).
+/// Writes @p mesh to @p path in the format given by its extension (see the file overview),
+/// on @p threads threads as writeHexMeshStream().
 /// @return warnings, each starting with "<path>: "; empty if everything was written.
 /// @throws InputError naming the path for an unknown extension or an unwritable path;
 ///         std::invalid_argument as writeHexMeshStream().
 std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh,
-                                      VtuEncoding encoding = VtuEncoding::Binary);
+                                      VtuEncoding encoding = VtuEncoding::Binary, int threads = 0);
 
 /// Writes singular edges as legacy VTK POLYDATA: @p points, line @p segments (pairs of
 /// point indices) and a cell-data scalar `valence` (one value per segment, @p valences).

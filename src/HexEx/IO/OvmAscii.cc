@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
-#include <cstdio>
 
 namespace HexEx {
 
@@ -163,13 +162,6 @@ void readProperties(LineReader& in, OvmModel& m) {
     }
 }
 
-/// Appends a double with 17 significant digits.
-void appendReal(std::string& out, double x) {
-    char tmp[40];
-    const int n = std::snprintf(tmp, sizeof tmp, "%.17g", x);
-    out.append(tmp, static_cast<std::size_t>(n > 0 ? n : 0));
-}
-
 } // namespace
 
 OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
@@ -234,33 +226,37 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     return m;
 }
 
-std::string writeOvmAscii(const OvmModel& m) {
-    std::string o = "OVM ASCII\nVertices\n" + std::to_string(m.vertices.size()) + "\n";
-    const auto vec = [&o](const double* x) {
-        for (int k = 0; k < 3; ++k) {
-            if (k) o += ' ';
-            appendReal(o, x[k]);
-        }
-        o += '\n';
-    };
-    for (const auto& p : m.vertices) vec(p.data());
-    o += "Edges\n" + std::to_string(m.edges.size()) + "\n";
-    for (const auto& e : m.edges) o += std::to_string(e[0]) + " " + std::to_string(e[1]) + "\n";
-    const auto lists = [&o](const char* section, const std::vector<std::vector<int>>& items) {
-        o += std::string(section) + "\n" + std::to_string(items.size()) + "\n";
-        for (const auto& it : items) {
-            o += std::to_string(it.size());
-            for (const int h : it) o += " " + std::to_string(h);
-            o += '\n';
-        }
+void writeOvmAscii(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
+    const std::vector<Vec3d>& vertices = *m.vertices;
+    o << "OVM ASCII\nVertices\n" << vertices.size() << '\n';
+    detail::formatItems(o, vertices.size(), threads,
+                        [&](detail::BlockOutput& t, std::size_t i) { t.vec17(vertices[i].data()) << '\n'; });
+    o << "Edges\n" << m.edges.size() << '\n';
+    detail::formatItems(o, m.edges.size(), threads, [&](detail::BlockOutput& t, std::size_t i) {
+        t << m.edges[i][0] << ' ' << m.edges[i][1] << '\n';
+    });
+    const auto lists = [&](const char* section, const IntLists& items) {
+        o << section << '\n' << items.size() << '\n';
+        detail::formatItems(o, items.size(), threads, [&](detail::BlockOutput& t, std::size_t i) {
+            t << items.length(i);
+            for (const int* h = items.begin(i); h != items.end(i); ++h) t << ' ' << *h;
+            t << '\n';
+        });
     };
     lists("Faces", m.faces);
     lists("Polyhedra", m.cells);
-    if (!m.halffaceParams.empty()) {
-        o += "HFProp vec3d \"HexHex::Parametrization\"\n";
-        for (const auto& u : m.halffaceParams) vec(u.data());
+    if (m.halffaceParams && !m.halffaceParams->empty()) {
+        const std::vector<Vec3d>& u = *m.halffaceParams;
+        o << "HFProp vec3d \"HexHex::Parametrization\"\n";
+        detail::formatItems(o, u.size(), threads,
+                            [&](detail::BlockOutput& t, std::size_t i) { t.vec17(u[i].data()) << '\n'; });
     }
-    return o;
+}
+
+std::string writeOvmAscii(const OvmModel& m) {
+    detail::BlockOutput o;
+    writeOvmAscii(o, flatOvm(m));
+    return o.take();
 }
 
 } // namespace HexEx

@@ -142,58 +142,64 @@ void readTopo(ByteReader& r, std::size_t end, OvmModel& m, std::array<std::uint6
     if (r.pos != end) m.fail(static_cast<long long>(r.pos), "TOPO chunk has " + std::to_string(end - r.pos) + " extra bytes");
 }
 
-/// Appends @p v as @p bytes little-endian bytes.
-void put(std::string& o, std::uint64_t v, int bytes) {
-    for (int i = 0; i < bytes; ++i) o += static_cast<char>((v >> (8 * i)) & 0xff);
+/// Appends the 16-byte header of a chunk of type @p type whose body has @p bodyBytes bytes;
+/// @return the number of padding bytes to append after the body (to a multiple of 8).
+std::size_t chunkHeader(detail::BlockOutput& o, const char* type, std::size_t bodyBytes) {
+    const std::size_t pad = (8 - bodyBytes % 8) % 8;
+    o << std::string_view(type, 4);
+    o.le(0, 1);    // version
+    o.le(pad, 1);  // padding bytes
+    o.le(0, 1);    // no compression
+    o.le(1, 1);    // flags
+    o.le(bodyBytes + pad, 8);
+    return pad;
 }
 
-/// Appends a chunk of type @p type with @p body, padded to a multiple of 8 bytes.
-void putChunk(std::string& o, const char* type, const std::string& body) {
-    const std::size_t pad = (8 - body.size() % 8) % 8;
-    o.append(type, 4);
-    put(o, 0, 1);    // version
-    put(o, pad, 1);  // padding bytes
-    put(o, 0, 1);    // no compression
-    put(o, 1, 1);    // flags
-    put(o, body.size() + pad, 8);
-    o += body;
-    o.append(pad, '\0');
-}
+/// Appends @p pad zero bytes.
+void padding(detail::BlockOutput& o, std::size_t pad) { o << std::string_view("\0\0\0\0\0\0\0\0", pad); }
 
 /// Smallest encoding (1, 2 or 4 bytes) that holds @p maxValue.
 int encodingFor(std::uint64_t maxValue) { return maxValue < 256 ? 1 : maxValue < 65536 ? 2 : 4; }
 
-/// A TOPO chunk body for @p lists of handles (entity 1 edges, 2 faces, 3 cells).
-std::string topoBody(int entity, const std::vector<std::vector<int>>& lists) {
-    std::size_t maxValence = 0, minValence = SIZE_MAX;
+/// Appends a TOPO chunk for the handle lists given by their @p count, @p length(i) and the
+/// handles @p handles(i) as [begin, end) pointers (entity 1 edges, 2 faces, 3 cells).
+template <class Length, class Handles>
+void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length length, Handles handles) {
+    std::size_t maxValence = 0, minValence = SIZE_MAX, total = 0;
     int maxHandle = 0;
-    for (const auto& l : lists) {
-        maxValence = std::max(maxValence, l.size());
-        minValence = std::min(minValence, l.size());
-        for (const int h : l) maxHandle = std::max(maxHandle, h);
+    for (std::size_t i = 0; i < count; ++i) {
+        const std::size_t n = length(i);
+        maxValence = std::max(maxValence, n);
+        minValence = std::min(minValence, n);
+        total += n;
+        const auto [b, e] = handles(i);
+        for (const int* h = b; h != e; ++h) maxHandle = std::max(maxHandle, *h);
     }
-    const bool fixed = lists.empty() || (minValence == maxValence && maxValence < 256);
+    const bool fixed = count == 0 || (minValence == maxValence && maxValence < 256);
     const int hb = encodingFor(static_cast<std::uint64_t>(maxHandle)), vb = fixed ? 0 : encodingFor(maxValence);
-    std::string b;
-    put(b, 0, 8);
-    put(b, lists.size(), 4);
-    put(b, static_cast<std::uint64_t>(entity), 1);
-    put(b, fixed ? (lists.empty() ? (entity == 1 ? 2 : entity == 2 ? 3 : 4) : maxValence) : 0, 1);
-    put(b, static_cast<std::uint64_t>(vb), 1);
-    put(b, static_cast<std::uint64_t>(hb), 1);
-    put(b, 0, 8);  // handle offset
+    const std::size_t pad = chunkHeader(o, "TOPO", 24 + (fixed ? 0 : count * static_cast<std::size_t>(vb)) +
+                                                      total * static_cast<std::size_t>(hb));
+    o.le(0, 8);
+    o.le(count, 4);
+    o.le(static_cast<std::uint64_t>(entity), 1);
+    o.le(fixed ? (count == 0 ? (entity == 1 ? 2 : entity == 2 ? 3 : 4) : maxValence) : 0, 1);
+    o.le(static_cast<std::uint64_t>(vb), 1);
+    o.le(static_cast<std::uint64_t>(hb), 1);
+    o.le(0, 8);  // handle offset
     if (!fixed)
-        for (const auto& l : lists) put(b, l.size(), vb);
-    for (const auto& l : lists)
-        for (const int h : l) put(b, static_cast<std::uint64_t>(h), hb);
-    return b;
+        for (std::size_t i = 0; i < count; ++i) o.le(length(i), vb);
+    for (std::size_t i = 0; i < count; ++i) {
+        const auto [b, e] = handles(i);
+        for (const int* h = b; h != e; ++h) o.le(static_cast<std::uint32_t>(*h), hb);
+    }
+    padding(o, pad);
 }
 
-/// Appends the bits of a double.
-void putReal(std::string& o, double x) {
-    std::uint64_t bits = 0;
-    std::memcpy(&bits, &x, 8);
-    put(o, bits, 8);
+/// Appends a TOPO chunk of @p lists.
+void topoChunk(detail::BlockOutput& o, int entity, const IntLists& lists) {
+    topoChunk(
+        o, entity, lists.size(), [&](std::size_t i) { return lists.length(i); },
+        [&](std::size_t i) { return std::pair<const int*, const int*>(lists.begin(i), lists.end(i)); });
 }
 
 } // namespace
@@ -331,51 +337,57 @@ OvmModel parseOvmBinary(std::string_view data, const std::string& name) {
     return m;
 }
 
+void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
+    const std::vector<Vec3d>& vertices = *m.vertices;
+    o << std::string_view(kMagic, 8);
+    o.le(1, 1);
+    o.le(1, 1);
+    o.le(3, 1);
+    o.le(static_cast<std::uint64_t>(m.topology), 1);
+    o.le(0, 4);
+    for (const std::size_t n : {vertices.size(), m.edges.size(), m.faces.size(), m.cells.size()}) o.le(n, 8);
+    const bool params = m.halffaceParams && !m.halffaceParams->empty();
+    if (params) {
+        const std::string_view pname = "HexHex::Parametrization";
+        const std::size_t pad = chunkHeader(o, "DIRP", 1 + 4 + pname.size() + 4 + 2 + 4 + 24);
+        o.le(5, 1);
+        o.le(pname.size(), 4);
+        o << pname;
+        o.le(2, 4);
+        o << std::string_view("3d");
+        o.le(24, 4);
+        for (int k = 0; k < 3; ++k) o.le(0, 8);
+        padding(o, pad);
+    }
+    std::size_t pad = chunkHeader(o, "VERT", 16 + 24 * vertices.size());
+    o.le(0, 8);
+    o.le(vertices.size(), 4);
+    o.le(2, 4);  // double encoding + 3 reserved bytes
+    for (const auto& p : vertices)
+        for (int k = 0; k < 3; ++k) o.leReal(p[k]);
+    padding(o, pad);
+    topoChunk(
+        o, 1, m.edges.size(), [](std::size_t) { return std::size_t(2); },
+        [&](std::size_t i) { return std::pair<const int*, const int*>(m.edges[i].data(), m.edges[i].data() + 2); });
+    topoChunk(o, 2, m.faces);
+    topoChunk(o, 3, m.cells);
+    if (params) {
+        const std::vector<Vec3d>& u = *m.halffaceParams;
+        pad = chunkHeader(o, "PROP", 16 + 24 * u.size());
+        o.le(0, 8);
+        o.le(u.size(), 4);
+        o.le(0, 4);  // property index
+        for (const auto& x : u)
+            for (int k = 0; k < 3; ++k) o.leReal(x[k]);
+        padding(o, pad);
+    }
+    chunkHeader(o, "EOF ", 0);
+}
+
 std::string writeOvmBinary(const OvmModel& m) {
-    std::string o(kMagic, 8);
-    put(o, 1, 1);
-    put(o, 1, 1);
-    put(o, 3, 1);
-    put(o, static_cast<std::uint64_t>(m.topology), 1);
-    put(o, 0, 4);
-    for (const std::size_t n : {m.vertices.size(), m.edges.size(), m.faces.size(), m.cells.size()}) put(o, n, 8);
-    const bool params = !m.halffaceParams.empty();
-    if (params) {
-        std::string d;
-        const std::string pname = "HexHex::Parametrization";
-        put(d, 5, 1);
-        put(d, pname.size(), 4);
-        d += pname;
-        put(d, 2, 4);
-        d += "3d";
-        put(d, 24, 4);
-        d.append(24, '\0');
-        putChunk(o, "DIRP", d);
-    }
-    std::string v;
-    put(v, 0, 8);
-    put(v, m.vertices.size(), 4);
-    put(v, 2, 4);  // double encoding + 3 reserved bytes
-    for (const auto& p : m.vertices)
-        for (int k = 0; k < 3; ++k) putReal(v, p[k]);
-    putChunk(o, "VERT", v);
-    std::vector<std::vector<int>> edges;
-    edges.reserve(m.edges.size());
-    for (const auto& e : m.edges) edges.push_back({e[0], e[1]});
-    putChunk(o, "TOPO", topoBody(1, edges));
-    putChunk(o, "TOPO", topoBody(2, m.faces));
-    putChunk(o, "TOPO", topoBody(3, m.cells));
-    if (params) {
-        std::string p;
-        put(p, 0, 8);
-        put(p, m.halffaceParams.size(), 4);
-        put(p, 0, 4);  // property index
-        for (const auto& u : m.halffaceParams)
-            for (int k = 0; k < 3; ++k) putReal(p, u[k]);
-        putChunk(o, "PROP", p);
-    }
-    putChunk(o, "EOF ", std::string());
-    return o;
+    detail::BlockOutput o;
+    writeOvmBinary(o, flatOvm(m));
+    return o.take();
 }
 
 } // namespace HexEx

@@ -88,26 +88,57 @@ HexMesh hexMeshFromOvm(const OvmModel& m) {
     return mesh;
 }
 
-OvmModel ovmFromHexMesh(const HexMesh& mesh) {
+OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads) {
     detail::checkCellIndices(mesh);
-    OvmModel m;
-    m.vertices = mesh.vertices;
+    OvmFlatMesh m;
+    m.vertices = &mesh.vertices;
     m.topology = mesh.polyhedra.empty() ? OvmTopology::Hexahedral : OvmTopology::Polyhedral;
-    OvmBuilder faces(m);
-    for (const auto& h : mesh.hexes) {
-        int hf[6];
-        for (int i = 0; i < 6; ++i) {
-            const auto& lf = kOvmHexFaces[i];
-            hf[i] = faces.halfface({h[lf[0]], h[lf[1]], h[lf[2]], h[lf[3]]});
+    IntLists loops;
+    std::size_t entries = 24 * mesh.hexes.size(), nLoops = 6 * mesh.hexes.size();
+    for (const auto& p : mesh.polyhedra) {
+        nLoops += p.faces.size();
+        for (const auto& f : p.faces) entries += f.size();
+    }
+    loops.offsets.resize(nLoops + 1);
+    loops.values.resize(entries);
+    std::size_t at = 0, n = 0;  // entries and loops filled
+    for (const auto& h : mesh.hexes)
+        for (const auto& lf : kOvmHexFaces) {
+            for (int k = 0; k < 4; ++k) loops.values[at++] = h[static_cast<std::size_t>(lf[k])];
+            loops.offsets[++n] = at;
         }
-        auto& cell = m.cells.emplace_back();
-        for (const int i : kOvmHexOrder) cell.push_back(hf[i]);
+    for (const auto& p : mesh.polyhedra)
+        for (const auto& f : p.faces) {
+            for (const int v : f) loops.values[at++] = v;
+            loops.offsets[++n] = at;
+        }
+    OvmFaces faces = buildOvmFaces(loops, static_cast<int>(mesh.vertices.size()), threads);
+    loops = IntLists();
+    m.edges = std::move(faces.edges);
+    m.faces = std::move(faces.faceHalfedges);
+    m.cells.reserve(mesh.hexes.size() + mesh.polyhedra.size(), faces.halffaces.size());
+    std::size_t next = 0;  // first loop of the current cell
+    for (std::size_t c = 0; c < mesh.hexes.size(); ++c, next += 6) {
+        int hf[6];
+        for (int i = 0; i < 6; ++i) hf[i] = faces.halffaces[next + static_cast<std::size_t>(kOvmHexOrder[i])];
+        m.cells.add(hf, hf + 6);
     }
     for (const auto& p : mesh.polyhedra) {
-        auto& cell = m.cells.emplace_back();
-        for (const auto& f : p.faces) cell.push_back(faces.halfface(f));
+        m.cells.add(faces.halffaces.begin() + static_cast<std::ptrdiff_t>(next),
+                    faces.halffaces.begin() + static_cast<std::ptrdiff_t>(next + p.faces.size()));
+        next += p.faces.size();
     }
-    faces.finish();
+    return m;
+}
+
+OvmModel ovmFromHexMesh(const HexMesh& mesh) {
+    const OvmFlatMesh f = ovmFlatFromHexMesh(mesh);
+    OvmModel m;
+    m.vertices = mesh.vertices;
+    m.topology = f.topology;
+    m.edges = f.edges;
+    for (std::size_t i = 0; i < f.faces.size(); ++i) m.faces.emplace_back(f.faces.begin(i), f.faces.end(i));
+    for (std::size_t i = 0; i < f.cells.size(); ++i) m.cells.emplace_back(f.cells.begin(i), f.cells.end(i));
     return m;
 }
 

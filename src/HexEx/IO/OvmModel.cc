@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdint>
 
 namespace HexEx {
 
@@ -52,37 +51,15 @@ std::vector<int> OvmModel::checkTopology() const {
     return owner;
 }
 
-int OvmBuilder::halfface(const std::vector<int>& loop) {
-    std::vector<int> key = loop, other;
-    std::sort(key.begin(), key.end());
-    std::uint64_t h = 1469598103934665603ull;
-    for (const int v : key) h = (h ^ static_cast<std::uint32_t>(v)) * 1099511628211ull;
-    for (auto [it, end] = faceId_.equal_range(h); it != end; ++it) {
-        const auto& s = loops_[static_cast<std::size_t>(it->second)];
-        other.assign(s.begin(), s.end());
-        std::sort(other.begin(), other.end());
-        if (other != key) continue;
-        const std::size_t k = static_cast<std::size_t>(std::find(s.begin(), s.end(), loop[0]) - s.begin());
-        return 2 * it->second + (s[(k + 1) % s.size()] == loop[1] ? 0 : 1);
-    }
-    faceId_.emplace(h, static_cast<int>(loops_.size()));
-    loops_.push_back(loop);
-    return 2 * static_cast<int>(loops_.size() - 1);
-}
-
-void OvmBuilder::finish() {
-    std::unordered_map<std::uint64_t, int> edgeId;
-    for (const auto& loop : loops_) {
-        auto& hes = m_.faces.emplace_back();
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const int a = loop[i], b = loop[(i + 1) % loop.size()];
-            const std::uint64_t key = static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::min(a, b))) << 32 |
-                                      static_cast<std::uint32_t>(std::max(a, b));
-            const int e = edgeId.emplace(key, static_cast<int>(m_.edges.size())).first->second;
-            if (e == static_cast<int>(m_.edges.size())) m_.edges.push_back({{a, b}});
-            hes.push_back(2 * e + (m_.edges[static_cast<std::size_t>(e)][0] == a ? 0 : 1));
-        }
-    }
+OvmFlatMesh flatOvm(const OvmModel& model) {
+    OvmFlatMesh f;
+    f.topology = model.topology;
+    f.vertices = &model.vertices;
+    f.edges = model.edges;
+    for (const auto& l : model.faces) f.faces.add(l.begin(), l.end());
+    for (const auto& l : model.cells) f.cells.add(l.begin(), l.end());
+    if (!model.halffaceParams.empty()) f.halffaceParams = &model.halffaceParams;
+    return f;
 }
 
 bool isParametrizationName(std::string_view name) {

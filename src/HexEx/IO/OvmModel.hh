@@ -9,12 +9,13 @@
 /// b->a for o = 1; halfface 2f is the loop of face f, 2f+1 the reversed loop.
 
 #include "../Mesh/HexMesh.hh"
+#include "BlockOutput.hh"
+#include "OvmFaces.hh"
 
 #include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
-#include <unordered_map>
 #include <vector>
 
 namespace HexEx {
@@ -54,23 +55,19 @@ struct OvmModel {
     std::vector<int> checkTopology() const;
 };
 
-/// Adds faces and edges to a model from cells given as vertex loops: a face shared by two
-/// cells is stored once, with the orientation of its first occurrence; faces and edges are
-/// numbered in order of first use (as OpenVolumeMesh numbers them when cells are added).
-class OvmBuilder {
-public:
-    /// Builds into @p model (its vertices set, its faces and edges empty).
-    explicit OvmBuilder(OvmModel& model) : m_(model) {}
-    /// The halfface with vertex loop @p loop (>= 3 distinct vertices), adding its face if new.
-    int halfface(const std::vector<int>& loop);
-    /// Numbers the edges and sets the faces' halfedges; call once after the last halfface().
-    void finish();
-
-private:
-    OvmModel& m_;
-    std::vector<std::vector<int>> loops_;
-    std::unordered_multimap<std::uint64_t, int> faceId_;  // hash of the sorted loop -> face
+/// An OpenVolumeMesh mesh as the writers take it: the lists stored flat, vertex positions
+/// and map borrowed from the caller (they must outlive the writing).
+struct OvmFlatMesh {
+    OvmTopology topology = OvmTopology::Polyhedral;    ///< kernel type for the `.ovmb` header
+    const std::vector<Vec3d>* vertices = nullptr;      ///< vertex positions (not null when written)
+    std::vector<std::array<int, 2>> edges;             ///< edge end points
+    IntLists faces;                                    ///< per face its halfedges
+    IntLists cells;                                    ///< per cell its halffaces
+    const std::vector<Vec3d>* halffaceParams = nullptr;  ///< map per halfface, or null for none
 };
+
+/// The lists of @p model flattened; positions and map point into @p model.
+OvmFlatMesh flatOvm(const OvmModel& model);
 
 /// True if @p name (e.g. `HexHex::Parametrization`, `uvw`) names an integer-grid map: the
 /// part after the last `::`, compared case-insensitively, is one of parametrization,
@@ -91,9 +88,16 @@ OvmModel parseOvm(std::string_view data, const std::string& name);
 /// The model as OpenVolumeMesh ASCII; the map (if any) as `HFProp vec3d "HexHex::Parametrization"`.
 std::string writeOvmAscii(const OvmModel& model);
 
+/// Appends @p mesh as OpenVolumeMesh ASCII (as writeOvmAscii(const OvmModel&)) to @p out,
+/// formatting on @p threads threads (the bytes do not depend on it).
+void writeOvmAscii(detail::BlockOutput& out, const OvmFlatMesh& mesh, int threads = 1);
+
 /// The model as OpenVolumeMesh binary (file and header version 1, exact doubles, no
 /// compression); the map (if any) as halfface property `HexHex::Parametrization` of type `3d`.
 std::string writeOvmBinary(const OvmModel& model);
+
+/// Appends @p mesh as OpenVolumeMesh binary (as writeOvmBinary(const OvmModel&)) to @p out.
+void writeOvmBinary(detail::BlockOutput& out, const OvmFlatMesh& mesh);
 
 /// The hex mesh stored in @p model: cells of six quads that close up like a hexahedron
 /// become hexes (VTK order), all others polyhedra. Halffaces may point out of their cells
@@ -107,5 +111,9 @@ HexMesh hexMeshFromOvm(const OvmModel& model);
 /// of opposite faces), and a mesh of hexes only gets OvmTopology::Hexahedral.
 /// @throws std::invalid_argument for vertex indices out of range or faces of < 3 vertices.
 OvmModel ovmFromHexMesh(const HexMesh& mesh);
+
+/// The same as ovmFromHexMesh() in flat form, with faces and edges found on @p threads
+/// threads (the result does not depend on it); the positions point into @p mesh.
+OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads = 1);
 
 } // namespace HexEx

@@ -156,15 +156,24 @@ OvmModel ovmFromTetMesh(const ParametrizedTetMesh& pm) {
     OvmModel m;
     m.topology = OvmTopology::Tetrahedral;
     for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) m.vertices.push_back(pm.mesh.position(VertexHandle(static_cast<int>(v))));
-    OvmBuilder faces(m);
     // Halffaces a b c, a c d, a d b, b d c of tet a b c d point into it; opposite corners d, b, c, a.
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
+    IntLists loops;
+    loops.reserve(4 * pm.mesh.n_cells(), 12 * pm.mesh.n_cells());
     for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c) {
         const auto cv = pm.mesh.cell_vertices(CellHandle(static_cast<int>(c)));
-        auto& cell = m.cells.emplace_back();
-        for (const auto& lf : kFaces) cell.push_back(faces.halfface({cv[lf[0]].idx(), cv[lf[1]].idx(), cv[lf[2]].idx()}));
+        for (const auto& lf : kFaces) {
+            const int t[3] = {cv[lf[0]].idx(), cv[lf[1]].idx(), cv[lf[2]].idx()};
+            loops.add(t, t + 3);
+        }
     }
-    faces.finish();
+    OvmFaces faces = buildOvmFaces(loops, static_cast<int>(m.vertices.size()));
+    m.edges = std::move(faces.edges);
+    for (std::size_t f = 0; f < faces.faceHalfedges.size(); ++f)
+        m.faces.emplace_back(faces.faceHalfedges.begin(f), faces.faceHalfedges.end(f));
+    for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c)
+        m.cells.emplace_back(faces.halffaces.begin() + static_cast<std::ptrdiff_t>(4 * c),
+                             faces.halffaces.begin() + static_cast<std::ptrdiff_t>(4 * c + 4));
     m.halffaceParams.assign(2 * m.faces.size(), Vec3d(0, 0, 0));
     for (std::size_t c = 0; c < m.cells.size(); ++c)
         for (int k = 0; k < 4; ++k) m.halffaceParams[static_cast<std::size_t>(m.cells[c][k])] = pm.params[c][kFaces[k][3]];

@@ -346,7 +346,7 @@ int runExtract(const Args& args) {
             return false;
         }
     };
-    if (!write([&] { return HexEx::writeHexMesh(output, hm, encoding); })) return 2;
+    if (!write([&] { return HexEx::writeHexMesh(output, hm, encoding, opt.threads); })) return 2;
     if (!surface_path.empty()) {
         if (!write([&] { return HexEx::writeBoundarySurface(surface_path, hm); })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";
