@@ -3,10 +3,11 @@
 /// triangles, per stage, at the given thread counts: median wall-clock and CPU time
 /// (std::clock(), all threads) of the runs, the stage times of the median run.
 ///
-/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--io]`
+/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io]`
 /// Cases: disk5 (a flat disk around a valence-5 cone, 998,560 triangles, 499,280 quads,
 /// exact map) and disk5-perturbed (the same map perturbed with a = 0.3, many flipped
-/// triangles). `--quick` uses about 10,000 triangles (a smoke test). `--io` times, instead
+/// triangles). `--quick` uses about 10,000 triangles (a smoke test), `--n N` 10 N^2 triangles;
+/// `--min-per-thread K` sets QuadExtractionOptions::min_triangles_per_thread. `--io` times, instead
 /// of the extraction, the OBJ text of each case in memory: formatting it (formatTriObj())
 /// and parsing it (parseTriObj()), median of the runs, in MB/s of OBJ text.
 
@@ -28,6 +29,8 @@ int main(int argc, char** argv) {
     std::vector<int> threads = {1, 2};
     int runs = 3;
     bool quick = false, io = false;
+    int size = 316;
+    long minPerThread = HexEx::QuadExtractionOptions().min_triangles_per_thread;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
             threads.clear();
@@ -38,14 +41,18 @@ int main(int argc, char** argv) {
             runs = std::max(1, std::stoi(argv[++i]));
         } else if (!std::strcmp(argv[i], "--quick")) {
             quick = true;
+        } else if (!std::strcmp(argv[i], "--n") && i + 1 < argc) {
+            size = std::max(1, std::stoi(argv[++i]));
+        } else if (!std::strcmp(argv[i], "--min-per-thread") && i + 1 < argc) {
+            minPerThread = std::stol(argv[++i]);
         } else if (!std::strcmp(argv[i], "--io")) {
             io = true;
         } else {
-            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--io]\n");
+            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io]\n");
             return 2;
         }
     }
-    const int n = quick ? 32 : 316;  // 5 wedges * n^2 boxes * 2 triangles
+    const int n = quick ? 32 : size;  // 5 wedges * n^2 boxes * 2 triangles
     struct Case {
         std::string name;
         HexEx::ParametrizedTriMesh mesh;
@@ -92,6 +99,7 @@ int main(int argc, char** argv) {
                 HexEx::QuadMesh qm;
                 HexEx::QuadExtractionOptions opt;
                 opt.threads = t;
+                opt.min_triangles_per_thread = minPerThread;
                 const auto t0 = std::chrono::steady_clock::now();
                 const std::clock_t c0 = std::clock();
                 HexEx::QuadExtractionReport rep = HexEx::extractQuadMesh(c.mesh, qm, opt);

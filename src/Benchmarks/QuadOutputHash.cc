@@ -122,6 +122,7 @@ int main(int argc, char** argv) {
             QuadMesh qm;
             QuadExtractionOptions opt;
             opt.threads = t;
+            opt.min_triangles_per_thread = 1;  // the hash must not depend on the thread count, so really use them
             const QuadExtractionReport r = extractQuadMesh(c.mesh, qm, opt);
             const std::uint64_t h = hashResult(qm, r);
             all.add(h);

@@ -21,6 +21,7 @@ namespace {
 QuadExtractionReport run(const ParametrizedTriMesh& m, QuadMesh& out, int threads = 1) {
     QuadExtractionOptions opt;
     opt.threads = threads;
+    opt.min_triangles_per_thread = 1;  // small maps: really use the threads
     return extractQuadMesh(m, out, opt);
 }
 
@@ -262,6 +263,7 @@ TEST(QuadExtraction, FirstInputErrorIsReportedForAnyThreadCount) {
         QuadMesh qm;
         QuadExtractionOptions opt;
         opt.threads = threads;
+        opt.min_triangles_per_thread = 1;  // small maps: really use the threads
         try {
             extractQuadMesh(bad, qm, opt);
             ADD_FAILURE() << "no error with " << threads << " threads";
@@ -275,6 +277,7 @@ TEST(QuadExtraction, FirstInputErrorIsReportedForAnyThreadCount) {
         QuadMesh qm;
         QuadExtractionOptions opt;
         opt.threads = threads;
+        opt.min_triangles_per_thread = 1;  // small maps: really use the threads
         EXPECT_THROW(
             {
                 try {
@@ -302,6 +305,7 @@ TEST(QuadExtraction, NonManifoldEdgesAreNamedForAnyThreadCount) {
         QuadMesh qm;
         QuadExtractionOptions opt;
         opt.threads = threads;
+        opt.min_triangles_per_thread = 1;  // small maps: really use the threads
         try {
             extractQuadMesh(m, qm, opt);
             ADD_FAILURE() << "no error with " << threads << " threads";
@@ -317,6 +321,7 @@ TEST(QuadExtraction, NonManifoldEdgesAreNamedForAnyThreadCount) {
         QuadMesh qm;
         QuadExtractionOptions opt;
         opt.threads = threads;
+        opt.min_triangles_per_thread = 1;  // small maps: really use the threads
         try {
             extractQuadMesh(m, qm, opt);
             ADD_FAILURE() << "no error with " << threads << " threads";
@@ -325,4 +330,19 @@ TEST(QuadExtraction, NonManifoldEdgesAreNamedForAnyThreadCount) {
                                              "(inconsistent orientation or non-manifold edge)") << threads;
         }
     }
+}
+
+TEST(QuadExtraction, SmallMapsRunOnOneThread) {
+    // At most one thread per QuadExtractionOptions::min_triangles_per_thread triangles
+    // (10,000 by default): thread start-up would cost more than the work it shares.
+    QuadExtractionOptions opt;
+    opt.threads = 8;
+    QuadMesh small, large;
+    EXPECT_EQ(extractQuadMesh(generateSquare(20, 4), small, opt).threads, 1);      // 800 triangles
+    const QuadExtractionReport r = extractQuadMesh(generateSquare(100, 10), large, opt);  // 20,000 triangles
+    EXPECT_EQ(r.threads, 2);
+    EXPECT_EQ(r.output.quads, 100);
+    opt.min_triangles_per_thread = 1;
+    EXPECT_EQ(extractQuadMesh(generateSquare(20, 4), small, opt).threads, 8);
+    EXPECT_EQ(small.quads.size(), 16u);
 }

@@ -18,6 +18,10 @@ namespace HexEx {
 struct QuadExtractionOptions {
     /// Worker threads (0 = all hardware threads). The output is identical for any value.
     int threads = 0;
+    /// At most one thread per this many triangles (at least one thread): below it, starting
+    /// threads costs more than they save, so small maps run on one thread. 1 uses every
+    /// requested thread (the tests of thread-count independence).
+    long min_triangles_per_thread = 10000;
     /// Sanitization tolerance: parameter coordinates this close to an integer are snapped.
     double epsilon = 1e-6;
     /// Annihilate regular/anti dart pairs and so merge the vertices they duplicate (4.4).
@@ -74,7 +78,7 @@ struct QuadExtractionReport {
     } timings_s;  ///< timings
     QuadGMapValidation validation;       ///< validator result on the final map
     bool valid_all_quad = false;         ///< every face a quad, no anti dart left, the map valid
-    int threads = 1;                     ///< threads used
+    int threads = 1;                     ///< threads used (see QuadExtractionOptions::min_triangles_per_thread)
     std::vector<std::string> warnings;   ///< human-readable warnings
 };
 

@@ -24,7 +24,9 @@ constexpr double kMaxParam = 1 << 28;
 
 QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& out, const QuadExtractionOptions& opt) {
     QuadExtractionReport rep;
-    const int threads = resolveThreadCount(opt.threads);
+    const long perThread = std::max(1L, opt.min_triangles_per_thread);
+    const int threads = static_cast<int>(std::max<long>(
+        1, std::min<long>(resolveThreadCount(opt.threads), static_cast<long>(in.triangles.size()) / perThread)));
     rep.threads = threads;
     auto t0 = Clock::now();
 
