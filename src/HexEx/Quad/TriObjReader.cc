@@ -18,6 +18,13 @@
 #include <string>
 #include <vector>
 
+#if defined(__unix__) || defined(__APPLE__)
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#endif
+
 namespace HexEx {
 
 namespace {
@@ -286,6 +293,35 @@ ParametrizedTriMesh parseTriObj(std::string_view text, const std::string& name, 
 }
 
 ParametrizedTriMesh readTriObjFile(const std::string& path, int threads) {
+#if defined(__unix__) || defined(__APPLE__)
+    // Mapped, not copied: the parse reads the page cache directly.
+    const int fd = ::open(path.c_str(), O_RDONLY);
+    if (fd < 0) throw InputError(path + ": cannot open file");
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw InputError(path + ": cannot read file (not a regular file)");
+    }
+    const std::size_t size = static_cast<std::size_t>(st.st_size);
+    if (size == 0) {
+        ::close(fd);
+        return parseTriObj(std::string_view(), path, threads);
+    }
+    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE
+#ifdef MAP_POPULATE
+                                                     | MAP_POPULATE
+#endif
+                       ,
+                       fd, 0);
+    ::close(fd);
+    if (map == MAP_FAILED) throw InputError(path + ": cannot read file");
+    struct Unmap {
+        void* p;
+        std::size_t n;
+        ~Unmap() { ::munmap(p, n); }
+    } guard{map, size};
+    return parseTriObj(std::string_view(static_cast<const char*>(map), size), path, threads);
+#else
     std::FILE* fp = std::fopen(path.c_str(), "rb");
     if (!fp) throw InputError(path + ": cannot open file");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> guard(fp, &std::fclose);
@@ -296,6 +332,7 @@ ParametrizedTriMesh readTriObjFile(const std::string& path, int threads) {
     if (size > 0 && std::fread(buf.get(), 1, static_cast<std::size_t>(size), fp) != static_cast<std::size_t>(size))
         throw InputError(path + ": cannot read file");
     return parseTriObj(std::string_view(buf.get(), static_cast<std::size_t>(size)), path, threads);
+#endif
 }
 
 } // namespace HexEx

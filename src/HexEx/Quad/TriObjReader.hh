@@ -23,8 +23,9 @@ namespace HexEx {
 /// all hardware threads; texts under 1 MB use one); the result does not depend on it.
 ParametrizedTriMesh parseTriObj(std::string_view text, const std::string& name, int threads = 1);
 
-/// Reads the file @p path (whole, one read) and parses it with parseTriObj(). Throws
-/// InputError naming the file if it cannot be opened or read.
+/// Reads the file @p path (memory-mapped where POSIX mmap exists, else read whole) and
+/// parses it with parseTriObj(). Throws InputError naming the file if it cannot be opened
+/// or read.
 ParametrizedTriMesh readTriObjFile(const std::string& path, int threads = 1);
 
 } // namespace HexEx
