@@ -8,8 +8,9 @@
 /// exact map) and disk5-perturbed (the same map perturbed with a = 0.3, many flipped
 /// triangles). `--quick` uses about 10,000 triangles (a smoke test), `--n N` 10 N^2 triangles;
 /// `--min-per-thread K` sets QuadExtractionOptions::min_triangles_per_thread. `--io` times, instead
-/// of the extraction, the OBJ text of each case in memory: formatting it (formatTriObj())
-/// and parsing it (parseTriObj()), median of the runs, in MB/s of OBJ text.
+/// of the extraction, the OBJ text of each case: writing it to /dev/null (writeTriObjFile(),
+/// i.e. formatting) and parsing it from memory (parseTriObj()): median wall time, MB/s of
+/// OBJ text, median CPU time (all threads).
 
 #include <HexEx/Quad/QuadExtraction.hh>
 #include <HexEx/Quad/ObjWriter.hh>
@@ -62,27 +63,32 @@ int main(int argc, char** argv) {
     cases.push_back({"disk5-perturbed", cases[0].mesh});
     HexEx::perturbTriParameters(cases[1].mesh, 0.3, 1);
     if (io) {
-        std::printf("%-16s %8s %7s %9s %9s %10s %9s %10s\n", "case", "tris", "threads", "MB", "format_s", "format_MB/s",
-                    "parse_s", "parse_MB/s");
+        std::printf("%-16s %8s %7s %7s %9s %11s %10s %9s %10s %10s\n", "case", "tris", "threads", "MB", "format_s",
+                    "format_MB/s", "format_cpu", "parse_s", "parse_MB/s", "parse_cpu");
         for (const Case& c : cases)
             for (int t : threads) {
-                std::vector<double> fs, ps;
+                std::vector<double> fs, ps, fc, pc;
                 std::size_t bytes = 0;
+                const std::string text = HexEx::formatTriObj(c.mesh, t);
+                bytes = text.size();
                 for (int r = 0; r < runs; ++r) {
                     auto t0 = std::chrono::steady_clock::now();
-                    const std::string text = HexEx::formatTriObj(c.mesh, t);
+                    std::clock_t c0 = std::clock();
+                    HexEx::writeTriObjFile("/dev/null", c.mesh, t);
+                    fc.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
                     fs.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
-                    bytes = text.size();
                     t0 = std::chrono::steady_clock::now();
+                    c0 = std::clock();
                     const HexEx::ParametrizedTriMesh back = HexEx::parseTriObj(text, c.name, t);
+                    pc.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
                     ps.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
                     if (back.triangles.size() != c.mesh.triangles.size()) return 1;
                 }
-                std::sort(fs.begin(), fs.end());
-                std::sort(ps.begin(), ps.end());
-                const double mb = static_cast<double>(bytes) / 1e6, f = fs[fs.size() / 2], p = ps[ps.size() / 2];
-                std::printf("%-16s %8zu %7d %9.1f %9.3f %10.0f %9.3f %10.0f\n", c.name.c_str(), c.mesh.triangles.size(), t, mb,
-                            f, mb / f, p, mb / p);
+                for (auto* v : {&fs, &ps, &fc, &pc}) std::sort(v->begin(), v->end());
+                const std::size_t mid = fs.size() / 2;
+                const double mb = static_cast<double>(bytes) / 1e6, f = fs[mid], p = ps[mid];
+                std::printf("%-16s %8zu %7d %7.1f %9.3f %11.0f %10.3f %9.3f %10.0f %10.3f\n", c.name.c_str(),
+                            c.mesh.triangles.size(), t, mb, f, mb / f, fc[mid], p, mb / p, pc[mid]);
             }
         return 0;
     }

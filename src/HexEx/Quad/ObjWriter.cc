@@ -1,7 +1,7 @@
 /// @file ObjWriter.cc
-/// OBJ text in parallel pieces: each section (`v`, `vt`, `f`) is cut into one range of
-/// elements per thread, each range formatted into its own buffer sized for the longest
-/// possible line, and the buffers are written in order.
+/// OBJ text in parallel blocks: each section (`v`, `vt`, `f`) is formatted in rounds, every
+/// thread formatting a contiguous block of elements into its own reused buffer sized for
+/// the longest possible lines, and the buffers are written in order.
 
 #include "ObjWriter.hh"
 
@@ -11,6 +11,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,22 +33,37 @@ inline char* putReal(char* p, double x) { return std::to_chars(p, p + kMaxReal, 
 /// Writes @p x.
 inline char* putInt(char* p, long long x) { return std::to_chars(p, p + 20, x).ptr; }
 
-/// Formats @p n elements with @p line(i, p) -> end (at most @p maxLine bytes each), in
-/// one piece per thread, appended to @p pieces in element order.
+/// Receives the text in order.
+using Sink = std::function<void(const char*, std::size_t)>;
+
+/// Bytes of text per thread and round (buffers reused across rounds, so large outputs do
+/// not allocate, and fault in, one buffer as large as the file).
+constexpr std::size_t kBlockBytes = std::size_t(1) << 20;
+
+/// Formats @p n elements with @p line(i, p) -> end (at most @p maxLine bytes each) and
+/// passes the text to @p sink in element order: in rounds, each of the threads formatting
+/// a contiguous block into its own buffer.
 template <class Line>
-void formatSection(std::vector<std::string>& pieces, std::size_t n, std::size_t maxLine, int threads, Line&& line) {
+void formatSection(const Sink& sink, std::size_t n, std::size_t maxLine, int threads, Line&& line) {
     if (n == 0) return;
     const int nt = n < kParallelElements ? 1 : std::max(1, threads);
-    const std::size_t first = pieces.size();
-    pieces.resize(first + static_cast<std::size_t>(nt));
-    parallelChunks(n, nt, [&](int c, std::size_t b, std::size_t e) {
-        std::string& s = pieces[first + static_cast<std::size_t>(c)];
-        s.resize((e - b) * maxLine);
-        char* const start = &s[0];
-        char* p = start;
-        for (std::size_t i = b; i < e; ++i) p = line(i, p);
-        s.resize(static_cast<std::size_t>(p - start));
-    });
+    const std::size_t block = std::max<std::size_t>(1, kBlockBytes / maxLine);  // elements per thread and round
+    std::vector<std::unique_ptr<char[]>> bufs(static_cast<std::size_t>(nt));
+    std::vector<std::size_t> used(static_cast<std::size_t>(nt), 0);
+    for (auto& b : bufs) b.reset(new char[block * maxLine]);
+    for (std::size_t start = 0; start < n; start += block * static_cast<std::size_t>(nt)) {
+        const std::size_t stop = std::min(n, start + block * static_cast<std::size_t>(nt));
+        parallelChunks(stop - start, nt, [&](int c, std::size_t b, std::size_t e) {
+            char* const begin = bufs[static_cast<std::size_t>(c)].get();
+            char* p = begin;
+            for (std::size_t i = start + b; i < start + e; ++i) p = line(i, p);
+            used[static_cast<std::size_t>(c)] = static_cast<std::size_t>(p - begin);
+        });
+        for (int c = 0; c < nt; ++c) {
+            sink(bufs[static_cast<std::size_t>(c)].get(), used[static_cast<std::size_t>(c)]);
+            used[static_cast<std::size_t>(c)] = 0;
+        }
+    }
 }
 
 /// Throws InputError if @p x is not finite.
@@ -55,16 +71,16 @@ inline void requireFinite(double x, const char* what, std::size_t i) {
     if (!std::isfinite(x)) throw InputError(std::string("cannot write OBJ: ") + what + " " + std::to_string(i) + " has a coordinate that is not finite");
 }
 
-/// The pieces of a triangle mesh's OBJ text.
-std::vector<std::string> triPieces(const ParametrizedTriMesh& m, int threads) {
+/// Passes the OBJ text of a triangle mesh to @p sink.
+void writeTri(const Sink& sink, const ParametrizedTriMesh& m, int threads) {
     const std::size_t nf = m.triangles.size();
     if (m.params.size() != nf) throw InputError("cannot write OBJ: " + std::to_string(nf) + " triangles but " +
                                                 std::to_string(m.params.size()) + " parameter triples");
-    std::vector<std::string> pieces;
-    pieces.push_back("# " + std::to_string(m.points.size()) + " vertices, " + std::to_string(nf) +
-                     " triangles, one vt per triangle corner\n");
+    const std::string head = "# " + std::to_string(m.points.size()) + " vertices, " + std::to_string(nf) +
+                             " triangles, one vt per triangle corner\n";
+    sink(head.data(), head.size());
     const int nt = std::max(1, resolveThreadCount(threads));
-    formatSection(pieces, m.points.size(), 3 + 3 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
+    formatSection(sink, m.points.size(), 3 + 3 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
         const Vec3d& x = m.points[i];
         for (int d = 0; d < 3; ++d) requireFinite(x[d], "vertex", i);
         *p++ = 'v';
@@ -75,7 +91,7 @@ std::vector<std::string> triPieces(const ParametrizedTriMesh& m, int threads) {
         *p++ = '\n';
         return p;
     });
-    formatSection(pieces, 3 * nf, 4 + 2 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
+    formatSection(sink, 3 * nf, 4 + 2 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
         const Vec2d& t = m.params[i / 3][i % 3];
         requireFinite(t[0], "parameter of triangle", i / 3);
         requireFinite(t[1], "parameter of triangle", i / 3);
@@ -89,7 +105,7 @@ std::vector<std::string> triPieces(const ParametrizedTriMesh& m, int threads) {
         return p;
     });
     const long long nv = static_cast<long long>(m.points.size());
-    formatSection(pieces, nf, 2 + 3 * (2 * kMaxInt + 2), nt, [&](std::size_t f, char* p) {
+    formatSection(sink, nf, 2 + 3 * (2 * kMaxInt + 2), nt, [&](std::size_t f, char* p) {
         *p++ = 'f';
         for (std::size_t k = 0; k < 3; ++k) {
             const int v = m.triangles[f][k];
@@ -102,14 +118,12 @@ std::vector<std::string> triPieces(const ParametrizedTriMesh& m, int threads) {
         *p++ = '\n';
         return p;
     });
-    return pieces;
 }
 
-/// The pieces of a quad mesh's OBJ text.
-std::vector<std::string> quadPieces(const QuadMesh& qm, int threads) {
-    std::vector<std::string> pieces;
+/// Passes the OBJ text of a quad mesh to @p sink.
+void writeQuad(const Sink& sink, const QuadMesh& qm, int threads) {
     const int nt = std::max(1, resolveThreadCount(threads));
-    formatSection(pieces, qm.vertices.size(), 3 + 3 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
+    formatSection(sink, qm.vertices.size(), 3 + 3 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
         const Vec3d& x = qm.vertices[i];
         for (int d = 0; d < 3; ++d) requireFinite(x[d], "vertex", i);
         *p++ = 'v';
@@ -120,7 +134,7 @@ std::vector<std::string> quadPieces(const QuadMesh& qm, int threads) {
         *p++ = '\n';
         return p;
     });
-    formatSection(pieces, qm.quads.size(), 2 + 4 * (kMaxInt + 1), nt, [&](std::size_t q, char* p) {
+    formatSection(sink, qm.quads.size(), 2 + 4 * (kMaxInt + 1), nt, [&](std::size_t q, char* p) {
         *p++ = 'f';
         for (int v : qm.quads[q]) {
             *p++ = ' ';
@@ -135,54 +149,48 @@ std::vector<std::string> quadPieces(const QuadMesh& qm, int threads) {
         for (int v : loop) poly += ' ' + std::to_string(static_cast<long long>(v) + 1);
         poly += '\n';
     }
-    pieces.push_back(std::move(poly));
-    return pieces;
+    sink(poly.data(), poly.size());
 }
 
-/// Concatenation of @p pieces.
-std::string join(const std::vector<std::string>& pieces) {
-    std::size_t n = 0;
-    for (const auto& s : pieces) n += s.size();
-    std::string out;
-    out.reserve(n);
-    for (const auto& s : pieces) out += s;
-    return out;
-}
-
-/// Writes @p pieces to @p path in order.
-void writePieces(const std::string& path, const std::vector<std::string>& pieces) {
+/// Writes the text @p produce passes to its sink to @p path; errors (InputError) of
+/// @p produce are prefixed with the path.
+void writeFile(const std::string& path, const std::function<void(const Sink&)>& produce) {
     std::FILE* fp = std::fopen(path.c_str(), "wb");
     if (!fp) throw InputError(path + ": cannot open for writing");
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> guard(fp, &std::fclose);
-    for (const auto& s : pieces)
-        if (!s.empty() && std::fwrite(s.data(), 1, s.size(), fp) != s.size()) throw InputError(path + ": write error");
+    bool ok = true;
+    try {
+        produce([&](const char* p, std::size_t n) { ok = ok && (n == 0 || std::fwrite(p, 1, n, fp) == n); });
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+    if (!ok) throw InputError(path + ": write error");
     if (std::fclose(guard.release()) != 0) throw InputError(path + ": write error");
+}
+
+/// The text @p produce passes to its sink.
+std::string collect(const std::function<void(const Sink&)>& produce) {
+    std::string out;
+    produce([&](const char* p, std::size_t n) { out.append(p, n); });
+    return out;
 }
 
 } // namespace
 
-std::string formatTriObj(const ParametrizedTriMesh& m, int threads) { return join(triPieces(m, threads)); }
-
-void writeTriObjFile(const std::string& path, const ParametrizedTriMesh& m, int threads) {
-    std::vector<std::string> pieces;
-    try {
-        pieces = triPieces(m, threads);
-    } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
-    }
-    writePieces(path, pieces);
+std::string formatTriObj(const ParametrizedTriMesh& m, int threads) {
+    return collect([&](const Sink& s) { writeTri(s, m, threads); });
 }
 
-std::string formatQuadObj(const QuadMesh& qm, int threads) { return join(quadPieces(qm, threads)); }
+void writeTriObjFile(const std::string& path, const ParametrizedTriMesh& m, int threads) {
+    writeFile(path, [&](const Sink& s) { writeTri(s, m, threads); });
+}
+
+std::string formatQuadObj(const QuadMesh& qm, int threads) {
+    return collect([&](const Sink& s) { writeQuad(s, qm, threads); });
+}
 
 void writeQuadObjFile(const std::string& path, const QuadMesh& qm, int threads) {
-    std::vector<std::string> pieces;
-    try {
-        pieces = quadPieces(qm, threads);
-    } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
-    }
-    writePieces(path, pieces);
+    writeFile(path, [&](const Sink& s) { writeQuad(s, qm, threads); });
 }
 
 } // namespace HexEx
