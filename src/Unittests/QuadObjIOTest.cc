@@ -185,10 +185,12 @@ TEST(QuadObjIO, IssueReproducersReadBack) {
 }
 
 TEST(QuadObjIO, ReaderAndWritersDoNotDependOnThreads) {
-    ParametrizedTriMesh m = generateConeDisk(5, 40, 40);  // 16,000 triangles, above both thresholds
+    // 49,000 triangles: the writers' threshold is 20,000 elements; the reader uses one
+    // thread per MB, so 3 threads really run on this 9 MB text.
+    ParametrizedTriMesh m = generateConeDisk(5, 70, 70);
     perturbTriParameters(m, 0.3, 2);
     const std::string one = formatTriObj(m, 1);
-    ASSERT_GT(one.size(), std::size_t(1) << 20);
+    ASSERT_GT(one.size(), std::size_t(3) << 20);
     EXPECT_EQ(formatTriObj(m, 2), one);
     EXPECT_EQ(formatTriObj(m, 5), one);
     for (const int t : {1, 2, 3, 8}) expectSameMap(m, parseTriObj(one, "m.obj", t), 0, std::to_string(t) + " threads");

@@ -32,7 +32,7 @@ namespace {
 /// What a line declares.
 enum class LineKind { Vertex, TexCoord, Face, Other };
 
-/// Below this size a file is parsed on one thread (thread start-up costs more than it saves).
+/// At most one thread per this many bytes (thread start-up costs more than it saves on less).
 constexpr std::size_t kParallelBytes = std::size_t(1) << 20;
 
 inline bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -178,7 +178,8 @@ inline const char* lineEnd(const char* p, const char* e) {
 ParametrizedTriMesh parseTriObj(std::string_view text, const std::string& name, int threads) {
     const char* tb = text.data();
     const char* te = tb + text.size();
-    const int nt = text.size() < kParallelBytes ? 1 : std::max(1, resolveThreadCount(threads));
+    const int nt = static_cast<int>(std::max<std::size_t>(
+        1, std::min<std::size_t>(static_cast<std::size_t>(resolveThreadCount(threads)), text.size() / kParallelBytes)));
     std::vector<ChunkInfo> chunks = cutChunks(tb, te, nt);
     const int nc = static_cast<int>(chunks.size());
 

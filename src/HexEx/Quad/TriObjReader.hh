@@ -20,7 +20,7 @@ namespace HexEx {
 /// Throws InputError "<name>:<line>: <reason>" for a malformed number, a non-finite
 /// coordinate, a face that is not a triangle, a corner without `vt` index, an index out of
 /// range; "<name>: no faces" for a file without faces. Parsed on @p threads threads (0 =
-/// all hardware threads; texts under 1 MB use one); the result does not depend on it.
+/// all hardware threads; at most one per MB of text); the result does not depend on it.
 ParametrizedTriMesh parseTriObj(std::string_view text, const std::string& name, int threads = 1);
 
 /// Reads the file @p path (memory-mapped where POSIX mmap exists, else read whole) and
