@@ -13,7 +13,7 @@
 /// OBJ text, median CPU time (all threads).
 
 #include <HexEx/Quad/QuadExtraction.hh>
-#include <HexEx/Quad/ObjWriter.hh>
+#include <HexEx/Quad/TextMeshWriters.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
 #include <HexEx/Quad/TriObjReader.hh>
 

@@ -10,7 +10,7 @@
 #include <HexEx/IO/HexMeshReaders.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
 #include <HexEx/IO/OvmTetReader.hh>
-#include <HexEx/Quad/ObjWriter.hh>
+#include <HexEx/Quad/TextMeshWriters.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
 #include <HexEx/Quad/TriObjReader.hh>
 

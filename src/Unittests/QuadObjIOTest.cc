@@ -12,7 +12,7 @@
 #endif
 
 #include <HexEx/Core/Error.hh>
-#include <HexEx/Quad/ObjWriter.hh>
+#include <HexEx/Quad/TextMeshWriters.hh>
 #include <HexEx/Quad/QuadExtraction.hh>
 #include <HexEx/Quad/QuadGenerators.hh>
 #include <HexEx/Quad/QuadMeshIO.hh>
@@ -20,6 +20,7 @@
 #include <HexEx/Quad/TriObjReader.hh>
 
 #include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 
 #include <gtest/gtest.h>
@@ -196,7 +197,8 @@ TEST(QuadObjIO, ReaderAndWritersDoNotDependOnThreads) {
     for (const int t : {1, 2, 3, 8}) expectSameMap(m, parseTriObj(one, "m.obj", t), 0, std::to_string(t) + " threads");
     QuadMesh qm;
     ASSERT_TRUE(extractQuadMesh(m, qm).valid_all_quad);
-    EXPECT_EQ(formatQuadObj(qm, 3), formatQuadObj(qm, 1));
+    for (const QuadFileFormat f : {QuadFileFormat::Obj, QuadFileFormat::Off, QuadFileFormat::Ply})
+        EXPECT_EQ(formatQuadMesh(qm, f, 3), formatQuadMesh(qm, f, 1));
     // Errors are the first in file order for any thread count.
     std::string bad = one;
     const std::size_t late = bad.find("\nf ", bad.size() / 2);
@@ -295,4 +297,37 @@ TEST(QuadObjIO, SameQuadMeshThroughBothReaders) {
             for (std::size_t v = 0; v < ours.vertices.size(); ++v)
                 for (int d = 0; d < 3; ++d) EXPECT_NEAR(ours.vertices[v][d], theirs.vertices[v][d], 1e-5) << s.name << " vertex " << v;
         }
+}
+
+TEST(QuadObjIO, QuadMeshFilesReadBackThroughOpenMesh) {
+    // OBJ, OFF and PLY of a quad mesh with a polygon (a pentagon over the quads' vertices
+    // is not manifold, so it gets its own vertices) read back by OpenMesh's readers.
+    QuadMesh qm;
+    ASSERT_TRUE(extractQuadMesh(generateConeDisk(5, 2, 3), qm).valid_all_quad);
+    const int v0 = static_cast<int>(qm.vertices.size());
+    for (int i = 0; i < 5; ++i) qm.vertices.push_back(Vec3d(10 + std::cos(1.25 * i), std::sin(1.25 * i), 0.1 * i));
+    qm.polygons.push_back({v0, v0 + 1, v0 + 2, v0 + 3, v0 + 4});
+    TempDir tmp;
+    for (const std::string ext : {".obj", ".off", ".ply"}) {
+        const std::string file = tmp.path("q" + ext);
+        writeQuadMesh(file, qm);
+        OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits> om;
+        ASSERT_TRUE(OpenMesh::IO::read_mesh(om, file)) << ext;
+        ASSERT_EQ(om.n_vertices(), qm.vertices.size()) << ext;
+        ASSERT_EQ(om.n_faces(), qm.quads.size() + 1) << ext;
+        for (std::size_t v = 0; v < qm.vertices.size(); ++v)
+            for (int d = 0; d < 3; ++d)
+                EXPECT_NEAR(om.point(OpenMesh::VertexHandle(static_cast<int>(v)))[d], qm.vertices[v][d], 1e-6) << ext;
+        for (std::size_t f = 0; f < om.n_faces(); ++f) {
+            std::vector<int> loop;
+            for (auto vh : om.fv_range(OpenMesh::FaceHandle(static_cast<int>(f)))) loop.push_back(vh.idx());
+            const std::vector<int> want = f < qm.quads.size() ? std::vector<int>(qm.quads[f].begin(), qm.quads[f].end()) : qm.polygons[0];
+            ASSERT_EQ(loop.size(), want.size()) << ext << " face " << f;
+            // The same loop, possibly starting at another corner.
+            const auto start = std::find(loop.begin(), loop.end(), want[0]);
+            ASSERT_NE(start, loop.end()) << ext;
+            std::rotate(loop.begin(), start, loop.end());
+            EXPECT_EQ(loop, want) << ext << " face " << f;
+        }
+    }
 }

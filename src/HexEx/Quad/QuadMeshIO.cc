@@ -1,21 +1,12 @@
 /// @file QuadMeshIO.cc
-/// Files of the 2D pipeline: OBJ through the fast reader and writers of this folder,
-/// OFF and PLY quad meshes through OpenMesh's IO, VTU with a small writer.
-
-// OpenMesh's PropertyT<VectorT>::push_back() default-constructs an uninitialized vector,
-// which GCC reports as -Wmaybe-uninitialized inside the standard library once inlined.
-#if defined(__GNUC__) && !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
+/// Files of the 2D pipeline: OBJ, OFF and PLY through the fast reader and writers of this
+/// folder, VTU with a small writer.
 
 #include "QuadMeshIO.hh"
 
 #include "../Core/Error.hh"
-#include "ObjWriter.hh"
-#include "QuadTraits.hh"
+#include "TextMeshWriters.hh"
 #include "TriObjReader.hh"
-
-#include <OpenMesh/Core/IO/MeshIO.hh>
 
 #include <fstream>
 #include <iomanip>
@@ -24,14 +15,6 @@
 namespace HexEx {
 
 namespace {
-/// OpenMesh traits with double positions and texture coordinates.
-struct DoubleTraits : public OpenMesh::DefaultTraits {
-    typedef OpenMesh::Vec3d Point;       ///< positions
-    typedef OpenMesh::Vec3d Normal;      ///< normals
-    typedef OpenMesh::Vec2d TexCoord2D;  ///< texture coordinates
-};
-using DPolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
-
 /// Lower-case extension of @p path including the dot, or "".
 std::string extensionOf(const std::string& path) {
     const std::size_t dot = path.rfind('.');
@@ -55,15 +38,9 @@ void writeParametrizedTriMesh(const std::string& path, const ParametrizedTriMesh
 
 void writeQuadMesh(const std::string& path, const QuadMesh& qm, int threads) {
     const std::string ext = extensionOf(path);
-    if (ext == ".obj") {
-        writeQuadObjFile(path, qm, threads);
-        return;
-    }
-    if (ext == ".off" || ext == ".ply") {
-        DPolyMesh mesh;
-        fromQuadMesh(qm, mesh);
-        if (!OpenMesh::IO::write_mesh(mesh, path, OpenMesh::IO::Options::Default, 17))
-            throw InputError(path + ": OpenMesh could not write the file");
+    if (ext == ".obj" || ext == ".off" || ext == ".ply") {
+        writeQuadMeshFile(path, qm, ext == ".obj" ? QuadFileFormat::Obj : ext == ".off" ? QuadFileFormat::Off : QuadFileFormat::Ply,
+                          threads);
         return;
     }
     if (ext != ".vtu") throw InputError(path + ": unknown quad mesh format (use .obj, .off, .ply or .vtu)");

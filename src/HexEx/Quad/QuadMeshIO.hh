@@ -1,9 +1,9 @@
 #pragma once
 /// @file QuadMeshIO.hh
 /// Files of the 2D pipeline: triangle meshes with per-corner parameters as OBJ with `vt`
-/// texture coordinates (read and written by TriObjReader.hh / ObjWriter.hh, parameters as
-/// doubles, exact round trip), quad meshes as OBJ (ObjWriter.hh), OFF or PLY (OpenMesh's
-/// writers) or VTU (a small writer here, VTK_QUAD / VTK_POLYGON cells).
+/// texture coordinates (read and written by TriObjReader.hh / TextMeshWriters.hh, parameters as
+/// doubles, exact round trip), quad meshes as OBJ, OFF or PLY (TextMeshWriters.hh) or VTU
+/// (a small writer here, VTK_QUAD / VTK_POLYGON cells).
 
 #include "ParametrizedTriMesh.hh"
 #include "QuadMesh.hh"
@@ -25,8 +25,8 @@ ParametrizedTriMesh readParametrizedTriMesh(const std::string& path, int threads
 /// or a write error.
 void writeParametrizedTriMesh(const std::string& path, const ParametrizedTriMesh& m, int threads = 1);
 
-/// Writes @p qm by extension: .obj (formatQuadObj()), .off and .ply through OpenMesh's
-/// PolyMesh (17 significant digits), .vtu as VTK XML unstructured grid (ASCII). Throws
+/// Writes @p qm by extension: .obj, .off, .ply (ASCII) with writeQuadMeshFile(), .vtu as
+/// VTK XML unstructured grid (ASCII). Throws
 /// InputError for an unknown extension or a write error.
 void writeQuadMesh(const std::string& path, const QuadMesh& qm, int threads = 1);
 

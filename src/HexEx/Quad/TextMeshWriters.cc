@@ -1,9 +1,9 @@
-/// @file ObjWriter.cc
-/// OBJ text in parallel blocks: each section (`v`, `vt`, `f`) is formatted in rounds, every
+/// @file TextMeshWriters.cc
+/// OBJ, OFF and PLY text in parallel blocks: each section (`v`, `vt`, `f`) is formatted in rounds, every
 /// thread formatting a contiguous block of elements into its own reused buffer sized for
 /// the longest possible lines, and the buffers are written in order.
 
-#include "ObjWriter.hh"
+#include "TextMeshWriters.hh"
 
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
@@ -120,33 +120,52 @@ void writeTri(const Sink& sink, const ParametrizedTriMesh& m, int threads) {
     });
 }
 
-/// Passes the OBJ text of a quad mesh to @p sink.
-void writeQuad(const Sink& sink, const QuadMesh& qm, int threads) {
+/// Passes the text of a quad mesh in @p format to @p sink.
+void writeQuad(const Sink& sink, const QuadMesh& qm, QuadFileFormat format, int threads) {
     const int nt = std::max(1, resolveThreadCount(threads));
+    const bool obj = format == QuadFileFormat::Obj;
+    const std::size_t nf = qm.quads.size() + qm.polygons.size();
+    std::size_t longest = 4;
+    for (const auto& loop : qm.polygons) longest = std::max(longest, loop.size());
+    std::string head;
+    if (format == QuadFileFormat::Off) {
+        head = "OFF\n" + std::to_string(qm.vertices.size()) + " " + std::to_string(nf) + " 0\n";
+    } else if (format == QuadFileFormat::Ply) {
+        head = "ply\nformat ascii 1.0\ncomment written by HexEx\nelement vertex " + std::to_string(qm.vertices.size()) +
+               "\nproperty double x\nproperty double y\nproperty double z\nelement face " + std::to_string(nf) +
+               "\nproperty list " + (longest > 255 ? "int" : "uchar") + " int vertex_indices\nend_header\n";
+    }
+    sink(head.data(), head.size());
     formatSection(sink, qm.vertices.size(), 3 + 3 * (kMaxReal + 1), nt, [&](std::size_t i, char* p) {
         const Vec3d& x = qm.vertices[i];
         for (int d = 0; d < 3; ++d) requireFinite(x[d], "vertex", i);
-        *p++ = 'v';
-        for (int d = 0; d < 3; ++d) {
+        if (obj) {
+            *p++ = 'v';
+            *p++ = ' ';
+        }
+        p = putReal(p, x[0]);
+        for (int d = 1; d < 3; ++d) {
             *p++ = ' ';
             p = putReal(p, x[d]);
         }
         *p++ = '\n';
         return p;
     });
+    // OBJ: "f" and 1-based indices; OFF and PLY: the corner count and 0-based indices.
+    const long long base = obj ? 1 : 0;
     formatSection(sink, qm.quads.size(), 2 + 4 * (kMaxInt + 1), nt, [&](std::size_t q, char* p) {
-        *p++ = 'f';
+        *p++ = obj ? 'f' : '4';
         for (int v : qm.quads[q]) {
             *p++ = ' ';
-            p = putInt(p, static_cast<long long>(v) + 1);
+            p = putInt(p, static_cast<long long>(v) + base);
         }
         *p++ = '\n';
         return p;
     });
     std::string poly;
     for (const auto& loop : qm.polygons) {
-        poly += 'f';
-        for (int v : loop) poly += ' ' + std::to_string(static_cast<long long>(v) + 1);
+        poly += obj ? std::string("f") : std::to_string(loop.size());
+        for (int v : loop) poly += ' ' + std::to_string(static_cast<long long>(v) + base);
         poly += '\n';
     }
     sink(poly.data(), poly.size());
@@ -185,12 +204,12 @@ void writeTriObjFile(const std::string& path, const ParametrizedTriMesh& m, int 
     writeFile(path, [&](const Sink& s) { writeTri(s, m, threads); });
 }
 
-std::string formatQuadObj(const QuadMesh& qm, int threads) {
-    return collect([&](const Sink& s) { writeQuad(s, qm, threads); });
+std::string formatQuadMesh(const QuadMesh& qm, QuadFileFormat format, int threads) {
+    return collect([&](const Sink& s) { writeQuad(s, qm, format, threads); });
 }
 
-void writeQuadObjFile(const std::string& path, const QuadMesh& qm, int threads) {
-    writeFile(path, [&](const Sink& s) { writeQuad(s, qm, threads); });
+void writeQuadMeshFile(const std::string& path, const QuadMesh& qm, QuadFileFormat format, int threads) {
+    writeFile(path, [&](const Sink& s) { writeQuad(s, qm, format, threads); });
 }
 
 } // namespace HexEx
