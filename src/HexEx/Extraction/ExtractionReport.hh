@@ -86,6 +86,7 @@ struct ExtractionReport {
         long boundary_quads = 0;             ///< boundary quads
         long unconnected_darts = 0;          ///< missing alpha_0..alpha_2 links
         long repaired_face_connections = 0;  ///< partially connected quads completed
+        long relinked_faces = 0;             ///< quads linked again by their vertices after the annihilation (relinkInconsistentFaces())
     } output;  ///< output statistics
     /// Dart statistics.
     struct Darts {

@@ -123,6 +123,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("quads", out.quads);
             w.num("boundary_quads", out.boundary_quads);
             w.num("unconnected_darts", out.unconnected_darts);
+            w.num("relinked_faces", out.relinked_faces);
         }));
         top.raw("darts", object(2, [&](ObjectWriter& w) {
             w.num("extracted", d.extracted);

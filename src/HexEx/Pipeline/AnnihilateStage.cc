@@ -3,6 +3,7 @@
 #include "../Core/Parallel.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
 #include "../Postprocessing/FaceConnectionRepair.hh"
+#include "../Postprocessing/FaceRelinking.hh"
 
 #include <cstring>
 #include <functional>
@@ -80,6 +81,15 @@ MapOutput buildMapStage(MapInput&& in) {
         if (out.repaired_face_connections > 0)
             out.warnings.push_back(std::to_string(out.repaired_face_connections) +
                                    " partially connected quads were completed (alpha_3 links added)");
+    }
+    // Only annihilation re-links darts: without removed pairs every alpha_3 link is a traced one.
+    if (in.repair_faces && in.survivors->pairs > 0) {
+        const FaceRelinkStats rs = relinkInconsistentFaces(out.map);
+        out.inconsistent_faces = rs.inconsistent_faces;
+        out.relinked_faces = rs.relinked_faces;
+        if (rs.inconsistent_faces > 0)
+            out.warnings.push_back(std::to_string(rs.inconsistent_faces) + " quads had inconsistent alpha_3 links after the annihilation; " +
+                                   std::to_string(rs.relinked_faces) + " of them were linked again by their vertices");
     }
     return out;
 }

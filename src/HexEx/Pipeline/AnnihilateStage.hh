@@ -53,11 +53,14 @@ struct MapOutput {
     GMap<3> map;                          ///< the surviving darts and their links
     long unconnected_darts = 0;           ///< missing alpha_0..alpha_2 links
     long repaired_face_connections = 0;   ///< alpha_3 links added by the face repair
+    long inconsistent_faces = 0;          ///< quads whose alpha_3 links were cut (relinkInconsistentFaces())
+    long relinked_faces = 0;              ///< of those, quads linked again by their vertices
     std::vector<std::string> warnings;    ///< warnings of this stage
 };
 
 /// Compacts the survivors into a generalized map (chunks in parallel; the result does not
-/// depend on the thread count) and repairs partial face connections.
+/// depend on the thread count), repairs partial face connections and, after an
+/// annihilation, re-pairs the quads it left inconsistently linked (relinkInconsistentFaces()).
 MapOutput buildMapStage(MapInput&& in);
 
 } // namespace HexEx

@@ -30,6 +30,7 @@ void addToReport(const AnnihilateOutput& out, ExtractionReport& rep) {
 void addToReport(const MapOutput& out, ExtractionReport& rep) {
     rep.output.unconnected_darts = out.unconnected_darts;
     rep.output.repaired_face_connections = out.repaired_face_connections;
+    rep.output.relinked_faces = out.relinked_faces;
     appendWarnings(out.warnings, rep);
 }
 

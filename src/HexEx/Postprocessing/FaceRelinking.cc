@@ -1,0 +1,103 @@
+#include "FaceRelinking.hh"
+
+#include "../GMap/GMapValidator.hh"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <vector>
+
+namespace HexEx {
+
+FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
+    FaceRelinkStats st;
+    const std::size_t n = g.n_darts();
+    const auto& L = g.links();
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    auto alive = [&](int d) { return d >= 0 && static_cast<std::size_t>(d) < n && g.is_alive(DartHandle(d)); };
+    int nCells = 0;
+    const std::vector<int> cell = labelOrbits(g, 0b0111, &nCells);
+    auto inconsistent = [&](int d) {
+        const int e = a(d, 3);
+        if (e == d) return false;
+        if (!alive(e) || a(e, 3) != d || cell[static_cast<std::size_t>(e)] == cell[static_cast<std::size_t>(d)]) return true;
+        for (int i = 0; i < 2; ++i) {
+            const int x = a(d, i), y = a(e, i);
+            if (!alive(x) || !alive(y) || a(x, 3) != y) return true;
+        }
+        return false;
+    };
+    // Quads to cut: those with an inconsistent dart, closed under "was linked to".
+    std::vector<char> inCut(n, 0);
+    std::vector<int> cutFaces;  // first dart of every cut quad
+    std::vector<int> stack;
+    auto addFace = [&](int d) {
+        if (inCut[static_cast<std::size_t>(d)]) return;
+        cutFaces.push_back(d);
+        for (const DartHandle x : g.orbit(DartHandle(d), 0b0011)) {
+            inCut[x.uidx()] = 1;
+            stack.push_back(x.idx());
+        }
+    };
+    for (std::size_t s = 0; s < n; ++s) {
+        const int d = static_cast<int>(s);
+        if (!g.is_alive(DartHandle(d)) || inCut[s] || !inconsistent(d)) continue;
+        addFace(d);
+        while (!stack.empty()) {
+            const int x = stack.back();
+            stack.pop_back();
+            const int y = a(x, 3);
+            if (y != x && alive(y)) addFace(y);
+        }
+    }
+    if (cutFaces.empty()) return st;
+    std::sort(cutFaces.begin(), cutFaces.end());
+    st.inconsistent_faces = static_cast<long>(cutFaces.size());
+    // The vertices are taken with the inconsistent links: they join darts at one vertex
+    // (the links cross quads, not vertices), and without them a vertex can fall apart.
+    int nVertices = 0;
+    const std::vector<int> vertex = labelOrbits(g, 0b1110, &nVertices);
+    std::vector<std::vector<DartHandle>> faceDarts;
+    faceDarts.reserve(cutFaces.size());
+    for (const int f : cutFaces) {
+        faceDarts.push_back(g.orbit(DartHandle(f), 0b0011));
+        for (const DartHandle x : faceDarts.back()) g.unsew(x, 3);
+    }
+    // Quads by their four vertices (sorted); only quads of 8 darts with 4 distinct vertices.
+    std::map<std::array<int, 4>, std::vector<int>> byVertices;
+    for (std::size_t k = 0; k < faceDarts.size(); ++k) {
+        const auto& fd = faceDarts[k];
+        if (fd.size() != 8) continue;
+        std::array<int, 4> key{};
+        int m = 0;
+        bool ok = true;
+        for (const DartHandle x : fd) {
+            const int v = vertex[x.uidx()];
+            if (std::find(key.begin(), key.begin() + m, v) != key.begin() + m) continue;
+            if (m == 4) { ok = false; break; }
+            key[static_cast<std::size_t>(m++)] = v;
+        }
+        if (!ok || m != 4) continue;
+        std::sort(key.begin(), key.end());
+        byVertices[key].push_back(static_cast<int>(k));
+    }
+    for (const auto& [key, faces] : byVertices) {
+        if (faces.size() != 2) continue;
+        const auto& F = faceDarts[static_cast<std::size_t>(faces[0])];
+        const auto& G = faceDarts[static_cast<std::size_t>(faces[1])];
+        if (cell[F[0].uidx()] == cell[G[0].uidx()]) continue;
+        // Dart x of F goes to the dart of G at the same vertex on the same edge.
+        std::vector<std::pair<DartHandle, DartHandle>> pairs;
+        for (const DartHandle x : F) {
+            const int v = vertex[x.uidx()], w = vertex[static_cast<std::size_t>(a(x.idx(), 0))];
+            for (const DartHandle y : G)
+                if (vertex[y.uidx()] == v && vertex[static_cast<std::size_t>(a(y.idx(), 0))] == w) pairs.emplace_back(x, y);
+        }
+        if (pairs.size() != 8) continue;
+        for (const auto& [x, y] : pairs) g.sew(x, y, 3);
+        st.relinked_faces += 2;
+    }
+    return st;
+}
+
+} // namespace HexEx
