@@ -387,12 +387,19 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         // darts (points strictly inside without going through their frames) and builds the
         // dense indices, the second writes the darts straight to their place in one array
         // allocated at the exact size.
+        // With cheap folds the cap applies to the darts left after the cancellation: the
+        // counting pass allocates nothing per dart, and a fold that cancels must not be
+        // refused for the darts it would have had.
+        const bool capAfterCancel = chart_component != nullptr;
         parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
             for (std::size_t c = b; c < e; ++c) {
                 if (tets[c].vol == 0) continue;
                 GridBox box;
                 DartSet::DenseIndex* di = prepareTet(k, c, box);
-                counted(c, enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, capCheck));
+                if (capAfterCancel)
+                    count[c] = enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, [](std::uint32_t) {});
+                else
+                    counted(c, enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, capCheck));
             }
         });
         if (chart_component) {
@@ -403,6 +410,7 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         }
         s.tet_begin.assign(n + 1, 0);
         for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
+        if (capAfterCancel && s.tet_begin[n] > max_darts) throw capError();
         std::vector<std::size_t>().swap(count);
         s.darts.resize(s.tet_begin[n]);  // default-initialized: no pass over the memory
         parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {

@@ -155,7 +155,9 @@ using FaceMask = std::uint8_t;
 /// With @p chart_component (identityChartComponents()) and flipped tets, cancelled fold
 /// points get no darts (cancelFoldPoints(); DartSet::n_cancelled counts them).
 /// Throws ResourceError as soon as more than @p max_darts darts have been extracted (the
-/// outcome does not depend on the thread count: the total does not).
+/// outcome does not depend on the thread count: the total does not); with
+/// @p chart_component (cheap folds) the darts left after the cancellation are checked,
+/// after the counting pass and before any dart is stored.
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points_per_tet = 1e9,
                      bool implicit_cells = false, const std::vector<FaceMask>* usable_faces = nullptr,
                      double expected_cells = 0, std::size_t max_darts = static_cast<std::size_t>(-1),

@@ -73,13 +73,14 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     const PreprocessOutput pre = preprocess({&input, opt.given_rotations, opt.epsilon, opt.max_hexes, threads});
     addToReport(pre, rep);
     const bool implicit = useImplicitCells(opt.implicit_cells, pre.stats.flipped_tets);
-    state.estimate = estimateMemory(pre, implicit, opt.max_memory ? opt.max_memory : defaultMemoryBudget());
+    const bool cheapFolds = opt.cheap_folds && !opt.arcs;
+    state.estimate = estimateMemory(pre, implicit, opt.max_memory ? opt.max_memory : defaultMemoryBudget(), cheapFolds);
     checkMemoryBudget(state.estimate);
     rep.timings_s.preprocess = clock.lap();
 
     enter("darts");
     DartStageOutput darts = extractDartStage({&mesh, &pre.tets, pre.abs_volume, implicit, threads, &state.estimate, &pre.transitions,
-                                                   opt.cheap_folds && !opt.arcs});
+                                                   cheapFolds});
     addToReport(darts, rep);
     rep.timings_s.darts = clock.lap();
 

@@ -14,6 +14,9 @@ namespace {
 /// Fixed bytes per tet beyond the input: working parameters, predicates, transitions,
 /// per-tet dart offsets.
 constexpr double kBytesPerTet = 256;
+/// Bytes per point of the box around the large flipped tets with cheap folds: the proper
+/// and the flipped owner masks (8 + 8) and the "mixed" flag (FoldCancellation.cc).
+constexpr double kOwnerBytesPerBoxPoint = 17;
 
 /// "12.5" or "3.1e+05": a volume for messages.
 std::string formatVolume(double v) {
@@ -23,12 +26,23 @@ std::string formatVolume(double v) {
 }
 } // namespace
 
-MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget) {
+MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget, bool cheap_folds) {
     MemoryEstimate est;
     est.budget = budget;
     est.largest_tets = pre.cost.largest_input;
-    est.darts = 48 * (implicit_cells ? pre.cost.points_implicit : pre.cost.points);
-    const double fixed = pre.cost.dense_bytes + kBytesPerTet * static_cast<double>(pre.tets.size());
+    const TetCostSummary& c = pre.cost;
+    double points = implicit_cells ? c.points_implicit : c.points;
+    double fixed = c.dense_bytes + kBytesPerTet * static_cast<double>(pre.tets.size());
+    // Cheap folds (FoldCancellation.cc): where large flipped tets lie over large proper ones,
+    // both layers lose their darts; what they cost instead is the owner masks over the box
+    // around the large flipped tets. The fold cancellation skips a box much larger than the
+    // flipped tets' own boxes, and then nothing cancels.
+    if (cheap_folds && c.large_flipped > 0 && c.flipped_union_box <= 4 * c.flipped_box_points + 1e6) {
+        points = std::max(0.0, points - 2 * std::min(c.large_proper, c.large_flipped));
+        fixed += kOwnerBytesPerBoxPoint * c.flipped_union_box;
+        est.cheap_folds = true;
+    }
+    est.darts = 48 * points;
     est.bytes = est.darts * kBytesPerDart + fixed;
     if (budget == 0) {
         est.max_darts = std::numeric_limits<std::size_t>::max();

@@ -27,6 +27,9 @@ struct MemoryEstimate {
     double bytes = 0;              ///< estimated peak bytes of the extraction
     std::uint64_t budget = 0;      ///< the budget it is checked against (bytes; 0 = none)
     std::size_t max_darts = 0;     ///< darts the budget allows (cap for the dart extraction)
+    /// The estimate assumed that the large flipped tets cancel against large proper ones
+    /// (cheap folds); the dart cap then applies to the darts left after the cancellation.
+    bool cheap_folds = false;
     /// Up to 5 tets with the largest parametric images in the input (before sanitization,
     /// which may carry a wrong parameter into the tets around its vertex): (tet, unsigned
     /// volume in grid cells), largest first. These are the tets to check.
@@ -36,9 +39,14 @@ struct MemoryEstimate {
 /// Estimates the darts and bytes of the extraction of @p pre from its TetCostSummary: 48
 /// darts per grid cell of every tet's image (with @p implicit_cells, only a shell along the
 /// faces of large proper tets, 0.5 grid points per unit of face area), dense per-box-point
-/// indices of tets with large bounding boxes, a fixed cost per tet. @p budget (bytes, 0 =
-/// no limit) is stored and turned into max_darts. Constant time.
-MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget);
+/// indices of tets with large bounding boxes, a fixed cost per tet. With @p cheap_folds
+/// (ExtractionOptions::cheap_folds, not with arcs) the image volume of the large flipped
+/// tets and as much of the large proper tets' is taken to cancel, and the fold
+/// cancellation's owner masks (17 B per point of the box around the large flipped tets) are
+/// added instead. @p budget (bytes, 0 = no limit) is stored and turned into max_darts.
+/// Constant time.
+MemoryEstimate estimateMemory(const PreprocessOutput& pre, bool implicit_cells, std::uint64_t budget,
+                              bool cheap_folds = false);
 
 /// Throws ResourceError (memoryRefusal()) if the estimate exceeds its budget.
 void checkMemoryBudget(const MemoryEstimate& est);

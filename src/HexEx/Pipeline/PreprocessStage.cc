@@ -89,6 +89,8 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
         CompensatedSum volume6;
         long flipped = 0, degenerate = 0;
         double points = 0, pointsImplicit = 0, denseBytes = 0;
+        double largeProper = 0, largeFlipped = 0, flippedBox = 0;
+        double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};  // box around the large flipped tets
     };
     const std::size_t nBlocks = (tets.size() + kSumBlock - 1) / kSumBlock;
     std::vector<BlockCounts> blocks(nBlocks);
@@ -116,7 +118,16 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
                 for (int a = 0; a < 3; ++a) box *= std::max(0.0, std::floor(hi[a]) - std::ceil(lo[a]) + 1);
                 double shell = vol;
                 if (box >= kDenseMinPoints) {
-                    blocks[blk].denseBytes += kBytesPerBoxPoint * box;
+                    BlockCounts& B = blocks[blk];
+                    B.denseBytes += kBytesPerBoxPoint * box;
+                    (T.vol > 0 ? B.largeProper : B.largeFlipped) += vol;
+                    if (T.vol < 0) {
+                        B.flippedBox += box;
+                        for (int a = 0; a < 3; ++a) {
+                            B.lo[a] = std::min(B.lo[a], std::ceil(lo[a]));
+                            B.hi[a] = std::max(B.hi[a], std::floor(hi[a]));
+                        }
+                    }
                     if (T.vol > 0) {
                         const Vec3d* p = T.p;
                         const double faces = area(p[1], p[2], p[3]) + area(p[0], p[2], p[3]) + area(p[0], p[1], p[3]) + area(p[0], p[1], p[2]);
@@ -128,7 +139,15 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
             }
     });
     CompensatedSum volume6;
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
     for (const auto& b : blocks) {
+        cost.large_proper += b.largeProper;
+        cost.large_flipped += b.largeFlipped;
+        cost.flipped_box_points += b.flippedBox;
+        for (int a = 0; a < 3; ++a) {
+            lo[a] = std::min(lo[a], b.lo[a]);
+            hi[a] = std::max(hi[a], b.hi[a]);
+        }
         stats.flipped_tets += b.flipped;
         stats.degenerate_tets += b.degenerate;
         volume6.add(b.volume6.value());
@@ -137,6 +156,10 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
         cost.dense_bytes += b.denseBytes;
     }
     stats.parametric_volume = volume6.value() / 6.0;
+    if (cost.flipped_box_points > 0) {
+        cost.flipped_union_box = 1;
+        for (int a = 0; a < 3; ++a) cost.flipped_union_box *= std::max(0.0, hi[a] - lo[a] + 1);
+    }
 }
 /// One line naming the replaced corners (the first three) and what to check.
 std::string repairWarning(const SanitizeStats& ss) {

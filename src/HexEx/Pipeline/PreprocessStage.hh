@@ -29,6 +29,10 @@ struct TetCostSummary {
     double points = 0;           ///< sum of the unsigned image volumes of non-degenerate tets (grid cells)
     double points_implicit = 0;  ///< the same with implicit cells: large proper tets count only a shell along their faces
     double dense_bytes = 0;      ///< bytes of the dense per-box-point indices of tets with large bounding boxes
+    double large_proper = 0;     ///< unsigned image volume of the proper tets with a dense index (large bounding box)
+    double large_flipped = 0;    ///< unsigned image volume of the flipped tets with a dense index
+    double flipped_box_points = 0;  ///< bounding-box points of the flipped tets with a dense index, summed
+    double flipped_union_box = 0;   ///< points of the one box around all flipped tets with a dense index
     /// Up to 5 tets with the largest unsigned image volume in the input parameters (before
     /// sanitization): (tet, volume in grid cells), largest first, ties by smaller tet.
     std::vector<std::pair<int, double>> largest_input;
