@@ -109,6 +109,9 @@ public:
         double sum = 0;
         for (const int e : elems_) sum += h_[static_cast<std::size_t>(e)];
         scale_ = elems_.empty() ? 1.0 : sum / static_cast<double>(elems_.size());
+        // Small neighbourhoods run on one thread: starting threads for every energy
+        // evaluation costs more than it saves there (the result is the same either way).
+        if (elems_.size() < 4096) threads_ = 1;
         rebase();
     }
 
