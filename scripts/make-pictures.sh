@@ -18,6 +18,8 @@
 #   s1-polycube.png        the real input ../shared/data/S1_polycube_scale1.hexex.xz, if present
 #   arcs-perturbed-cylinder.png  edge arcs (hexex extract --edge-arcs) of a perturbed cylinder
 #                          drawn over its tet mesh (scripts/render_arcs.py)
+#   untangle-cylinder.png  a perturbed valence-5 cylinder before/after hexex untangle, inverted
+#                          hexes highlighted (scripts/render_untangle.py)
 set -euo pipefail
 
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -96,5 +98,15 @@ tets="$("$HEXEX" info "$WORK/arcs-perturbed.hexex" --json | sed -n 's/.*"tets": 
 "$PYTHON" "$ROOT/scripts/render_arcs.py" "$WORK/arcs-perturbed.hexex" "$WORK/arcs.vtu" \
     "$IMAGES/arcs-perturbed-cylinder.png" --view 35,-50 \
     --title "edge arcs of a valence-3 cylinder, map perturbed until $flipped of $tets tets flipped"
+
+# 6. Untangling: a perturbed cylinder whose extraction has inverted hexes, before and after.
+"$HEXEX" generate cylinder --valence 5 --radius 4 --height 3 --n 4 --m 3 -o "$WORK/untangle-cylinder.hexex"
+"$HEXEX" perturb "$WORK/untangle-cylinder.hexex" -a 0.8 --seed 3 -o "$WORK/untangle-perturbed.hexex"
+"$HEXEX" extract "$WORK/untangle-perturbed.hexex" -o "$WORK/untangle-before.vtu" --encoding ascii
+"$HEXEX" untangle "$WORK/untangle-before.vtu" --surface-from "$WORK/untangle-perturbed.hexex" \
+    -o "$WORK/untangle-after.vtu" --encoding ascii
+"$PYTHON" "$ROOT/scripts/render_untangle.py" "$WORK/untangle-before.vtu" "$WORK/untangle-after.vtu" \
+    "$IMAGES/untangle-cylinder.png" \
+    --title "Perturbed cylinder (valence 5, hexex perturb -a 0.8): hexex extract --untangle"
 
 ls -l "$IMAGES"/*.png
