@@ -345,6 +345,10 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     const VertexHexes vh(nv, mesh.hexes);
 
     int rings = std::max(0, options.rings);
+    // The best placement seen (fewest inverted hexes in the whole mesh): an attempt that ends
+    // worse than it started (possible when boundary vertices are projected back) is undone.
+    std::vector<Vec3d> best = mesh.vertices;
+    std::size_t best_inverted = inverted.size();
     for (;;) {
         // Region: vertices within `rings` hex rings of the inverted hexes.
         std::vector<char> in_v(nv, 0), in_h(mesh.hexes.size(), 0);
@@ -384,6 +388,15 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
         inverted.clear();
         for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
             if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
+        if (inverted.size() < best_inverted) {
+            best = mesh.vertices;
+            best_inverted = inverted.size();
+        } else {
+            mesh.vertices = best;
+            inverted.clear();
+            for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
+                if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
+        }
         if (inverted.empty() || whole || rep.attempts >= 3) break;
         rings = rings == 0 ? 1 : 4 * rings;
     }
