@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _core
 from ._arrays import as_float_array, as_index_array, as_map_arrays, as_path, as_polyhedra
-from ._types import ExtractionResult, HexMesh, TetMap
+from ._types import ExtractionResult, HexMesh, TetMap, UntangleResult
 
 
 class HexExWarning(UserWarning):
@@ -49,7 +49,7 @@ def _check_float(value, name: str) -> float:
 
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
-            rotations=None, max_memory: int = 0, cheap_folds: bool = True) -> ExtractionResult:
+            rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
     Args:
@@ -72,6 +72,10 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
         cheap_folds: skip grid points where a fold layer exactly cancels a proper layer
             (their darts would all annihilate); False extracts and annihilates them like
             all others (``hexex extract --full-annihilation``).
+        untangle: afterwards move vertices so that no hex is inverted (see
+            :func:`untangle`), boundary vertices on the boundary of the input tet mesh
+            (``hexex extract --untangle``). The report then has the key ``untangle`` (the
+            untangling report) and its ``quality`` is measured after untangling.
 
     Returns:
         ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
@@ -94,7 +98,66 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     max_memory = _check_int(max_memory, "max_memory", 0, maximum=2**64 - 1)
     pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
                                                   max_memory, bool(cheap_folds))
-    return ExtractionResult(pts, hexes, polyhedra, json.loads(report))
+    report = json.loads(report)
+    if untangle:
+        pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, _boundary_triangles(tets), False,
+                                                  threads, 1, 40.0)
+        report["untangle"] = u
+        report["quality"] = {"min_scaled_jacobian": u["min_scaled_jacobian_after"],
+                             "mean_scaled_jacobian": u["mean_scaled_jacobian_after"],
+                             "inverted_hexes": u["inverted_after"]}
+    return ExtractionResult(pts, hexes, polyhedra, report)
+
+
+def _boundary_triangles(tets: np.ndarray) -> np.ndarray:
+    """The faces of ``tets`` that belong to one tet only, int32 (b, 3), one orientation for all."""
+    faces = np.asarray(tets)[:, [[1, 2, 3], [0, 3, 2], [0, 1, 3], [0, 2, 1]]].reshape(-1, 3)
+    _, inverse, counts = np.unique(np.sort(faces, axis=1), axis=0, return_inverse=True, return_counts=True)
+    return np.ascontiguousarray(faces[counts[inverse.reshape(-1)] == 1], dtype=np.int32)
+
+
+def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
+             rings: int = 1, feature_angle: float = 40.0) -> UntangleResult:
+    """Moves the vertices of a hex mesh so that every hex has positive Jacobians at its 8
+    corners (regularised elliptic energy of Garanzha et al. 2021, minimised with L-BFGS;
+    see Documentation/algorithm.md). Only vertices near inverted hexes move; a mesh without
+    inverted hexes comes back unchanged. The input arrays are not modified.
+
+    Args:
+        points: vertex positions, shape (k, 3).
+        hexes: hexahedra in VTK order, shape (h, 8), int32.
+        polyhedra: non-hex cells (their vertices never move), as in :class:`HexMesh`.
+        surface: ``(surface_points (n, 3), triangles (t, 3))`` that boundary vertices stay
+            on (e.g. the boundary of the input tet mesh); default: the mesh's own boundary.
+        fixed_boundary: boundary vertices do not move at all.
+        threads: worker threads (0 = all); the result is identical for any value.
+        rings: hex rings around the inverted hexes that may move at first (grown by 4x
+            and then to the whole mesh if needed).
+        feature_angle: surface edges sharper than this (degrees) are feature curves;
+            vertices on them move along them, feature corners stay fixed.
+
+    Returns:
+        UntangleResult: ``points``, ``hexes``, ``polyhedra`` and ``report`` (dict);
+        ``report["inverted_after"] > 0`` and ``report["message"]`` say what could not be
+        untangled (no exception is raised for that).
+    """
+    points = as_float_array(points, "points", (None, 3))
+    hexes = as_index_array(hexes, "hexes", (None, 8), dtypes=(np.int32,))
+    polyhedra = as_polyhedra(polyhedra)
+    threads = _check_int(threads, "threads", 0)
+    rings = _check_int(rings, "rings", 0)
+    feature_angle = _check_float(feature_angle, "feature_angle")
+    surface_points = surface_triangles = None
+    if surface is not None:
+        if fixed_boundary:
+            raise ValueError("surface and fixed_boundary exclude each other")
+        if not isinstance(surface, tuple) or len(surface) != 2:
+            raise TypeError("surface must be a tuple (points, triangles)")
+        surface_points = as_float_array(surface[0], "surface points", (None, 3))
+        surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
+    pts, hx, poly, report = _core.untangle(points, hexes, polyhedra, surface_points, surface_triangles,
+                                           bool(fixed_boundary), threads, rings, feature_angle)
+    return UntangleResult(pts, hx, poly, report)
 
 
 def read_map(path) -> TetMap:

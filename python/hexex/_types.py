@@ -72,3 +72,21 @@ class ExtractionResult(HexMesh):
     def valid_all_hex(self) -> bool:
         """True if every cell is a hexahedron and the dart map passed validation."""
         return bool(self.report["valid_all_hex"])
+
+
+class UntangleResult(HexMesh):
+    """The output of :func:`hexex.untangle`: the hex mesh with moved vertices plus the report."""
+
+    def __init__(self, points, hexes, polyhedra, report: dict):
+        super().__init__(points, hexes, polyhedra)
+        self.report = report
+        """The untangling report: a dict with the fields of ``HexEx::UntangleReport``
+        (hexes, inverted_before, inverted_after, min/mean_scaled_jacobian_before/after,
+        free_vertices, moved_vertices, max_displacement, mean_displacement (relative to the
+        bounding-box diagonal), attempts, rings, outer_iterations, lbfgs_iterations,
+        seconds, success, message)."""
+
+    @property
+    def success(self) -> bool:
+        """True if no hex is inverted after untangling."""
+        return bool(self.report["success"])

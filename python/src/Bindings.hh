@@ -13,4 +13,7 @@ void bindMapFunctions(nanobind::module_& m);
 /// Hex meshes: reading, writing and validation (HexMeshFunctions.cc).
 void bindHexMeshFunctions(nanobind::module_& m);
 
+/// Untangling of hex meshes (UntangleFunctions.cc).
+void bindUntangleFunctions(nanobind::module_& m);
+
 } // namespace HexExPython

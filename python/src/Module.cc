@@ -95,4 +95,5 @@ NB_MODULE(_core, m) {
           "Extracts the hex mesh of checked arrays; returns (points, hexes, polyhedra, report_json).");
     HexExPython::bindMapFunctions(m);
     HexExPython::bindHexMeshFunctions(m);
+    HexExPython::bindUntangleFunctions(m);
 }

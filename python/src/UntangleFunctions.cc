@@ -1,0 +1,90 @@
+/// @file UntangleFunctions.cc
+/// hexex._core.untangle: HexEx::untangleHexMesh() on a hex mesh given as arrays, with an
+/// optional boundary surface (points, triangles).
+
+#include "ArrayConversions.hh"
+#include "Bindings.hh"
+
+#include <HexEx/Untangling/Untangler.hh>
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace HexExPython {
+
+namespace {
+
+/// The report as a dict with the field names of HexEx::UntangleReport.
+nb::dict reportToDict(const HexEx::UntangleReport& r) {
+    nb::dict d;
+    d["hexes"] = r.hexes;
+    d["inverted_before"] = r.inverted_before;
+    d["inverted_after"] = r.inverted_after;
+    d["min_scaled_jacobian_before"] = r.min_scaled_jacobian_before;
+    d["mean_scaled_jacobian_before"] = r.mean_scaled_jacobian_before;
+    d["min_scaled_jacobian_after"] = r.min_scaled_jacobian_after;
+    d["mean_scaled_jacobian_after"] = r.mean_scaled_jacobian_after;
+    d["free_vertices"] = r.free_vertices;
+    d["moved_vertices"] = r.moved_vertices;
+    d["max_displacement"] = r.max_displacement;
+    d["mean_displacement"] = r.mean_displacement;
+    d["attempts"] = r.attempts;
+    d["rings"] = r.rings;
+    d["outer_iterations"] = r.outer_iterations;
+    d["lbfgs_iterations"] = r.lbfgs_iterations;
+    d["seconds"] = r.seconds;
+    d["success"] = r.success;
+    d["message"] = r.message;
+    return d;
+}
+
+/// Untangles a copy of the mesh; returns (points, hexes, polyhedra, report dict).
+nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
+                   const std::optional<DoubleArray>& surface_points, const std::optional<Int32Array>& surface_triangles,
+                   bool fixed_boundary, int threads, int rings, double feature_angle) {
+    HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+    HexEx::TriangleSurface surface;
+    const bool has_surface = surface_points.has_value() && surface_triangles.has_value();
+    if (has_surface) {
+        requireArrayShape("surface points", *surface_points, {-1, 3});
+        requireArrayShape("surface triangles", *surface_triangles, {-1, 3});
+        const std::size_t np = surface_points->shape(0), nt = surface_triangles->shape(0);
+        const double* p = surface_points->data();
+        for (std::size_t i = 0; i < np; ++i) surface.points.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+        const std::int32_t* t = surface_triangles->data();
+        for (std::size_t i = 0; i < nt; ++i) {
+            for (int k = 0; k < 3; ++k)
+                if (t[3 * i + k] < 0 || static_cast<std::size_t>(t[3 * i + k]) >= np)
+                    throw std::invalid_argument("surface triangle " + std::to_string(i) + " references point " +
+                                                std::to_string(t[3 * i + k]) + " of " + std::to_string(np));
+            surface.triangles.push_back({{t[3 * i], t[3 * i + 1], t[3 * i + 2]}});
+        }
+    }
+    HexEx::UntangleOptions opt;
+    opt.boundary = fixed_boundary ? HexEx::BoundaryMode::Fixed : HexEx::BoundaryMode::Surface;
+    opt.threads = threads;
+    opt.rings = rings;
+    opt.feature_angle_deg = feature_angle;
+    HexEx::UntangleReport r;
+    {
+        nb::gil_scoped_release release;
+        r = HexEx::untangleHexMesh(hm, opt, has_surface ? &surface : nullptr);
+    }
+    nb::tuple mesh = hexMeshToArrays(std::move(hm));
+    return nb::make_tuple(mesh[0], mesh[1], mesh[2], reportToDict(r));
+}
+
+} // namespace
+
+void bindUntangleFunctions(nb::module_& m) {
+    m.def("untangle", &untangle, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
+          nb::arg("surface_points").none(), nb::arg("surface_triangles").none(), nb::arg("fixed_boundary"),
+          nb::arg("threads"), nb::arg("rings"), nb::arg("feature_angle"),
+          "Untangles a hex mesh (HexEx::untangleHexMesh); returns (points, hexes, polyhedra, report dict).");
+}
+
+} // namespace HexExPython

@@ -1,0 +1,63 @@
+"""hexex.untangle and extract(..., untangle=True): inverted hexes go to 0, valid meshes stay."""
+
+import numpy as np
+import pytest
+
+import hexex
+
+
+def grid_cube(n):
+    i = np.arange(n + 1)
+    z, y, x = np.meshgrid(i, i, i, indexing="ij")
+    points = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1) / n
+
+    def vid(a, b, c):
+        return (c * (n + 1) + b) * (n + 1) + a
+
+    hexes = [[vid(a, b, c), vid(a + 1, b, c), vid(a + 1, b + 1, c), vid(a, b + 1, c), vid(a, b, c + 1),
+              vid(a + 1, b, c + 1), vid(a + 1, b + 1, c + 1), vid(a, b + 1, c + 1)]
+             for c in range(n) for b in range(n) for a in range(n)]
+    return points, np.array(hexes, dtype=np.int32)
+
+
+def test_untangle_random_interior_moves():
+    points, hexes = grid_cube(5)
+    rng = np.random.default_rng(3)
+    inner = np.all((points > 0) & (points < 1), axis=1)
+    tangled = points.copy()
+    tangled[inner] += rng.uniform(-0.9, 0.9, size=(inner.sum(), 3)) / 5
+    before = tangled.copy()
+    r = hexex.untangle(tangled, hexes, fixed_boundary=True, threads=2)
+    assert r.report["inverted_before"] > 20
+    assert r.report["inverted_after"] == 0 and r.success
+    assert hexex.validate(r)["quality"]["inverted_hexes"] == 0
+    assert np.array_equal(r.points[~inner], points[~inner])  # fixed boundary
+    assert np.array_equal(tangled, before)  # the input is not modified
+    r1 = hexex.untangle(tangled, hexes, fixed_boundary=True, threads=1)
+    assert np.array_equal(r1.points, r.points)
+
+
+def test_untangle_valid_mesh_unchanged():
+    points, hexes = grid_cube(3)
+    r = hexex.untangle(points, hexes)
+    assert r.report["inverted_before"] == 0 and r.report["moved_vertices"] == 0
+    assert np.array_equal(r.points, points)
+
+
+def test_extract_untangle_on_perturbed_cylinder():
+    m = hexex.perturb(hexex.generate_cylinder(5, 3, 2, 3, 2), 0.8, seed=1)
+    plain = hexex.extract(*m)
+    r = hexex.extract(*m, untangle=True)
+    assert plain.report["quality"]["inverted_hexes"] > 0
+    assert r.report["untangle"]["inverted_before"] == plain.report["quality"]["inverted_hexes"]
+    assert r.report["untangle"]["inverted_after"] == 0
+    assert r.report["quality"]["inverted_hexes"] == 0
+    assert np.array_equal(r.hexes, plain.hexes)
+
+
+def test_untangle_bad_arguments():
+    points, hexes = grid_cube(1)
+    with pytest.raises(ValueError):
+        hexex.untangle(points, hexes, surface=(points, np.zeros((1, 3), np.int32)), fixed_boundary=True)
+    with pytest.raises(ValueError, match="surface triangle 0 references point 9"):
+        hexex.untangle(points, hexes, surface=(points, np.array([[0, 1, 9]], np.int32)))
