@@ -10,6 +10,7 @@ endif()
 # One test per example: install into its own scratch prefix (so the tests may run in
 # parallel), then configure, build and run the example against find_package(HexEx).
 function(hexex_add_install_test name example_dir program)
+  set(extra_prefix "${ARGN}")
   add_test(NAME ${name}
     COMMAND ${CMAKE_COMMAND}
       -DHEXEX_BINARY_DIR=${PROJECT_BINARY_DIR}
@@ -21,6 +22,7 @@ function(hexex_add_install_test name example_dir program)
       -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
       -DEXTRA_CXX_FLAGS=${_hexex_test_flags}
       -DEXTRA_LINKER_FLAGS=${_hexex_test_flags}
+      "-DEXTRA_PREFIX_PATH=${extra_prefix}"
       -P ${PROJECT_SOURCE_DIR}/cmake/TestInstall.cmake)
   set_tests_properties(${name} PROPERTIES TIMEOUT 600 LABELS package)
 endfunction()
@@ -29,6 +31,14 @@ endfunction()
 # user-defined mesh kernel through the mesh-kernel traits (HexEx/HexExTraits.hh).
 hexex_add_install_test(install_and_find_package minimal app)
 hexex_add_install_test(install_and_find_package_traits traits traits)
+# The adapters: Examples/cgal_lcc (CGAL is a dependency, always built) and
+# Examples/openvolumemesh (only when OpenVolumeMesh is found; its prefix is passed on).
+hexex_add_install_test(install_and_find_package_cgal_lcc cgal_lcc cgal_lcc)
+find_package(OpenVolumeMesh CONFIG QUIET)
+if(OpenVolumeMesh_FOUND)
+  # find_package() also searches a prefix for <name>Config.cmake directly.
+  hexex_add_install_test(install_and_find_package_openvolumemesh openvolumemesh openvolumemesh ${OpenVolumeMesh_DIR})
+endif()
 
 # The API documentation must build without a single Doxygen warning.
 if(TARGET doc)

@@ -4,6 +4,7 @@
 #   cmake -DHEXEX_BINARY_DIR=<build> -DEXAMPLE_SOURCE_DIR=<Examples/minimal>
 #         -DWORK_DIR=<scratch dir> [-DEXAMPLE_PROGRAM=app] [-DGENERATOR=Ninja] [-DBUILD_TYPE=Release]
 #         [-DCXX_COMPILER=...] [-DEXTRA_CXX_FLAGS=...] [-DEXTRA_LINKER_FLAGS=...]
+#         [-DEXTRA_PREFIX_PATH=<another prefix searched by the example, e.g. OpenVolumeMesh's>]
 #         -P cmake/TestInstall.cmake
 #
 # Every step's output is shown; the first failing step ends the script with an error.
@@ -36,8 +37,12 @@ endfunction()
 
 run_step(install "${CMAKE_COMMAND}" --install "${HEXEX_BINARY_DIR}" --prefix "${prefix}" --config "${BUILD_TYPE}")
 
+set(prefix_path "${prefix}")
+if(EXTRA_PREFIX_PATH)
+  string(APPEND prefix_path ";${EXTRA_PREFIX_PATH}")
+endif()
 set(configure_args -S "${EXAMPLE_SOURCE_DIR}" -B "${example_build}"
-  "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+  "-DCMAKE_PREFIX_PATH=${prefix_path}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
 if(GENERATOR)
   list(APPEND configure_args -G "${GENERATOR}")
 endif()

@@ -10,6 +10,8 @@ REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 BUILD_DIR="${BUILD_DIR:-$REPO_ROOT/build}"
 export BUILD_DIR
 export HEXEX_PROFILE=full
+# Build OpenVolumeMesh from ../shared (when present) so the OpenVolumeMesh adapter tests run.
+export HEXEX_WITH_OVM="${HEXEX_WITH_OVM:-1}"
 
 bash "$REPO_ROOT/scripts/setup.sh"
 ctest --test-dir "$BUILD_DIR" --output-on-failure -j2

@@ -12,7 +12,8 @@
 #
 # Environment: BUILD_DIR (default <repo>/build), BUILD_TYPE (default Release),
 #              HEXEX_PROFILE (tool|full, default full), HEXEX_SKIP_APT=1 to never touch apt,
-#              CMAKE_ARGS for extra configure flags.
+#              CMAKE_ARGS for extra configure flags, HEXEX_WITH_OVM=1 to build OpenVolumeMesh
+#              for the adapter tests (see below).
 set -euo pipefail
 
 REPO_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -57,6 +58,15 @@ if [[ "${HEXEX_SKIP_APT:-0}" != 1 ]] && command -v dpkg-query >/dev/null 2>&1; t
     else
         echo "setup: all $PROFILE-profile dependencies are installed"
     fi
+fi
+
+# OpenVolumeMesh for the adapter tests (HexEx/Adapters/OpenVolumeMesh.hh): with
+# HEXEX_WITH_OVM=1 (set by run-tests.sh) it is built once from ../shared/anchors/openvolumemesh
+# into a cache directory (scripts/build-openvolumemesh.sh) and passed to the configure.
+if [[ "${HEXEX_WITH_OVM:-0}" == 1 ]]; then
+    OVM_PREFIX="$(bash "$REPO_ROOT/scripts/build-openvolumemesh.sh" | tail -n 1)" ||
+        { echo "setup: building OpenVolumeMesh failed; its adapter tests will be skipped" >&2; OVM_PREFIX=""; }
+    if [[ -n "$OVM_PREFIX" ]]; then CMAKE_ARGS="${CMAKE_ARGS:-} -DCMAKE_PREFIX_PATH=$OVM_PREFIX"; fi
 fi
 
 GENERATOR_ARGS=()

@@ -1,0 +1,329 @@
+#pragma once
+/// @file OpenVolumeMesh.hh
+/// Adapter for OpenVolumeMesh (3.x): extract the hex mesh of an OpenVolumeMesh tet mesh
+/// (tetrahedral or polyhedral kernel with Vec3d geometry) whose integer-grid map is the
+/// halfface property `HexHex::Parametrization` (the convention of HexHex and the AlgoHex
+/// tools) or a cell property mapping each of the cell's vertices to its parameter, and write
+/// the result into an OpenVolumeMesh hexahedral mesh (or a polyhedral one, which also keeps
+/// non-hex cells). Reverse helper: per-cell data back as an OpenVolumeMesh cell property.
+///
+/// Header-only and compiled only when included; the program must find and link
+/// OpenVolumeMesh itself (`find_package(OpenVolumeMesh)`, target `OpenVolumeMesh::OpenVolumeMesh`).
+/// @code
+/// OpenVolumeMesh::GeometricTetrahedralMeshV3d tets;          // e.g. read with IO::read_file
+/// OpenVolumeMesh::GeometricHexahedralMeshV3d hexes;
+/// HexEx::OvmHexOutput<OpenVolumeMesh::GeometricHexahedralMeshV3d> output(hexes);
+/// HexEx::extractHexMesh(HexEx::OvmTetMesh(tets), output);
+/// @endcode
+/// See Documentation/traits.md.
+
+#include "../Core/Error.hh"
+#include "../Core/Vec.hh"
+#include "../HexExTraits.hh"
+
+#include <OpenVolumeMesh/Core/Handles.hh>
+#include <OpenVolumeMesh/Geometry/VectorT.hh>
+#include <OpenVolumeMesh/Mesh/HexahedralMeshTopologyKernel.hh>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace HexEx {
+
+/// Name of the halfface property holding the map in HexHex and the AlgoHex tools: on a
+/// halfface of cell `c`, the parameter (in `c`'s chart) of the vertex of `c` opposite it.
+inline constexpr const char* kOvmParametrization = "HexHex::Parametrization";
+
+/// Where an OpenVolumeMesh tet mesh keeps its integer-grid map.
+enum class OvmMapStorage {
+    /// Halfface property of type Vec3d: the parameter of the cell's vertex opposite the halfface.
+    HalffaceOpposite,
+    /// Cell property of type `std::map<VertexHandle, Vec3d>`: per cell, the parameter of each of its vertices.
+    CellVertexMap,
+};
+
+/// Input view of an OpenVolumeMesh tet mesh (any kernel with `Vec3d` geometry whose cells
+/// are tetrahedra: TetrahedralMeshTopologyKernel or the polyhedral TopologyKernel) with its
+/// map, read by the templated extractHexMesh() through TetMeshTraits.
+///
+/// Vertex and tet indices are OpenVolumeMesh's handle indices (the mesh must not contain
+/// deleted entities: run garbage collection first). The corners of a cell are the loop of
+/// its first halfface followed by the fourth vertex, rotated among the first three so that
+/// the first corner is opposite the last halfface: a tet `a b c d` stored with the halffaces
+/// `a b c`, `a c d`, `a d b`, `b d c` (OpenVolumeMesh's convention: halfface normals point
+/// into the cell) reads back as `a b c d`. If the corners so read are negatively oriented
+/// in total (a mesh stored with outward halffaces), corners 1 and 2 of every tet are swapped.
+///
+/// The constructor throws InputError if the property is missing or a cell is not a
+/// tetrahedron (four triangular halffaces on four vertices), or (CellVertexMap) when a
+/// cell's map lacks one of its vertices. The mesh must stay alive and unchanged while the
+/// view is used.
+template <class Mesh>
+class OvmTetMesh {
+public:
+    /// The OpenVolumeMesh 3D vector type.
+    using OvmVec = OpenVolumeMesh::Geometry::Vec3d;
+
+    /// Views @p mesh with the map in the property @p name stored as @p storage.
+    explicit OvmTetMesh(const Mesh& mesh, const std::string& name = kOvmParametrization,
+                        OvmMapStorage storage = OvmMapStorage::HalffaceOpposite)
+        : mesh_(&mesh) {
+        const std::size_t nc = mesh.n_cells();
+        if (storage == OvmMapStorage::HalffaceOpposite) {
+            auto prop = mesh.template get_halfface_property<OvmVec>(name);
+            if (!prop)
+                throw InputError("OpenVolumeMesh mesh has no halfface property '" + name + "' of type Vec3d");
+            readCells(nc, [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::VertexHandle&) {
+                return (*prop)[hf];
+            });
+        } else {
+            using VertexMap = std::map<OpenVolumeMesh::VertexHandle, OvmVec>;
+            auto prop = mesh.template get_cell_property<VertexMap>(name);
+            if (!prop)
+                throw InputError("OpenVolumeMesh mesh has no cell property '" + name +
+                                 "' of type std::map<VertexHandle, Vec3d>");
+            readCells(nc, [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::VertexHandle& v) {
+                const VertexMap& m = (*prop)[mesh.incident_cell(hf)];
+                auto it = m.find(v);
+                if (it == m.end())
+                    throw InputError("OpenVolumeMesh cell " + std::to_string(mesh.incident_cell(hf).idx()) +
+                                     ": property '" + name + "' has no parameter for vertex " +
+                                     std::to_string(v.idx()));
+                return it->second;
+            });
+        }
+    }
+
+    /// The viewed mesh.
+    const Mesh& mesh() const { return *mesh_; }
+    /// Number of vertices.
+    std::size_t n_vertices() const { return mesh_->n_vertices(); }
+    /// Number of tets (cells).
+    std::size_t n_tets() const { return corners_.size(); }
+    /// Position of vertex @p v.
+    Vec3d position(std::size_t v) const {
+        const OvmVec& p = mesh_->vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
+        return Vec3d(p[0], p[1], p[2]);
+    }
+    /// Vertex index of corner @p i (0..3) of tet @p t.
+    std::size_t corner(std::size_t t, int i) const { return corners_[t][static_cast<std::size_t>(i)]; }
+    /// Parameter of corner @p i of tet @p t.
+    Vec3d param(std::size_t t, int i) const { return params_[t][static_cast<std::size_t>(i)]; }
+
+private:
+    /// Reads corners and parameters of every cell; @p paramOf(hf, v) is the parameter of
+    /// vertex v, the cell's vertex opposite halfface hf.
+    template <class ParamOf>
+    void readCells(std::size_t nc, ParamOf&& paramOf) {
+        corners_.resize(nc);
+        params_.resize(nc);
+        double volume = 0;
+        for (std::size_t c = 0; c < nc; ++c) {
+            const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
+            const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs = mesh_->cell(ch).halffaces();
+            const std::string what = "OpenVolumeMesh cell " + std::to_string(c);
+            if (hfs.size() != 4)
+                throw InputError(what + " has " + std::to_string(hfs.size()) + " halffaces, not a tetrahedron");
+            std::array<std::vector<OpenVolumeMesh::VertexHandle>, 4> loops;
+            for (std::size_t k = 0; k < 4; ++k) {
+                loops[k] = mesh_->get_halfface_vertices(hfs[k]);
+                if (loops[k].size() != 3) throw InputError(what + " has a halfface that is not a triangle");
+            }
+            std::array<OpenVolumeMesh::VertexHandle, 4> cv = {loops[0][0], loops[0][1], loops[0][2],
+                                                              OpenVolumeMesh::VertexHandle()};
+            for (const auto& l : loops)
+                for (const auto& v : l)
+                    if (std::find(cv.begin(), cv.end(), v) == cv.end()) {
+                        if (cv[3].is_valid()) throw InputError(what + " spans more than four vertices");
+                        cv[3] = v;
+                    }
+            if (!cv[3].is_valid() || cv[0] == cv[1] || cv[1] == cv[2] || cv[0] == cv[2])
+                throw InputError(what + " spans fewer than four vertices");
+            auto inLoop = [&](std::size_t k, const OpenVolumeMesh::VertexHandle& v) {
+                return std::find(loops[k].begin(), loops[k].end(), v) != loops[k].end();
+            };
+            for (int r = 0; r < 3 && inLoop(3, cv[0]); ++r) std::rotate(cv.begin(), cv.begin() + 1, cv.begin() + 3);
+            for (std::size_t i = 0; i < 4; ++i) {
+                corners_[c][i] = static_cast<std::size_t>(cv[i].idx());
+                std::size_t opposite = 4;
+                for (std::size_t k = 0; k < 4; ++k)
+                    if (!inLoop(k, cv[i])) opposite = k;
+                if (opposite == 4) throw InputError(what + ": no halfface opposite vertex " + std::to_string(cv[i].idx()));
+                const OvmVec u = paramOf(hfs[opposite], cv[i]);
+                params_[c][i] = Vec3d(u[0], u[1], u[2]);
+            }
+            const Vec3d a = position(corners_[c][0]);
+            const Vec3d e1 = position(corners_[c][1]) - a, e2 = position(corners_[c][2]) - a,
+                        e3 = position(corners_[c][3]) - a;
+            volume += e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+                      e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
+        }
+        if (volume < 0)
+            for (std::size_t c = 0; c < nc; ++c) {
+                std::swap(corners_[c][1], corners_[c][2]);
+                std::swap(params_[c][1], params_[c][2]);
+            }
+    }
+
+    const Mesh* mesh_;
+    std::vector<std::array<std::size_t, 4>> corners_;
+    std::vector<std::array<Vec3d, 4>> params_;
+};
+
+/// Output into an OpenVolumeMesh mesh with `Vec3d` geometry.
+///
+/// Into a mesh derived from HexahedralMeshTopologyKernel, hexahedra are added with the
+/// kernel's own `add_cell(vertices)` (its vertex order and face layout), and cells that are
+/// not hexahedra cannot be stored: they are skipped and counted in skippedPolyhedra(). Into
+/// any other kernel (e.g. GeometricPolyhedralMeshV3d) every cell is added from its faces
+/// (shared faces are found and reused), hexahedra with the same face layout as the
+/// hexahedral kernel. With @p topologyCheck, OpenVolumeMesh checks each cell as it is
+/// added (slower); a rejected cell throws InputError. The mesh must outlive this object.
+template <class Mesh>
+class OvmHexOutput {
+public:
+    /// True if @p Mesh is a hexahedral kernel.
+    static constexpr bool kHexKernel = std::is_base_of_v<OpenVolumeMesh::HexahedralMeshTopologyKernel, Mesh>;
+
+    /// Writes into @p mesh (cleared by the first clear()).
+    explicit OvmHexOutput(Mesh& mesh, bool topologyCheck = false) : mesh_(&mesh), check_(topologyCheck) {}
+
+    /// The mesh written into.
+    Mesh& mesh() { return *mesh_; }
+    /// One cell handle per output cell, hexahedra first, then polyhedra (the order of the
+    /// extractor's HexMesh::hexes and HexMesh::polyhedra); invalid for a skipped polyhedron.
+    const std::vector<OpenVolumeMesh::CellHandle>& cells() const { return cells_; }
+    /// Number of non-hex cells that a hexahedral kernel could not store.
+    std::size_t skippedPolyhedra() const { return skipped_; }
+
+    /// Removes everything (entities and properties) from the mesh.
+    void clear() {
+        mesh_->clear();
+        cells_.clear();
+        skipped_ = 0;
+    }
+    /// Adds a vertex and returns its index.
+    std::size_t addVertex(const Vec3d& p) {
+        return static_cast<std::size_t>(mesh_->add_vertex(OpenVolumeMesh::Geometry::Vec3d(p[0], p[1], p[2])).idx());
+    }
+    /// Adds a hexahedron (vertex indices in VTK order).
+    void addHex(const std::array<std::size_t, 8>& v) {
+        if constexpr (kHexKernel) {
+            // The hexahedral kernel's order: a face loop 0 1 2 3 and the loop 4 5 6 7 behind it
+            // with 4 behind 0 and 7 behind 1, i.e. VTK's bottom seen from outside and its top.
+            static constexpr int kOrder[8] = {0, 3, 2, 1, 4, 5, 6, 7};
+            std::vector<OpenVolumeMesh::VertexHandle> vs(8);
+            for (std::size_t i = 0; i < 8; ++i) vs[i] = vh(v[static_cast<std::size_t>(kOrder[i])]);
+            finishCell(mesh_->add_cell(vs, check_));
+        } else {
+            static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {3, 0, 4, 7},
+                                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 1, 5, 4}};
+            std::vector<std::vector<std::size_t>> faces(6, std::vector<std::size_t>(4));
+            for (std::size_t f = 0; f < 6; ++f)
+                for (std::size_t i = 0; i < 4; ++i) faces[f][i] = v[static_cast<std::size_t>(kFaces[f][i])];
+            addPolyhedron(faces);
+        }
+    }
+    /// Adds a non-hex cell given by its outward-oriented faces (skipped by a hexahedral kernel).
+    void addPolyhedron(const std::vector<std::vector<std::size_t>>& faces) {
+        if constexpr (kHexKernel) {
+            ++skipped_;
+            cells_.push_back(OpenVolumeMesh::CellHandle());
+        } else {
+            std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
+            std::vector<OpenVolumeMesh::VertexHandle> vs;
+            for (const auto& f : faces) {
+                // OpenVolumeMesh orients a cell's halffaces like the hexahedral kernel does:
+                // the outward loop.
+                vs.clear();
+                for (std::size_t id : f) vs.push_back(vh(id));
+                OpenVolumeMesh::HalfFaceHandle hf = mesh_->find_halfface(vs);
+                if (!hf.is_valid()) hf = mesh_->halfface_handle(mesh_->add_face(vs), 0);
+                hfs.push_back(hf);
+            }
+            finishCell(mesh_->add_cell(hfs, check_));
+        }
+    }
+
+private:
+    static OpenVolumeMesh::VertexHandle vh(std::size_t i) { return OpenVolumeMesh::VertexHandle(static_cast<int>(i)); }
+    void finishCell(const OpenVolumeMesh::CellHandle& ch) {
+        if (!ch.is_valid())
+            throw InputError("OpenVolumeMesh rejected output cell " + std::to_string(cells_.size()) +
+                             " (topology check failed)");
+        cells_.push_back(ch);
+    }
+
+    Mesh* mesh_;
+    bool check_;
+    std::vector<OpenVolumeMesh::CellHandle> cells_;
+    std::size_t skipped_ = 0;
+};
+
+/// Writes @p values (one per output cell, in the order of OvmHexOutput::cells()) into the
+/// persistent cell property @p name of @p out's mesh (created if missing, so that
+/// OpenVolumeMesh's writers save it), skipping cells that were not stored. Throws
+/// InputError if the counts differ.
+template <class T, class Mesh>
+void writeOvmCellProperty(OvmHexOutput<Mesh>& out, const std::string& name, const std::vector<T>& values) {
+    if (values.size() != out.cells().size())
+        throw InputError("writeOvmCellProperty: " + std::to_string(values.size()) + " values for " +
+                         std::to_string(out.cells().size()) + " cells");
+    auto prop = out.mesh().template request_cell_property<T>(name);
+    out.mesh().set_persistent(prop, true);
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (out.cells()[i].is_valid()) prop[out.cells()[i]] = values[i];
+}
+
+/// Marks the cells of @p out's mesh that are not hexahedra (HexMesh::polyhedra) in the
+/// persistent `bool` cell property @p name (default "HexEx::NonHex"); @p hexes is the
+/// number of hexahedra of the extraction (ExtractionReport::output.hexes).
+template <class Mesh>
+void markOvmNonHexCells(OvmHexOutput<Mesh>& out, std::size_t hexes, const std::string& name = "HexEx::NonHex") {
+    std::vector<bool> flags(out.cells().size(), false);
+    for (std::size_t i = hexes; i < flags.size(); ++i) flags[i] = true;
+    auto prop = out.mesh().template request_cell_property<bool>(name);
+    out.mesh().set_persistent(prop, true);
+    for (std::size_t i = 0; i < flags.size(); ++i)
+        if (out.cells()[i].is_valid()) prop[out.cells()[i]] = flags[i];
+}
+
+/// Input traits of OvmTetMesh (see TetMeshTraits).
+template <class Mesh>
+struct TetMeshTraits<OvmTetMesh<Mesh>> {
+    /// Number of vertices.
+    static std::size_t n_vertices(const OvmTetMesh<Mesh>& m) { return m.n_vertices(); }
+    /// Position of vertex @p v.
+    static Vec3d position(const OvmTetMesh<Mesh>& m, std::size_t v) { return m.position(v); }
+    /// Number of tets.
+    static std::size_t n_tets(const OvmTetMesh<Mesh>& m) { return m.n_tets(); }
+    /// The four corners of tet @p t.
+    static std::array<std::size_t, 4> tet_vertices(const OvmTetMesh<Mesh>& m, std::size_t t) {
+        return {m.corner(t, 0), m.corner(t, 1), m.corner(t, 2), m.corner(t, 3)};
+    }
+    /// Parameter of corner @p i of tet @p t.
+    static Vec3d corner_param(const OvmTetMesh<Mesh>& m, std::size_t t, int i) { return m.param(t, i); }
+};
+
+/// Output traits of OvmHexOutput (see HexMeshOutputTraits).
+template <class Mesh>
+struct HexMeshOutputTraits<OvmHexOutput<Mesh>> {
+    /// Clears the mesh.
+    static void clear(OvmHexOutput<Mesh>& m) { m.clear(); }
+    /// Adds a vertex.
+    static std::size_t add_vertex(OvmHexOutput<Mesh>& m, const Vec3d& p) { return m.addVertex(p); }
+    /// Adds a hexahedron (VTK order).
+    static void add_hex(OvmHexOutput<Mesh>& m, const std::array<std::size_t, 8>& v) { m.addHex(v); }
+    /// Adds a polyhedron given by its outward-oriented faces.
+    static void add_polyhedron(OvmHexOutput<Mesh>& m, const std::vector<std::vector<std::size_t>>& faces) {
+        m.addPolyhedron(faces);
+    }
+};
+
+} // namespace HexEx

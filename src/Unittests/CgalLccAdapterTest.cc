@@ -1,0 +1,261 @@
+// CGAL Linear_cell_complex adapter (HexEx/Adapters/CgalLinearCellComplex.hh): tet LCCs with
+// the map per dart, built with shared vertex attributes or with CGAL's own make_tetrahedron +
+// sew3_same_facets, extract the same mesh as the .hexex path; the output LCC is valid, its
+// volumes are combinatorial hexahedra, 3-sewn along every interior face.
+
+#include "TestMeshChecks.hh"
+
+#include <HexEx/Adapters/CgalLinearCellComplex.hh>
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/IO/HexExFile.hh>
+
+#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace {
+
+/// LCC items whose darts carry the parameter of their vertex in their volume's chart.
+struct ParamItems {
+    template <class Refs>
+    struct Dart_wrapper {
+        typedef CGAL::Cell_attribute_with_point<Refs> Vertex_attribute;
+        typedef std::tuple<Vertex_attribute> Attributes;
+        typedef std::array<double, 3> Dart_info;
+    };
+};
+
+using TetLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3, 3, CGAL::Linear_cell_complex_traits<3>, ParamItems>;
+using HexLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3>;
+
+/// Sets the info of every dart of the volume of @p d to the parameter of its vertex.
+void setVolumeParams(TetLcc& lcc, TetLcc::Dart_handle d, const std::array<HexEx::Vec3d, 4>& corners,
+                     const std::array<TetLcc::Point, 4>& points) {
+    for (auto it = lcc.darts_of_cell<3>(d).begin(); it != lcc.darts_of_cell<3>(d).end(); ++it)
+        for (std::size_t i = 0; i < 4; ++i)
+            if (lcc.point(it) == points[i]) lcc.info(it) = {corners[i][0], corners[i][1], corners[i][2]};
+}
+
+/// A tet LCC with one vertex attribute per vertex of @p pm (same order) and one volume per
+/// tet (same order, first dart at corner 0), 3-sewn; the map in the darts.
+TetLcc toLcc(const HexEx::ParametrizedTetMesh& pm) {
+    TetLcc lcc;
+    HexEx::LccHexOutput<TetLcc> b(lcc);
+    b.clear();
+    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) b.addVertex(pm.mesh.position(HexEx::VertexHandle(int(v))));
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
+        const std::size_t a = cv[0].uidx(), bb = cv[1].uidx(), c = cv[2].uidx(), d = cv[3].uidx();
+        b.addVolume({{a, c, bb}, {a, bb, d}, {bb, c, d}, {c, a, d}});  // outward loops
+    }
+    EXPECT_EQ(b.unsewnFaces(), 0u);
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
+        std::array<TetLcc::Point, 4> pts;
+        for (std::size_t i = 0; i < 4; ++i) {
+            const HexEx::Vec3d p = pm.mesh.position(cv[i]);
+            pts[i] = TetLcc::Point(p[0], p[1], p[2]);
+        }
+        setVolumeParams(lcc, b.cellDarts()[t], pm.params[t], pts);
+    }
+    return lcc;
+}
+
+/// The same tets built with CGAL's own make_tetrahedron() (four new vertex attributes per
+/// tet) and joined by sew3_same_facets() (which merges them): vertex order differs.
+TetLcc toLccWithCgalOps(const HexEx::ParametrizedTetMesh& pm) {
+    TetLcc lcc;
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
+        std::array<TetLcc::Point, 4> pts;
+        for (std::size_t i = 0; i < 4; ++i) {
+            const HexEx::Vec3d p = pm.mesh.position(cv[i]);
+            pts[i] = TetLcc::Point(p[0], p[1], p[2]);
+        }
+        const auto d = lcc.make_tetrahedron(pts[0], pts[1], pts[2], pts[3]);
+        setVolumeParams(lcc, d, pm.params[t], pts);
+    }
+    lcc.sew3_same_facets();
+    return lcc;
+}
+
+/// The hex mesh held by an output LCC, read back through its darts: vertices in attribute
+/// order, hex i from cellDarts()[i] (bottom loop from the first dart, top above it).
+HexEx::HexMesh readBack(const HexLcc& lcc, const std::vector<HexLcc::Dart_handle>& cells) {
+    HexEx::HexMesh hm;
+    std::map<const void*, int> id;
+    for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it) {
+        id[&*it] = int(hm.vertices.size());
+        hm.vertices.push_back(HexEx::detail::lccToVec3d(it->point()));
+    }
+    auto vid = [&](HexLcc::Dart_const_handle d) { return id.at(&*lcc.vertex_attribute(d)); };
+    for (HexLcc::Dart_const_handle d : cells) {
+        if (!lcc.is_volume_combinatorial_hexahedron(d)) continue;
+        std::array<int, 8> h;
+        HexLcc::Dart_const_handle b = d;
+        for (int k = 0; k < 4; ++k, b = lcc.beta(b, 1)) {
+            h[k] = vid(b);
+            h[k + 4] = vid(lcc.beta(b, 2, 1, 1));
+        }
+        hm.hexes.push_back(h);
+    }
+    return hm;
+}
+
+/// Hexes as sorted tuples of corner positions (independent of vertex numbering).
+std::vector<std::array<std::array<double, 3>, 8>> hexesByPosition(const HexEx::HexMesh& hm) {
+    std::vector<std::array<std::array<double, 3>, 8>> r;
+    for (const auto& h : hm.hexes) {
+        std::array<std::array<double, 3>, 8> c;
+        for (int k = 0; k < 8; ++k) c[k] = {hm.vertices[h[k]][0], hm.vertices[h[k]][1], hm.vertices[h[k]][2]};
+        r.push_back(c);
+    }
+    std::sort(r.begin(), r.end());
+    return r;
+}
+
+/// Number of 3-free darts of an LCC.
+std::size_t freeDarts3(const HexLcc& lcc) {
+    std::size_t n = 0;
+    for (auto it = lcc.darts().begin(); it != lcc.darts().end(); ++it) n += lcc.is_free<3>(it) ? 1 : 0;
+    return n;
+}
+
+/// Number of boundary quads of a hex mesh (faces used by one hex).
+std::size_t boundaryQuads(const HexEx::HexMesh& hm) {
+    static const int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+    std::map<std::array<int, 4>, int> count;
+    for (const auto& h : hm.hexes)
+        for (const auto& f : kFaces) {
+            std::array<int, 4> k = {h[f[0]], h[f[1]], h[f[2]], h[f[3]]};
+            std::sort(k.begin(), k.end());
+            ++count[k];
+        }
+    std::size_t n = 0;
+    for (const auto& [k, c] : count) n += c == 1 ? 1 : 0;
+    return n;
+}
+
+/// Extracts @p pm through the LCC adapter (both directions) and checks the result against
+/// the .hexex path bit for bit and against CGAL's own validity checks.
+void checkLccRoundTrip(const HexEx::ParametrizedTetMesh& pm, std::size_t expectedHexes) {
+    const HexEx::HexMesh ref = HexExTest::extracted(pm);
+    ASSERT_EQ(ref.hexes.size(), expectedHexes);
+    ASSERT_TRUE(ref.polyhedra.empty());
+
+    const TetLcc tets = toLcc(pm);
+    ASSERT_TRUE(tets.is_valid());
+    const HexEx::LccTetMesh input(tets);
+    ASSERT_EQ(input.n_tets(), pm.mesh.n_cells());
+
+    // Input side alone: LCC -> built-in output.
+    HexEx::HexMesh viaTraits;
+    HexEx::extractHexMesh(input, viaTraits);
+    HexExTest::expectSameMesh(viaTraits, ref);
+
+    // Both sides: LCC -> LCC.
+    HexLcc hexes;
+    HexEx::LccHexOutput<HexLcc> output(hexes);
+    const HexEx::ExtractionReport report = HexEx::extractHexMesh(input, output);
+    EXPECT_TRUE(report.valid_all_hex);
+    EXPECT_TRUE(hexes.is_valid());
+    EXPECT_EQ(output.unsewnFaces(), 0u);
+    ASSERT_EQ(output.cellDarts().size(), expectedHexes);
+    EXPECT_EQ(hexes.number_of_vertex_attributes(), ref.vertices.size());
+    EXPECT_EQ(hexes.number_of_darts(), 24 * expectedHexes);
+    for (auto d : output.cellDarts()) EXPECT_TRUE(hexes.is_volume_combinatorial_hexahedron(d));
+    EXPECT_EQ(hexes.one_dart_per_cell<3>().size(), expectedHexes);
+    EXPECT_EQ(freeDarts3(hexes), 4 * boundaryQuads(ref));
+    HexExTest::expectSameMesh(readBack(hexes, output.cellDarts()), ref);
+}
+
+} // namespace
+
+TEST(CgalLccAdapter, SphereMatchesHexExFileBitForBit) {
+    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    checkLccRoundTrip(pm, 216);
+}
+
+TEST(CgalLccAdapter, CubeMatchesBuiltInKernel) { checkLccRoundTrip(HexEx::generateCube(3, 5), 125); }
+
+TEST(CgalLccAdapter, SingularCylinderMatchesBuiltInKernel) {
+    checkLccRoundTrip(HexEx::generateCylinder(3, 3, 2, 2, 1), 3 * 3 * 3 * 2);
+}
+
+TEST(CgalLccAdapter, CgalBuiltTetsGiveTheSameHexes) {
+    // make_tetrahedron + sew3_same_facets: the vertices are numbered differently, so the
+    // hexes are compared by their corner positions.
+    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    const TetLcc tets = toLccWithCgalOps(pm);
+    ASSERT_TRUE(tets.is_valid());
+    ASSERT_EQ(tets.number_of_vertex_attributes(), pm.mesh.n_vertices());
+    HexLcc hexes;
+    HexEx::LccHexOutput<HexLcc> output(hexes);
+    EXPECT_TRUE(HexEx::extractHexMesh(HexEx::LccTetMesh(tets), output).valid_all_hex);
+    EXPECT_TRUE(hexes.is_valid());
+    EXPECT_EQ(hexesByPosition(readBack(hexes, output.cellDarts())), hexesByPosition(HexExTest::extracted(pm)));
+}
+
+TEST(CgalLccAdapter, MapPerCellAndVertexThroughAnAccessor) {
+    // The map kept outside the darts: a table keyed by (volume index, vertex attribute).
+    const HexEx::ParametrizedTetMesh pm = HexEx::generateCube(2, 3);
+    const TetLcc tets = toLcc(pm);
+    std::map<std::pair<const void*, const void*>, HexEx::Vec3d> table;
+    const HexEx::LccTetMesh byDart(tets);
+    for (std::size_t t = 0; t < byDart.n_tets(); ++t)
+        for (int i = 0; i < 4; ++i) {
+            // Key by the volume's first dart and the corner's vertex attribute.
+            const void* cell = &*byDart.cornerDart(t, 0);
+            table[{cell, &*tets.vertex_attribute(byDart.cornerDart(t, i))}] = pm.params[t][std::size_t(i)];
+        }
+    std::map<const void*, const void*> firstDart;  // any dart of a volume -> its first dart
+    for (std::size_t t = 0; t < byDart.n_tets(); ++t)
+        for (auto it = tets.darts_of_cell<3>(byDart.cornerDart(t, 0)).begin();
+             it != tets.darts_of_cell<3>(byDart.cornerDart(t, 0)).end(); ++it)
+            firstDart[&*it] = &*byDart.cornerDart(t, 0);
+    auto accessor = [&](const TetLcc& lcc, TetLcc::Dart_const_handle d) {
+        return table.at({firstDart.at(&*d), &*lcc.vertex_attribute(d)});
+    };
+    HexEx::HexMesh out;
+    HexEx::extractHexMesh(HexEx::LccTetMesh(tets, accessor), out);
+    HexExTest::expectSameMesh(out, HexExTest::extracted(pm));
+}
+
+TEST(CgalLccAdapter, NonTetVolumeIsAnInputError) {
+    TetLcc lcc;
+    using P = TetLcc::Point;
+    lcc.make_hexahedron(P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0), P(0, 1, 1), P(0, 0, 1), P(1, 0, 1), P(1, 1, 1));
+    try {
+        HexEx::LccTetMesh view(lcc);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_STREQ(e.what(), "LCC volume 0 is not a closed combinatorial tetrahedron");
+    }
+}
+
+TEST(CgalLccAdapter, PolyhedraBecomeClosedVolumes) {
+    // A square pyramid and a hexahedron sharing the pyramid's base: one 3-sewn quad.
+    HexLcc lcc;
+    HexEx::LccHexOutput<HexLcc> out(lcc);
+    HexEx::fromHexMesh(
+        HexEx::HexMesh{{HexEx::Vec3d(0, 0, 0), HexEx::Vec3d(1, 0, 0), HexEx::Vec3d(1, 1, 0), HexEx::Vec3d(0, 1, 0),
+                        HexEx::Vec3d(0, 0, 1), HexEx::Vec3d(1, 0, 1), HexEx::Vec3d(1, 1, 1), HexEx::Vec3d(0, 1, 1),
+                        HexEx::Vec3d(0.5, 0.5, 2)},
+                       {{0, 1, 2, 3, 4, 5, 6, 7}},
+                       {HexEx::Polyhedron{{{4, 7, 6, 5}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}}}}},
+        out);
+    EXPECT_TRUE(lcc.is_valid());
+    EXPECT_EQ(out.unsewnFaces(), 0u);
+    EXPECT_EQ(lcc.number_of_darts(), 24u + 16u);
+    EXPECT_EQ(lcc.one_dart_per_cell<3>().size(), 2u);
+    EXPECT_EQ(freeDarts3(lcc), 40u - 8u);
+    EXPECT_EQ(lcc.number_of_vertex_attributes(), 9u);
+}

@@ -1,0 +1,300 @@
+// OpenVolumeMesh adapter (HexEx/Adapters/OpenVolumeMesh.hh) against the real library:
+// meshes read with OpenVolumeMesh's own readers from the files it wrote, and tet meshes
+// built in memory, extract the same mesh as the .hexex path bit for bit; the output
+// passes OpenVolumeMesh's topology checks and writes and reads back with its writers.
+
+#include "../TestMeshChecks.hh"
+
+#include <HexEx/Adapters/OpenVolumeMesh.hh>
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/IO/HexExFile.hh>
+
+#include <OpenVolumeMesh/FileManager/FileManager.hh>
+#include <OpenVolumeMesh/IO/IO.hh>
+#include <OpenVolumeMesh/IO/ovmb_read.hh>
+#include <OpenVolumeMesh/IO/ovmb_write.hh>
+#include <OpenVolumeMesh/Mesh/HexahedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/PolyhedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/TetrahedralMesh.hh>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+#include <unistd.h>
+
+namespace {
+
+using TetMesh = OpenVolumeMesh::GeometricTetrahedralMeshV3d;
+using PolyMesh = OpenVolumeMesh::GeometricPolyhedralMeshV3d;
+using HexMeshOvm = OpenVolumeMesh::GeometricHexahedralMeshV3d;
+using OvmVec = OpenVolumeMesh::Geometry::Vec3d;
+
+/// Fixtures written by OpenVolumeMesh 3.4.1 (bundled copies of ../shared/data/ovm).
+const std::string kOvmDir = "src/Unittests/data/ovm/";
+
+std::string tempPath(const std::string& file) {
+    return ::testing::TempDir() + "ovmadapter_" + std::to_string(::getpid()) + "_" + file;
+}
+
+/// Output of a shell command ("" if it could not run).
+std::string capture(const std::string& cmd) {
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    if (!p) return out;
+    char buf[65536];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, p.get())) > 0) out.append(buf, n);
+    return out;
+}
+
+/// A tet mesh in the files' convention: tet a b c d becomes the cell of halffaces a b c,
+/// a c d, a d b, b d c, each carrying the parameter of the opposite corner (d, b, c, a).
+template <class Mesh>
+Mesh toOvm(const HexEx::ParametrizedTetMesh& pm) {
+    Mesh m;
+    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) {
+        const HexEx::Vec3d p = pm.mesh.position(HexEx::VertexHandle(int(v)));
+        m.add_vertex(OvmVec(p[0], p[1], p[2]));
+    }
+    auto prop = m.template request_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    m.set_persistent(prop, true);
+    static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
+        std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
+        for (const auto& f : kFaces) {
+            std::vector<OpenVolumeMesh::VertexHandle> vs = {OpenVolumeMesh::VertexHandle(cv[f[0]].idx()),
+                                                            OpenVolumeMesh::VertexHandle(cv[f[1]].idx()),
+                                                            OpenVolumeMesh::VertexHandle(cv[f[2]].idx())};
+            OpenVolumeMesh::HalfFaceHandle hf = m.find_halfface(vs);
+            if (!hf.is_valid()) hf = m.halfface_handle(m.add_face(vs), 0);
+            hfs.push_back(hf);
+        }
+        const auto ch = m.add_cell(hfs, true);
+        EXPECT_TRUE(ch.is_valid()) << "tet " << t;
+        for (int k = 0; k < 4; ++k) {
+            const HexEx::Vec3d u = pm.params[t][std::size_t(kFaces[k][3])];
+            prop[hfs[std::size_t(k)]] = OvmVec(u[0], u[1], u[2]);
+        }
+    }
+    return m;
+}
+
+/// The hexes of an OpenVolumeMesh hex mesh as sets of vertex indices, per cell.
+std::vector<std::set<int>> cellVertexSets(const HexMeshOvm& m) {
+    std::vector<std::set<int>> r;
+    for (std::size_t c = 0; c < m.n_cells(); ++c) {
+        std::set<int> s;
+        for (const auto& hf : m.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces())
+            for (const auto& v : m.get_halfface_vertices(hf)) s.insert(v.idx());
+        r.push_back(s);
+    }
+    return r;
+}
+
+/// Checks @p out against @p ref: same vertex positions (bitwise), same hexes as vertex
+/// sets, each cell's halffaces the outward loops of the hex (hexahedral kernel layout).
+void expectOvmHexMeshEquals(const HexMeshOvm& out, const HexEx::HexMesh& ref) {
+    ASSERT_EQ(out.n_vertices(), ref.vertices.size());
+    ASSERT_EQ(out.n_cells(), ref.hexes.size());
+    for (std::size_t v = 0; v < ref.vertices.size(); ++v) {
+        const OvmVec& p = out.vertex(OpenVolumeMesh::VertexHandle(int(v)));
+        EXPECT_TRUE(p[0] == ref.vertices[v][0] && p[1] == ref.vertices[v][1] && p[2] == ref.vertices[v][2]) << v;
+    }
+    const auto sets = cellVertexSets(out);
+    for (std::size_t c = 0; c < ref.hexes.size(); ++c)
+        EXPECT_EQ(sets[c], std::set<int>(ref.hexes[c].begin(), ref.hexes[c].end())) << "hex " << c;
+}
+
+} // namespace
+
+TEST(OvmAdapter, SphereOvmbReadByOpenVolumeMeshMatchesHexExFile) {
+    for (const bool polyhedralKernel : {false, true}) {
+        const HexEx::HexMesh ref = HexExTest::extracted(HexEx::readHexExFile("Examples/data/sphere.hexex"));
+        HexEx::HexMesh out;
+        if (polyhedralKernel) {
+            PolyMesh m;
+            ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere.ovmb", m));
+            HexEx::extractHexMesh(HexEx::OvmTetMesh(m), out);
+        } else {
+            TetMesh m;
+            ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere.ovmb", m));
+            EXPECT_EQ(m.n_cells(), 76u);
+            HexEx::extractHexMesh(HexEx::OvmTetMesh(m), out);
+        }
+        ASSERT_EQ(out.hexes.size(), 216u);
+        HexExTest::expectSameMesh(out, ref);
+    }
+}
+
+TEST(OvmAdapter, SphereAsciiReadByOpenVolumeMeshMatchesOurReader) {
+    // sphere.ovm holds 6-digit numbers: compare with our own reader of the same file.
+    TetMesh m;
+    OpenVolumeMesh::IO::FileManager fm;
+    ASSERT_TRUE(fm.readFile(kOvmDir + "sphere.ovm", m));
+    HexEx::HexMesh out;
+    const HexEx::ExtractionReport r = HexEx::extractHexMesh(HexEx::OvmTetMesh(m), out);
+    EXPECT_TRUE(r.valid_all_hex);
+    EXPECT_EQ(out.hexes.size(), 216u);
+    HexExTest::expectSameMesh(out, HexExTest::extracted(HexEx::readHexExFile(kOvmDir + "sphere.ovm")));
+}
+
+TEST(OvmAdapter, PolycubeOvmbMatchesHexExFile) {
+    const std::string ovmb = "../shared/data/ovm/S1_polycube_scale1.ovmb.xz",
+                      hexex = "../shared/data/S1_polycube_scale1.hexex.xz";
+    if (!std::filesystem::exists(ovmb) || !std::filesystem::exists(hexex))
+        GTEST_SKIP() << "fixture " << ovmb << " absent";
+    const std::string bytes = capture("xz -dc '" + ovmb + "'");
+    if (bytes.empty()) GTEST_SKIP() << "xz not available";
+    std::istringstream in(bytes);
+    TetMesh m;
+    ASSERT_EQ(OpenVolumeMesh::IO::ovmb_read(in, m), OpenVolumeMesh::IO::ReadResult::Ok);
+    EXPECT_EQ(m.n_cells(), 113683u);
+    HexEx::HexMesh out;
+    HexEx::extractHexMesh(HexEx::OvmTetMesh(m), out);
+    const std::string text = capture("xz -dc '" + hexex + "'");
+    const HexEx::HexMesh ref = HexExTest::extracted(HexEx::readHexExBuffer(text, "S1.hexex"));
+    EXPECT_EQ(out.hexes.size(), 10288u);
+    HexExTest::expectSameMesh(out, ref);
+}
+
+TEST(OvmAdapter, InMemoryCubeAndCylinderIntoTheHexahedralKernel) {
+    for (const auto& pm : {HexEx::generateCube(3, 5), HexEx::generateCylinder(3, 3, 2, 2, 1)}) {
+        const TetMesh tets = toOvm<TetMesh>(pm);
+        const HexEx::HexMesh ref = HexExTest::extracted(pm);
+        HexMeshOvm hexes;
+        HexEx::OvmHexOutput<HexMeshOvm> output(hexes, /*topologyCheck=*/true);
+        const HexEx::ExtractionReport r = HexEx::extractHexMesh(HexEx::OvmTetMesh(tets), output);
+        EXPECT_TRUE(r.valid_all_hex);
+        expectOvmHexMeshEquals(hexes, ref);
+        EXPECT_EQ(output.cells().size(), ref.hexes.size());
+        // Through the built-in output kernel too: bit for bit.
+        HexEx::HexMesh viaTraits;
+        HexEx::extractHexMesh(HexEx::OvmTetMesh(tets), viaTraits);
+        HexExTest::expectSameMesh(viaTraits, ref);
+    }
+}
+
+TEST(OvmAdapter, HexKernelOutputHasTheFixtureLayoutAndWritesWithOpenVolumeMesh) {
+    const HexEx::HexMesh ref = HexExTest::extracted(HexEx::readHexExFile("Examples/data/sphere.hexex"));
+    TetMesh tets;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere.ovmb", tets));
+    HexMeshOvm hexes;
+    HexEx::OvmHexOutput<HexMeshOvm> output(hexes, true);
+    const HexEx::ExtractionReport r = HexEx::extractHexMesh(HexEx::OvmTetMesh(tets), output);
+    expectOvmHexMeshEquals(hexes, ref);
+    // The fixture was written by OpenVolumeMesh's hexahedral kernel from the same mesh:
+    // same halfface loops, cell by cell.
+    HexMeshOvm fixture;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere_hex.ovmb", fixture));
+    ASSERT_EQ(fixture.n_cells(), hexes.n_cells());
+    for (std::size_t c = 0; c < hexes.n_cells(); ++c) {
+        const auto& a = hexes.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces();
+        const auto& b = fixture.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces();
+        for (std::size_t k = 0; k < 6; ++k)
+            EXPECT_EQ(hexes.get_halfface_vertices(a[k]), fixture.get_halfface_vertices(b[k])) << c << " " << k;
+    }
+    // Per-cell data back as a persistent property; OpenVolumeMesh writes and reads it.
+    HexEx::markOvmNonHexCells(output, std::size_t(r.output.hexes));
+    std::vector<int> ids(output.cells().size());
+    for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = int(i) * 7;
+    HexEx::writeOvmCellProperty(output, "HexEx::CellIndex", ids);
+    const std::string ovmb = tempPath("sphere_hex.ovmb"), ovm = tempPath("sphere_hex.ovm");
+    ASSERT_EQ(OpenVolumeMesh::IO::ovmb_write(ovmb, hexes), OpenVolumeMesh::IO::WriteResult::Ok);
+    OpenVolumeMesh::IO::FileManager fm;
+    ASSERT_TRUE(fm.writeFile(ovm, hexes));
+    for (const std::string& path : {ovmb, ovm}) {
+        HexMeshOvm back;
+        ASSERT_TRUE(OpenVolumeMesh::IO::read_file(path, back, /*topology check*/ true)) << path;
+        expectOvmHexMeshEquals(back, ref);
+        auto prop = back.get_cell_property<int>("HexEx::CellIndex");
+        ASSERT_TRUE(prop.has_value()) << path;
+        EXPECT_EQ((*prop)[OpenVolumeMesh::CellHandle(5)], 35) << path;
+        std::remove(path.c_str());
+    }
+    EXPECT_THROW(HexEx::writeOvmCellProperty(output, "x", std::vector<int>(3)), HexEx::InputError);
+}
+
+TEST(OvmAdapter, PolyhedralKernelKeepsNonHexCells) {
+    // A hexahedron and a square pyramid on its top face: one shared halfface pair.
+    PolyMesh m;
+    HexEx::OvmHexOutput<PolyMesh> out(m, true);
+    HexEx::fromHexMesh(
+        HexEx::HexMesh{{HexEx::Vec3d(0, 0, 0), HexEx::Vec3d(1, 0, 0), HexEx::Vec3d(1, 1, 0), HexEx::Vec3d(0, 1, 0),
+                        HexEx::Vec3d(0, 0, 1), HexEx::Vec3d(1, 0, 1), HexEx::Vec3d(1, 1, 1), HexEx::Vec3d(0, 1, 1),
+                        HexEx::Vec3d(0.5, 0.5, 2)},
+                       {{0, 1, 2, 3, 4, 5, 6, 7}},
+                       {HexEx::Polyhedron{{{4, 7, 6, 5}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}}}}},
+        out);
+    EXPECT_EQ(m.n_cells(), 2u);
+    EXPECT_EQ(m.n_faces(), 6u + 4u);
+    EXPECT_EQ(m.n_vertices(), 9u);
+    ASSERT_EQ(out.cells().size(), 2u);
+    HexEx::markOvmNonHexCells(out, 1);
+    auto flag = m.get_cell_property<bool>("HexEx::NonHex");
+    ASSERT_TRUE(flag.has_value());
+    EXPECT_FALSE((*flag)[out.cells()[0]]);
+    EXPECT_TRUE((*flag)[out.cells()[1]]);
+    // The hexahedral kernel cannot hold the pyramid: skipped and counted.
+    HexMeshOvm h;
+    HexEx::OvmHexOutput<HexMeshOvm> hout(h, true);
+    HexEx::fromHexMesh(HexEx::HexMesh{{HexEx::Vec3d(0, 0, 0), HexEx::Vec3d(1, 0, 0), HexEx::Vec3d(0, 1, 0), HexEx::Vec3d(0, 0, 1)},
+                                      {},
+                                      {HexEx::Polyhedron{{{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {2, 0, 3}}}}},
+                       hout);
+    EXPECT_EQ(h.n_cells(), 0u);
+    EXPECT_EQ(hout.skippedPolyhedra(), 1u);
+    EXPECT_FALSE(hout.cells()[0].is_valid());
+}
+
+TEST(OvmAdapter, MapPerCellAndVertex) {
+    // The map as a cell property std::map<VertexHandle, Vec3d> (AlgoHex style), name given by the caller.
+    const HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(5, 2, 2, 2, 1);
+    TetMesh tets = toOvm<TetMesh>(pm);
+    auto prop = tets.request_cell_property<std::map<OpenVolumeMesh::VertexHandle, OvmVec>>("igm");
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t)
+        for (int i = 0; i < 4; ++i) {
+            const HexEx::Vec3d u = pm.params[t][std::size_t(i)];
+            prop[OpenVolumeMesh::CellHandle(int(t))][OpenVolumeMesh::VertexHandle(
+                pm.mesh.cell_vertex(HexEx::CellHandle(int(t)), i).idx())] = OvmVec(u[0], u[1], u[2]);
+        }
+    HexEx::HexMesh out;
+    HexEx::extractHexMesh(HexEx::OvmTetMesh(tets, "igm", HexEx::OvmMapStorage::CellVertexMap), out);
+    HexExTest::expectSameMesh(out, HexExTest::extracted(pm));
+    prop[OpenVolumeMesh::CellHandle(3)].erase(OpenVolumeMesh::VertexHandle(
+        pm.mesh.cell_vertex(HexEx::CellHandle(3), 2).idx()));
+    try {
+        HexEx::OvmTetMesh view(tets, "igm", HexEx::OvmMapStorage::CellVertexMap);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "OpenVolumeMesh cell 3: property 'igm' has no parameter for vertex " +
+                                             std::to_string(pm.mesh.cell_vertex(HexEx::CellHandle(3), 2).idx()));
+    }
+}
+
+TEST(OvmAdapter, MissingPropertyAndNonTetCellsAreInputErrors) {
+    TetMesh m;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere.ovmb", m));
+    try {
+        HexEx::OvmTetMesh view(m, "uvw");
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_STREQ(e.what(), "OpenVolumeMesh mesh has no halfface property 'uvw' of type Vec3d");
+    }
+    HexMeshOvm hexes;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere_hex.ovmb", hexes));
+    auto p = hexes.request_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    try {
+        HexEx::OvmTetMesh view(hexes);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_STREQ(e.what(), "OpenVolumeMesh cell 0 has 6 halffaces, not a tetrahedron");
+    }
+}
