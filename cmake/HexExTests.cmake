@@ -34,7 +34,7 @@ hexex_add_install_test(install_and_find_package_traits traits traits)
 # The adapters: Examples/cgal_lcc (CGAL is a dependency, always built) and
 # Examples/openvolumemesh (only when OpenVolumeMesh is found; its prefix is passed on).
 hexex_add_install_test(install_and_find_package_cgal_lcc cgal_lcc cgal_lcc)
-find_package(OpenVolumeMesh CONFIG QUIET)
+include(${PROJECT_SOURCE_DIR}/cmake/HexExOpenVolumeMesh.cmake)
 if(OpenVolumeMesh_FOUND)
   # find_package() also searches a prefix for <name>Config.cmake directly.
   hexex_add_install_test(install_and_find_package_openvolumemesh openvolumemesh openvolumemesh ${OpenVolumeMesh_DIR})

@@ -215,9 +215,11 @@ public:
     /// Adds a hexahedron (vertex indices in VTK order).
     void addHex(const std::array<std::size_t, 8>& v) {
         if constexpr (kHexKernel) {
-            // The hexahedral kernel's order: a face loop 0 1 2 3 and the loop 4 5 6 7 behind it
-            // with 4 behind 0 and 7 behind 1, i.e. VTK's bottom seen from outside and its top.
-            static constexpr int kOrder[8] = {0, 3, 2, 1, 4, 5, 6, 7};
+            // Passed to the hexahedral kernel's add_cell() in this order, a VTK hex gets the
+            // outward halffaces 0 3 2 1, 4 5 6 7, 3 0 4 7, 1 2 6 5, 2 3 7 6, 0 1 5 4 (up to
+            // their start vertex): the layout of the hex files OpenVolumeMesh writes
+            // (checked against sphere_hex.ovmb in the tests), also used for the polyhedral kernel.
+            static constexpr int kOrder[8] = {2, 3, 0, 1, 6, 5, 4, 7};
             std::vector<OpenVolumeMesh::VertexHandle> vs(8);
             for (std::size_t i = 0; i < 8; ++i) vs[i] = vh(v[static_cast<std::size_t>(kOrder[i])]);
             finishCell(mesh_->add_cell(vs, check_));
