@@ -36,8 +36,9 @@ hexex_add_install_test(install_and_find_package_traits traits traits)
 hexex_add_install_test(install_and_find_package_cgal_lcc cgal_lcc cgal_lcc)
 include(${PROJECT_SOURCE_DIR}/cmake/HexExOpenVolumeMesh.cmake)
 if(OpenVolumeMesh_FOUND)
-  # find_package() also searches a prefix for <name>Config.cmake directly.
-  hexex_add_install_test(install_and_find_package_openvolumemesh openvolumemesh openvolumemesh ${OpenVolumeMesh_DIR})
+  # <prefix>/lib/cmake/OpenVolumeMesh -> <prefix>
+  get_filename_component(_hexex_ovm_prefix "${OpenVolumeMesh_DIR}/../../.." ABSOLUTE)
+  hexex_add_install_test(install_and_find_package_openvolumemesh openvolumemesh openvolumemesh ${_hexex_ovm_prefix})
 endif()
 
 # The API documentation must build without a single Doxygen warning.

@@ -37,12 +37,12 @@ endfunction()
 
 run_step(install "${CMAKE_COMMAND}" --install "${HEXEX_BINARY_DIR}" --prefix "${prefix}" --config "${BUILD_TYPE}")
 
-set(prefix_path "${prefix}")
 if(EXTRA_PREFIX_PATH)
-  string(APPEND prefix_path ";${EXTRA_PREFIX_PATH}")
+  # Through the environment: a ';' list would split the -D argument.
+  set(ENV{CMAKE_PREFIX_PATH} "${EXTRA_PREFIX_PATH}")
 endif()
 set(configure_args -S "${EXAMPLE_SOURCE_DIR}" -B "${example_build}"
-  "-DCMAKE_PREFIX_PATH=${prefix_path}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+  "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
 if(GENERATOR)
   list(APPEND configure_args -G "${GENERATOR}")
 endif()

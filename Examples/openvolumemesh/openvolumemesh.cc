@@ -22,10 +22,9 @@ namespace {
 using OpenVolumeMesh::VertexHandle;
 using Vec3 = OpenVolumeMesh::Geometry::Vec3d;
 
-/// The unit cube as six tets; each tet a b c d (positive volume) gets the halffaces a b c,
+/// Fills @p mesh with the unit cube as six tets; each tet a b c d (positive volume) gets the halffaces a b c,
 /// a c d, a d b, b d c (normals into the cell), each holding its opposite corner's parameter.
-OpenVolumeMesh::GeometricTetrahedralMeshV3d makeCube() {
-    OpenVolumeMesh::GeometricTetrahedralMeshV3d mesh;
+void makeCube(OpenVolumeMesh::GeometricTetrahedralMeshV3d& mesh) {
     for (int i = 0; i < 8; ++i) mesh.add_vertex(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
     auto param = mesh.request_halfface_property<Vec3>(HexEx::kOvmParametrization);
     mesh.set_persistent(param, true);
@@ -42,7 +41,6 @@ OpenVolumeMesh::GeometricTetrahedralMeshV3d makeCube() {
         }
         mesh.add_cell(hfs, /*topologyCheck=*/true);
     }
-    return mesh;
 }
 
 } // namespace
@@ -55,7 +53,7 @@ int main(int argc, char** argv) {
             return 1;
         }
     } else {
-        tets = makeCube();
+        makeCube(tets);
     }
     OpenVolumeMesh::GeometricHexahedralMeshV3d hexes;
     HexEx::OvmHexOutput<OpenVolumeMesh::GeometricHexahedralMeshV3d> output(hexes, /*topologyCheck=*/true);
