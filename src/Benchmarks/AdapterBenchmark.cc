@@ -92,6 +92,7 @@ void buildOvm(const HexEx::ParametrizedTetMesh& pm, OvmTets& m) {
         m.add_vertex(OvmVec(p[0], p[1], p[2]));
     }
     auto prop = m.request_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    m.set_persistent(prop, true);  // outlives this handle, as after reading a file
     static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
     for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
         const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));

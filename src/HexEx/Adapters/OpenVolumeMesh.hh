@@ -60,6 +60,10 @@ enum class OvmMapStorage {
 /// into the cell) reads back as `a b c d`. If the corners so read are negatively oriented
 /// in total (a mesh stored with outward halffaces), corners 1 and 2 of every tet are swapped.
 ///
+/// The property is looked up by name, so it must exist when the view is made: properties
+/// read from a file are persistent; one made with `request_halfface_property()` must be
+/// kept alive or made persistent (`mesh.set_persistent(prop)`).
+///
 /// The constructor throws InputError if the property is missing or a cell is not a
 /// tetrahedron (four triangular halffaces on four vertices), or (CellVertexMap) when a
 /// cell's map lacks one of its vertices. The mesh must stay alive and unchanged while the
