@@ -116,6 +116,8 @@ public:
     }
 
     std::size_t freeVertices() const { return free_.size(); }
+    /// Hex energy evaluations so far (the work budget counts these).
+    double work() const { return work_; }
     const std::vector<int>& elements() const { return elems_; }
     int variables() const { return n_vars_; }
 
@@ -160,6 +162,7 @@ public:
     double energy(const Eigen::VectorXd& q, double eps, Eigen::VectorXd* grad, double* min_det) {
         apply(q);
         const std::size_t ne = elems_.size();
+        work_ += static_cast<double>(ne);
         e_val_.resize(ne);
         e_det_.resize(ne);
         if (grad) e_grad_.resize(ne);
@@ -234,6 +237,7 @@ private:
     std::vector<FreeVertex> free_;
     std::vector<int> elems_;
     double scale_ = 1;
+    double work_ = 0;
     int n_vars_ = 0;
     std::vector<double> e_val_, e_det_;
     std::vector<std::array<Vec3d, 8>> e_grad_;
@@ -241,7 +245,8 @@ private:
 };
 
 /// Runs the eps schedule on @p pb; returns true if no element is inverted at the end.
-bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep) {
+/// Stops early when @p budget (hex energy evaluations, shared by all attempts) is used up.
+bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, double& budget) {
     Eigen::VectorXd q = Eigen::VectorXd::Zero(pb.variables());
     Eigen::VectorXd g;
     double dmin = 0;
@@ -266,20 +271,25 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep) {
         const double decrease = (e_prev - e) / std::max(std::abs(e), 1e-300);
         // Done when untangled and the energy has settled, or 5 steps after untangling
         // (further steps only improve the shape).
-        if (inverted == 0 && (decrease < 1e-3 || ++steps_untangled >= 5)) return true;
+        if (inverted == 0 && (decrease < 1e-3 || ++steps_untangled >= 5)) break;
         // Give up on this neighbourhood when the count of inverted hexes has not dropped
         // for 8 steps (a larger one may have room; a fixed boundary may admit no solution).
         if (inverted < fewest_inverted) {
             fewest_inverted = inverted;
             steps_without_progress = 0;
         } else if (++steps_without_progress >= 8) {
-            return false;
+            break;
+        }
+        if (pb.work() >= budget) {
+            rep.budget_exhausted = true;
+            break;
         }
         const double sigma = std::max(1.0 - e / e_prev, 0.1);
         const double mu = (1.0 - sigma) * regularizedDeterminant(dmin, eps);
         eps = dmin < mu ? 2.0 * std::sqrt(mu * (mu - dmin)) : 1e-10;
         eps = std::max(eps, 1e-12);
     }
+    budget -= pb.work();
     return pb.invertedElements() == 0;
 }
 
@@ -345,6 +355,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     const VertexHexes vh(nv, mesh.hexes);
 
     int rings = std::max(0, options.rings);
+    double budget = std::max(options.min_work, options.work_per_hex * static_cast<double>(mesh.hexes.size()));
     // The best placement seen (fewest inverted hexes in the whole mesh): an attempt that ends
     // worse than it started (possible when boundary vertices are projected back) is undone.
     std::vector<Vec3d> best = mesh.vertices;
@@ -384,7 +395,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
         ++rep.attempts;
         rep.rings = whole ? -1 : rings;
         rep.free_vertices = static_cast<long>(pb.freeVertices());
-        if (pb.freeVertices() > 0) minimise(pb, options, rep);
+        if (pb.freeVertices() > 0) minimise(pb, options, rep, budget);
         inverted.clear();
         for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
             if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
@@ -397,7 +408,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
             for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
                 if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
         }
-        if (inverted.empty() || whole || rep.attempts >= 3) break;
+        if (inverted.empty() || whole || rep.attempts >= 3 || budget <= 0) break;
         rings = rings == 0 ? 1 : 4 * rings;
     }
 
@@ -434,7 +445,8 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
                            "(polyhedra), whose vertices do not move";
         if (stuck == 0 && at_polyhedra == 0)
             rep.message += ": the minimisation found no foldover-free placement within its limits (" +
-                           std::to_string(rep.outer_iterations) + " regularisation steps)" +
+                           std::to_string(rep.outer_iterations) + " regularisation steps" +
+                           (rep.budget_exhausted ? ", work budget used up" : "") + ")" +
                            (options.boundary == BoundaryMode::Fixed ? "; the fixed boundary may not admit one" : "");
     }
     return rep;

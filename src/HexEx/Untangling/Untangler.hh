@@ -46,6 +46,10 @@ struct UntangleOptions {
     double feature_angle_deg = 40; ///< surface edges with a larger normal angle are feature curves
     double theta = 1.0 / 128;      ///< weight of the volume term g in the energy (shape term f: 1 - theta)
     double on_surface_tolerance = 1e-6;  ///< relative to the bbox diagonal: vertices this close to a feature curve/corner are on it
+    /// Work budget: at most max(min_work, work_per_hex * hexes) evaluations of one hex's
+    /// energy in total (all attempts); bounds the cost when no untangled placement is found.
+    double work_per_hex = 200;
+    double min_work = 1e7;  ///< see work_per_hex
 };
 
 /// What untangleHexMesh() did. Scaled Jacobians are per hex (minimum over its corners).
@@ -67,6 +71,7 @@ struct UntangleReport {
     int lbfgs_iterations = 0;          ///< L-BFGS iterations in total
     double seconds = 0;                ///< wall time
     bool success = true;               ///< inverted_after == 0
+    bool budget_exhausted = false;     ///< the work budget (UntangleOptions::work_per_hex) stopped the minimisation
     std::string message;               ///< why hexes remain inverted (empty on success)
 };
 
