@@ -84,7 +84,7 @@ class UntangleResult(HexMesh):
         (hexes, inverted_before, inverted_after, min/mean_scaled_jacobian_before/after,
         free_vertices, moved_vertices, max_displacement, mean_displacement (relative to the
         bounding-box diagonal), attempts, rings, outer_iterations, lbfgs_iterations,
-        seconds, success, message)."""
+        seconds, success, budget_exhausted, message)."""
 
     @property
     def success(self) -> bool:

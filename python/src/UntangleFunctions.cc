@@ -38,6 +38,7 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
     d["lbfgs_iterations"] = r.lbfgs_iterations;
     d["seconds"] = r.seconds;
     d["success"] = r.success;
+    d["budget_exhausted"] = r.budget_exhausted;
     d["message"] = r.message;
     return d;
 }
