@@ -248,7 +248,6 @@ private:
 /// Stops early when @p budget (hex energy evaluations, shared by all attempts) is used up.
 bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, double& budget) {
     Eigen::VectorXd q = Eigen::VectorXd::Zero(pb.variables());
-    Eigen::VectorXd g;
     double dmin = 0;
     pb.energy(q, 1.0, nullptr, &dmin);
     double eps = std::sqrt(1e-12 + 0.04 * std::min(dmin, 0.0) * std::min(dmin, 0.0));
