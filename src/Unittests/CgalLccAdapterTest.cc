@@ -259,3 +259,38 @@ TEST(CgalLccAdapter, PolyhedraBecomeClosedVolumes) {
     EXPECT_EQ(freeDarts3(lcc), 40u - 8u);
     EXPECT_EQ(lcc.number_of_vertex_attributes(), 9u);
 }
+
+TEST(CgalLccAdapter, FacesOrientedLikeMakeHexahedron) {
+    // CGAL's make_hexahedron() orients every face so that its normal points into the
+    // volume; the adapter's hexes do the same.
+    auto inwardFaces = [](const HexLcc& lcc, HexLcc::Dart_const_handle d) {
+        HexLcc::Vector c(0, 0, 0);
+        int n = 0;
+        for (auto it = lcc.darts_of_cell<3>(d).begin(); it != lcc.darts_of_cell<3>(d).end(); ++it, ++n)
+            c = c + (lcc.point(it) - CGAL::ORIGIN);
+        const HexLcc::Point centre = CGAL::ORIGIN + c / n;
+        int inward = 0;
+        for (auto it = lcc.darts_of_cell<3>(d).begin(); it != lcc.darts_of_cell<3>(d).end(); ++it) {
+            const HexLcc::Point& a = lcc.point(it);
+            const HexLcc::Point& b = lcc.point(lcc.beta(it, 1));
+            const HexLcc::Point& e = lcc.point(lcc.beta(it, 1, 1));
+            inward += CGAL::orientation(a, b, e, centre) == CGAL::POSITIVE ? 1 : 0;
+        }
+        return inward;
+    };
+    using P = HexLcc::Point;
+    HexLcc cgal;
+    const auto d = cgal.make_hexahedron(P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0), P(0, 1, 1), P(0, 0, 1),
+                                        P(1, 0, 1), P(1, 1, 1));
+    ASSERT_TRUE(cgal.is_volume_combinatorial_hexahedron(d));
+    EXPECT_EQ(inwardFaces(cgal, d), 24);
+    HexLcc ours;
+    HexEx::LccHexOutput<HexLcc> out(ours);
+    HexEx::fromHexMesh(HexEx::HexMesh{{HexEx::Vec3d(0, 0, 0), HexEx::Vec3d(1, 0, 0), HexEx::Vec3d(1, 1, 0),
+                                       HexEx::Vec3d(0, 1, 0), HexEx::Vec3d(0, 0, 1), HexEx::Vec3d(1, 0, 1),
+                                       HexEx::Vec3d(1, 1, 1), HexEx::Vec3d(0, 1, 1)},
+                                      {{0, 1, 2, 3, 4, 5, 6, 7}},
+                                      {}},
+                       out);
+    EXPECT_EQ(inwardFaces(ours, out.cellDarts()[0]), 24);
+}
