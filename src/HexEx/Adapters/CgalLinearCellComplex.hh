@@ -203,9 +203,12 @@ public:
     /// Adds a closed volume given by its faces, each an outward-oriented loop of vertex
     /// indices, and returns its first dart.
     Dart addVolume(const std::vector<std::vector<std::size_t>>& faces) {
-        std::vector<Dart> darts;
-        std::vector<std::pair<std::size_t, std::size_t>> ends;  // (origin, target) per dart
-        std::vector<std::size_t> faceStart;
+        std::vector<Dart>& darts = darts_;
+        std::vector<std::pair<std::size_t, std::size_t>>& ends = ends_;  // (origin, target) per dart
+        std::vector<std::size_t>& faceStart = faceStart_;
+        darts.clear();
+        ends.clear();
+        faceStart.clear();
         for (const auto& loop : faces) {
             const std::size_t n = loop.size(), first = darts.size();
             faceStart.push_back(first);
@@ -258,10 +261,15 @@ private:
     void sewFace(const std::vector<std::size_t>& loop, Dart d) {
         Key key;
         key.n = loop.size();
-        std::vector<std::size_t> sorted(loop);
-        std::sort(sorted.begin(), sorted.end());
+        // The four smallest indices, ascending (insertion into a padded array: no allocation).
         key.v.fill(SIZE_MAX);
-        for (std::size_t i = 0; i < 4 && i < sorted.size(); ++i) key.v[i] = sorted[i];
+        for (std::size_t x : loop)
+            for (std::size_t i = 0; i < 4; ++i)
+                if (x < key.v[i]) {
+                    for (std::size_t j = 3; j > i; --j) key.v[j] = key.v[j - 1];
+                    key.v[i] = x;
+                    break;
+                }
         auto [it, inserted] = open_.emplace(key, d);
         if (inserted) return;
         // d runs from vertex a to b; its partner runs from b to a in the other face.
@@ -290,6 +298,9 @@ private:
     std::vector<Dart> cells_;
     std::unordered_map<Key, Dart, KeyHash> open_;
     std::vector<std::vector<std::size_t>> scratch_;
+    std::vector<Dart> darts_;                                  // addVolume() scratch: darts
+    std::vector<std::pair<std::size_t, std::size_t>> ends_;    // addVolume() scratch: dart ends
+    std::vector<std::size_t> faceStart_;                       // addVolume() scratch: first dart per face
     std::size_t unsewn_ = 0;
 };
 
