@@ -256,12 +256,20 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     if (!parsed && in.more()) in.fail(in.line(), "unexpected data after last tet");
 
     // 3D orientation (exact): all positive, or all negative (mirrored), nothing else.
+    // Signs on all threads; the first degenerate tet and the lists are found in tet order.
+    std::vector<signed char> sign(cells.size());
+    parallelChunks(cells.size(), cells.size() >= static_cast<std::size_t>(kParallelMinTets) ? nThreads : 1,
+                   [&](int, std::size_t b, std::size_t e) {
+                       for (std::size_t c = b; c < e; ++c) {
+                           const auto& cv = cells[c];
+                           sign[c] = static_cast<signed char>(
+                               orient3d(positions[cv[0]], positions[cv[1]], positions[cv[2]], positions[cv[3]]));
+                       }
+                   });
     std::vector<std::size_t> negative, positive;
     for (std::size_t c = 0; c < cells.size(); ++c) {
-        const auto& cv = cells[c];
-        const int s = orient3d(positions[cv[0]], positions[cv[1]], positions[cv[2]], positions[cv[3]]);
-        if (s == 0) in.fail(lines[c], "tet " + std::to_string(c) + " is degenerate in 3D (zero volume)");
-        (s < 0 ? negative : positive).push_back(c);
+        if (sign[c] == 0) in.fail(lines[c], "tet " + std::to_string(c) + " is degenerate in 3D (zero volume)");
+        (sign[c] < 0 ? negative : positive).push_back(c);
     }
     std::vector<std::string> warnings;
     bool reoriented = false;
