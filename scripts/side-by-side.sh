@@ -8,6 +8,7 @@
 #   THREADS=2        threads for both tools
 #   CASES="..."      subset of: cube20 cube40 cylinder6 s1x2 pig2 pig2p (default: all)
 #   TIMEOUT=900      seconds before a HexHex run is killed
+#   REPEAT=1         runs per case (ours and HexHex alternating); the best time of each is printed
 #   HEXEX_SHARED=DIR the shared data (default <repo>/../shared); skipped cleanly when absent
 # HexHex is built once by ../shared/anchors/hexhex/build.sh (5-8 min the first time).
 #
@@ -25,6 +26,7 @@ SHARED=${HEXEX_SHARED:-$ROOT/../shared}
 BUILD=${1:-$ROOT/build}
 THREADS=${THREADS:-2}
 TIMEOUT=${TIMEOUT:-900}
+REPEAT=${REPEAT:-1}
 CASES=${CASES:-"cube20 cube40 cylinder6 s1x2 pig2 pig2p"}
 HEXEX=$BUILD/src/Tools/hexex/hexex
 
@@ -63,54 +65,67 @@ make_input() {
     esac
 }
 
-echo "side by side with HexHex, $THREADS threads, $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores"
+min() { python3 -c "import sys; v=[float(x) for x in sys.argv[1:] if x]; print(f'{min(v):.2f}' if v else '-')" "$@"; }
+ratio() {
+    python3 -c "import sys
+try: print(f'{float(sys.argv[2]) / float(sys.argv[1]):.1f}x')
+except Exception: print('-')" "$1" "$2"
+}
+
+echo "side by side with HexHex, $THREADS threads, best of $REPEAT, $(date -u '+%Y-%m-%d %H:%M UTC'), $(nproc) cores"
 printf '%-10s %9s %9s | %9s %9s %7s | %9s %9s %7s\n' case tets hexes ours_ext hh_ext ratio ours_e2e hh_e2e ratio
 for c in $CASES; do
     make_input "$c"
     in=$TMP/$c.hexex
-    # Ours, end to end (the report gives the extraction stages of the same run).
-    t0=$(now)
-    set +e
-    "$HEXEX" extract "$in" -o "$TMP/ours.ovmb" --threads "$THREADS" --quiet --report "$TMP/ours.json" 2> "$TMP/ours.err"
-    st=$?
-    set -e
-    t1=$(now)
-    if [[ $st -ne 0 && $st -ne 3 ]]; then
-        echo "$c: hexex failed (exit $st): $(head -c 300 "$TMP/ours.err")"
+    ours_ext=() ours_e2e=() hh_ext=() hh_e2e=() refused="" failed=""
+    for ((r = 0; r < REPEAT; ++r)); do
+        # Ours, end to end (the report gives the extraction stages of the same run).
+        t0=$(now)
+        set +e
+        "$HEXEX" extract "$in" -o "$TMP/ours.ovmb" --threads "$THREADS" --quiet --report "$TMP/ours.json" 2> "$TMP/ours.err"
+        st=$?
+        set -e
+        t1=$(now)
+        if [[ $st -ne 0 && $st -ne 3 ]]; then
+            failed="hexex failed (exit $st): $(head -c 300 "$TMP/ours.err")"
+            break
+        fi
+        ours_e2e+=("$(python3 -c "print($t1 - $t0)")")
+        ours_ext+=("$(json "$TMP/ours.json" "sum(d['timings_s'][k] for k in ('preprocess','vertices','darts','connect','postprocess','assemble'))")")
+        [[ -n $refused ]] && continue
+        # HexHex, extraction only.
+        set +e
+        timeout "$TIMEOUT" "$HEXHEX_RUN" --threads "$THREADS" "$in" > "$TMP/hh.json" 2> "$TMP/hh.err"
+        hst=$?
+        set -e
+        if [[ $hst -eq 3 ]]; then
+            refused="HexHex refused: $(grep -E 'Error:|Detected .* Tets' "$TMP/hh.err" | tail -n2 | sed 's/^HexHex: //' | tr '\n' ' ')"
+            continue
+        elif [[ $hst -ne 0 && $hst -ne 4 ]]; then
+            refused="HexHex failed (exit $hst): $(tail -n1 "$TMP/hh.err")"
+            continue
+        fi
+        hh_ext+=("$(json "$TMP/hh.json" "d['t_extract_s']")")
+        # HexHex, end to end through its CLI.
+        t0=$(now)
+        set +e
+        timeout "$TIMEOUT" "$HEXHEX_CLI" -i "$in" -o "$TMP/hh.ovmb" --nthreads "$THREADS" > "$TMP/hhcli.out" 2>&1
+        hst=$?
+        set -e
+        t1=$(now)
+        [[ $hst -eq 0 ]] && hh_e2e+=("$(python3 -c "print($t1 - $t0)")")
+        rm -f "$TMP/ours.ovmb" "$TMP/hh.ovmb"
+    done
+    if [[ -n $failed ]]; then
+        echo "$c: $failed"
         continue
     fi
-    ours_e2e=$(python3 -c "print(f'{$t1 - $t0:.2f}')")
-    ours_ext=$(json "$TMP/ours.json" "f\"{sum(d['timings_s'][k] for k in ('preprocess','vertices','darts','connect','postprocess','assemble')):.2f}\"")
     tets=$(json "$TMP/ours.json" "d['input']['tets']")
     hexes=$(json "$TMP/ours.json" "d['output']['hexes']")
-    # HexHex, extraction only.
-    set +e
-    timeout "$TIMEOUT" "$HEXHEX_RUN" --threads "$THREADS" "$in" > "$TMP/hh.json" 2> "$TMP/hh.err"
-    hst=$?
-    set -e
-    if [[ $hst -eq 3 ]]; then
-        reason=$(grep -m1 -i "invalid\|flipped\|degenerate" "$TMP/hh.err" || head -n1 "$TMP/hh.err")
-        printf '%-10s %9s %9s | %9s %9s %7s | %9s %9s %7s   HexHex refused: %s\n' "$c" "$tets" "$hexes" "$ours_ext" \
-            refused - "$ours_e2e" refused - "$reason"
-        continue
-    elif [[ $hst -ne 0 && $hst -ne 4 ]]; then
-        printf '%-10s %9s %9s | %9s %9s %7s | %9s %9s %7s   HexHex failed (exit %s): %s\n' "$c" "$tets" "$hexes" \
-            "$ours_ext" failed - "$ours_e2e" - - "$hst" "$(tail -n1 "$TMP/hh.err")"
-        continue
-    fi
-    hh_ext=$(json "$TMP/hh.json" "f\"{d['t_extract_s']:.2f}\"")
-    # HexHex, end to end through its CLI.
-    t0=$(now)
-    set +e
-    timeout "$TIMEOUT" "$HEXHEX_CLI" -i "$in" -o "$TMP/hh.ovmb" --nthreads "$THREADS" > "$TMP/hhcli.out" 2>&1
-    hst=$?
-    set -e
-    t1=$(now)
-    hh_e2e=$(python3 -c "print(f'{$t1 - $t0:.2f}')")
-    [[ $hst -eq 0 ]] || hh_e2e="exit$hst"
-    ratio() { python3 -c "import sys; a,b=sys.argv[1:]; print(f'{float(b)/float(a):.1f}x' if a.replace('.','').isdigit() and b.replace('.','').isdigit() and float(a)>0 else '-')" "$1" "$2"; }
-    printf '%-10s %9s %9s | %9s %9s %7s | %9s %9s %7s\n' "$c" "$tets" "$hexes" "$ours_ext" "$hh_ext" \
-        "$(ratio "$ours_ext" "$hh_ext")" "$ours_e2e" "$hh_e2e" "$(ratio "$ours_e2e" "$hh_e2e")"
-    rm -f "$TMP/ours.ovmb" "$TMP/hh.ovmb"
+    oe=$(min "${ours_ext[@]}") oa=$(min "${ours_e2e[@]}") he=$(min "${hh_ext[@]}") ha=$(min "${hh_e2e[@]}")
+    [[ -n $refused ]] && he=refused ha=refused
+    printf '%-10s %9s %9s | %9s %9s %7s | %9s %9s %7s   %s\n' "$c" "$tets" "$hexes" "$oe" "$he" "$(ratio "$oe" "$he")" \
+        "$oa" "$ha" "$(ratio "$oa" "$ha")" "$refused"
+    rm -f "$in"
 done
-echo "times in seconds; ratio = HexHex time / our time (above 1: ours is faster)"
+echo "times in seconds (best of $REPEAT, ours and HexHex alternating); ratio = HexHex time / our time (above 1: ours is faster)"

@@ -19,6 +19,14 @@
 namespace HexEx {
 namespace detail {
 
+/// True on little-endian hosts.
+inline bool hostIsLittleEndian() {
+    const std::uint16_t probe = 1;
+    unsigned char first = 0;
+    std::memcpy(&first, &probe, 1);
+    return first == 1;
+}
+
 /// Bytes appended to a buffer; with a sink stream the buffer is written out whenever it
 /// holds a block (1 MiB by default), without one it grows and take() returns everything.
 class BlockOutput {
@@ -77,6 +85,18 @@ public:
         for (int i = 0; i < bytes; ++i) p[i] = static_cast<char>((v >> (8 * i)) & 0xff);
         used_ += static_cast<std::size_t>(bytes);
         flushIfFull();
+        return *this;
+    }
+    /// Appends the @p n integers or doubles at @p values, each as its low @p bytes bytes
+    /// little-endian (doubles: all 8 bytes); copied in one piece where that gives the same bytes.
+    template <class T>
+    BlockOutput& leArray(const T* values, std::size_t n, int bytes = static_cast<int>(sizeof(T))) {
+        if (hostIsLittleEndian() && bytes == static_cast<int>(sizeof(T)))
+            return *this << std::string_view(reinterpret_cast<const char*>(values), n * sizeof(T));
+        for (std::size_t i = 0; i < n; ++i) {
+            if constexpr (std::is_floating_point_v<T>) leReal(static_cast<double>(values[i]));
+            else le(static_cast<std::uint64_t>(values[i]), bytes);
+        }
         return *this;
     }
     /// Appends the 8 bytes of @p x, little-endian.

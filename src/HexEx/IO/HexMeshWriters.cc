@@ -26,13 +26,7 @@ namespace {
 
 using detail::BlockOutput;
 
-/// True on little-endian hosts (arrays are written in host byte order and labelled so).
-bool hostIsLittleEndian() {
-    const std::uint16_t probe = 1;
-    unsigned char first = 0;
-    std::memcpy(&first, &probe, 1);
-    return first == 1;
-}
+using detail::hostIsLittleEndian;
 
 /// The data arrays of a `.vtu` file: text inside the XML (ascii), or appended blocks that
 /// point into the caller's arrays (binary) or hold their compressed bytes.

@@ -162,9 +162,10 @@ void padding(detail::BlockOutput& o, std::size_t pad) { o << std::string_view("\
 int encodingFor(std::uint64_t maxValue) { return maxValue < 256 ? 1 : maxValue < 65536 ? 2 : 4; }
 
 /// Appends a TOPO chunk for the handle lists given by their @p count, @p length(i) and the
-/// handles @p handles(i) as [begin, end) pointers (entity 1 edges, 2 faces, 3 cells).
+/// handles @p handles(i) as [begin, end) pointers (entity 1 edges, 2 faces, 3 cells);
+/// @p contiguous if the lists lie back to back in memory.
 template <class Length, class Handles>
-void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length length, Handles handles) {
+void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length length, Handles handles, bool contiguous) {
     std::size_t maxValence = 0, minValence = SIZE_MAX, total = 0;
     int maxHandle = 0;
     for (std::size_t i = 0; i < count; ++i) {
@@ -188,9 +189,13 @@ void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length len
     o.le(0, 8);  // handle offset
     if (!fixed)
         for (std::size_t i = 0; i < count; ++i) o.le(length(i), vb);
-    for (std::size_t i = 0; i < count; ++i) {
-        const auto [b, e] = handles(i);
-        for (const int* h = b; h != e; ++h) o.le(static_cast<std::uint32_t>(*h), hb);
+    if (contiguous) {  // the lists lie back to back: all handles in one go
+        o.leArray(handles(0).first, total, hb);
+    } else {
+        for (std::size_t i = 0; i < count; ++i) {
+            const auto [b, e] = handles(i);
+            for (const int* h = b; h != e; ++h) o.le(static_cast<std::uint32_t>(*h), hb);
+        }
     }
     padding(o, pad);
 }
@@ -199,7 +204,7 @@ void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length len
 void topoChunk(detail::BlockOutput& o, int entity, const IntLists& lists) {
     topoChunk(
         o, entity, lists.size(), [&](std::size_t i) { return lists.length(i); },
-        [&](std::size_t i) { return std::pair<const int*, const int*>(lists.begin(i), lists.end(i)); });
+        [&](std::size_t i) { return std::pair<const int*, const int*>(lists.begin(i), lists.end(i)); }, lists.size() > 0);
 }
 
 } // namespace
@@ -338,6 +343,8 @@ OvmModel parseOvmBinary(std::string_view data, const std::string& name) {
 }
 
 void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
+    static_assert(sizeof(Vec3d) == 3 * sizeof(double) && sizeof(std::array<int, 2>) == 2 * sizeof(int),
+                  "positions, map and edges are written straight from their arrays");
     const std::vector<Vec3d>& vertices = *m.vertices;
     o << std::string_view(kMagic, 8);
     o.le(1, 1);
@@ -363,12 +370,12 @@ void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
     o.le(0, 8);
     o.le(vertices.size(), 4);
     o.le(2, 4);  // double encoding + 3 reserved bytes
-    for (const auto& p : vertices)
-        for (int k = 0; k < 3; ++k) o.leReal(p[k]);
+    o.leArray(vertices.empty() ? nullptr : vertices[0].data(), 3 * vertices.size());
     padding(o, pad);
     topoChunk(
         o, 1, m.edges.size(), [](std::size_t) { return std::size_t(2); },
-        [&](std::size_t i) { return std::pair<const int*, const int*>(m.edges[i].data(), m.edges[i].data() + 2); });
+        [&](std::size_t i) { return std::pair<const int*, const int*>(m.edges[i].data(), m.edges[i].data() + 2); },
+        !m.edges.empty());
     topoChunk(o, 2, m.faces);
     topoChunk(o, 3, m.cells);
     if (params) {
@@ -377,8 +384,7 @@ void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
         o.le(0, 8);
         o.le(u.size(), 4);
         o.le(0, 4);  // property index
-        for (const auto& x : u)
-            for (int k = 0; k < 3; ++k) o.leReal(x[k]);
+        o.leArray(u[0].data(), 3 * u.size());
         padding(o, pad);
     }
     chunkHeader(o, "EOF ", 0);
