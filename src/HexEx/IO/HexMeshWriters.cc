@@ -1,6 +1,6 @@
 /// @file HexMeshWriters.cc
 /// Implementation of the hex mesh writers (.vtu, .vtk, .ovm, .ovmb, .mesh) and of the singular
-/// edge writer. Text is assembled in a string buffer and written in one go.
+/// edge writer. Output is appended to a BlockOutput that hands 1 MiB blocks to the stream.
 
 #include "HexMeshWriters.hh"
 
