@@ -123,7 +123,7 @@ TEST(WriterBytes, Real17IsPrintfFormat) {
     std::uniform_int_distribution<int> exponent(-320, 308);
     for (int i = 0; i < 20000; ++i) xs.push_back(std::ldexp(unit(rng), exponent(rng) / 3) * std::pow(10.0, exponent(rng) / 4));
     for (const double x : xs) {
-        detail::BlockOutput o;
+        detail::BlockOutput o(nullptr, 64);
         o.real17(x);
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.17g", x);

@@ -10,6 +10,7 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -120,6 +121,8 @@ public:
         used_ = 0;
         return r;
     }
+    /// Drops the bytes buffered and not yet written (the buffer is kept for reuse).
+    void clear() { used_ = 0; }
     /// The bytes buffered and not yet written to the sink.
     std::string_view pending() const { return {buf_.data(), used_}; }
 
@@ -156,15 +159,17 @@ void formatItems(BlockOutput& out, std::size_t n, int threads, Format&& format) 
         for (std::size_t i = 0; i < n; ++i) format(out, i);
         return;
     }
-    std::vector<std::string> pieces(static_cast<std::size_t>(threads));
+    // One buffer per thread, reused from round to round (no allocation per piece).
+    std::vector<std::unique_ptr<BlockOutput>> pieces;
+    for (int t = 0; t < threads; ++t) pieces.push_back(std::make_unique<BlockOutput>(nullptr, kPiece * 64));
     for (std::size_t begin = 0; begin < n; begin += kPiece * pieces.size()) {
         const std::size_t end = std::min(n, begin + kPiece * pieces.size());
+        for (const auto& p : pieces) p->clear();
         parallelChunks(end - begin, threads, [&](int k, std::size_t b, std::size_t e) {
-            BlockOutput local(nullptr, kPiece * 64);
+            BlockOutput& local = *pieces[static_cast<std::size_t>(k)];
             for (std::size_t i = begin + b; i < begin + e; ++i) format(local, i);
-            pieces[static_cast<std::size_t>(k)] = local.take();
         });
-        for (auto& p : pieces) out << std::string_view(p);
+        for (const auto& p : pieces) out << p->pending();
     }
 }
 
