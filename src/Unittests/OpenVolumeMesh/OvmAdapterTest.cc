@@ -16,6 +16,7 @@
 #include <OpenVolumeMesh/IO/ovmb_write.hh>
 #include <OpenVolumeMesh/Mesh/HexahedralMesh.hh>
 #include <OpenVolumeMesh/Mesh/PolyhedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/TetrahedralGeometryKernel.hh>
 #include <OpenVolumeMesh/Mesh/TetrahedralMesh.hh>
 
 #include <gtest/gtest.h>
@@ -147,6 +148,15 @@ TEST(OvmAdapter, SphereOvmbReadByOpenVolumeMeshMatchesHexExFile) {
         ASSERT_EQ(out.hexes.size(), 216u);
         HexExTest::expectSameMesh(out, ref);
     }
+}
+
+TEST(OvmAdapter, TetrahedralGeometryKernelReads) {
+    // TetrahedralGeometryKernel: the geometry kernel with the tet-specific helpers.
+    OpenVolumeMesh::TetrahedralGeometryKernel<OvmVec, OpenVolumeMesh::TetrahedralMeshTopologyKernel> m;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file(kOvmDir + "sphere.ovmb", m));
+    HexEx::HexMesh out;
+    HexEx::extractHexMesh(HexEx::OvmTetMesh(m), out);
+    HexExTest::expectSameMesh(out, HexExTest::extracted(HexEx::readHexExFile("Examples/data/sphere.hexex")));
 }
 
 TEST(OvmAdapter, SphereAsciiReadByOpenVolumeMeshMatchesOurReader) {
