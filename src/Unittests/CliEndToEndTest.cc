@@ -432,3 +432,36 @@ TEST_F(CliEndToEndTest, GenerateFromHexMesh) {
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("1 non-hex cells"), std::string::npos) << r.err;
 }
+
+TEST_F(CliEndToEndTest, UntangleAFoldedCylinderInExtractAndAlone) {
+    // The README's before/after case: a valence-5 cylinder whose map is perturbed by 0.8
+    // extracts to 240 hexes of which 24 are inverted; untangling leaves none.
+    RunResult r = run({"generate", "cylinder", "--valence", "5", "--radius", "4", "--height", "3", "--n", "4",
+                       "--m", "3", "-o", path("c.hexex"), "-q"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run({"perturb", path("c.hexex"), "-a", "0.8", "--seed", "3", "-o", path("p.hexex"), "-q"});
+    ASSERT_EQ(r.status, 0) << r.err;
+
+    r = run({"extract", path("p.hexex"), "-o", path("before.vtu"), "--report", path("plain.json"), "-q"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string plain = slurp(path("plain.json"));
+    EXPECT_NE(plain.find("\"inverted_hexes\": 24"), std::string::npos) << plain;
+    EXPECT_EQ(plain.find("\"untangle\""), std::string::npos) << plain;
+
+    r = run({"extract", path("p.hexex"), "-o", path("after.vtu"), "--untangle", "--report", path("u.json")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("untangle: inverted hexes 24 -> 0 of 240"), std::string::npos) << r.out;
+    const std::string json = slurp(path("u.json"));
+    expectReportKeys(json);
+    EXPECT_NE(json.find("\"inverted_before\": 24"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"inverted_after\": 0"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"success\": true"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"inverted_hexes\": 0"), std::string::npos) << json;  // quality after untangling
+
+    // The same from the written mesh with the map's boundary as the surface.
+    r = run({"untangle", path("before.vtu"), "--surface-from", path("p.hexex"), "-o", path("alone.vtu")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("untangle: inverted hexes 24 -> 0 of 240"), std::string::npos) << r.out;
+    r = run({"validate", path("alone.vtu"), "--json"});
+    EXPECT_EQ(r.status, 0) << r.out << r.err;
+}

@@ -156,6 +156,30 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("mean_scaled_jacobian", x.quality.mean_scaled_jacobian);
             w.num("inverted_hexes", x.quality.inverted_hexes);
         }));
+        if (x.untangle) {
+            const UntangleReport& u = *x.untangle;
+            top.raw("untangle", object(2, [&](ObjectWriter& w) {
+                w.num("hexes", u.hexes);
+                w.num("inverted_before", u.inverted_before);
+                w.num("inverted_after", u.inverted_after);
+                w.num("min_scaled_jacobian_before", u.min_scaled_jacobian_before);
+                w.num("mean_scaled_jacobian_before", u.mean_scaled_jacobian_before);
+                w.num("min_scaled_jacobian_after", u.min_scaled_jacobian_after);
+                w.num("mean_scaled_jacobian_after", u.mean_scaled_jacobian_after);
+                w.num("free_vertices", u.free_vertices);
+                w.num("moved_vertices", u.moved_vertices);
+                w.num("max_displacement", u.max_displacement);
+                w.num("mean_displacement", u.mean_displacement);
+                w.num("attempts", static_cast<long>(u.attempts));
+                w.num("rings", static_cast<long>(u.rings));
+                w.num("outer_iterations", static_cast<long>(u.outer_iterations));
+                w.num("lbfgs_iterations", static_cast<long>(u.lbfgs_iterations));
+                w.num("seconds", u.seconds);
+                w.boolean("success", u.success);
+                w.boolean("budget_exhausted", u.budget_exhausted);
+                w.raw("message", jsonQuote(u.message));
+            }));
+        }
         top.raw("timings_s", object(2, [&](ObjectWriter& w) {
             w.num("read", x.read_s);
             w.num("preprocess", t.preprocess);

@@ -24,6 +24,7 @@
 
 #include "../Extraction/ExtractionReport.hh"
 #include "../Mesh/HexMeshQuality.hh"
+#include "../Untangling/Untangler.hh"
 
 #include <string>
 #include <vector>
@@ -37,6 +38,7 @@ struct ReportExtras {
     double total_s = 0;                 ///< wall-clock seconds of the whole run
     QualityStats quality;               ///< quality of the output hexes
     std::vector<std::string> warnings;  ///< more warnings (reader, writer), listed after the report's own
+    const UntangleReport* untangle = nullptr;  ///< the untangling run, if any (key `untangle`, same names as Python's report)
 };
 
 /// Renders @p report and @p extras as a JSON object (indented, ending with a newline).

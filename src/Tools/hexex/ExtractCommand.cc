@@ -326,6 +326,7 @@ int runExtract(const Args& args) {
         HexEx::UntangleOptions uo;
         uo.threads = opt.threads;
         untangle_rep = HexEx::untangleHexMesh(hm, uo, &input_boundary);
+        extras.untangle = &untangle_rep;
         extras.quality = HexEx::computeQuality(hm);
     }
 
