@@ -13,6 +13,7 @@
 #include <cerrno>
 #include <charconv>
 #include <climits>
+#include <cstdint>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -31,6 +32,8 @@ constexpr long long kMaxTets = INT_MAX / 8;
 using detail::quoteToken;
 /// Whitespace as understood by the format.
 inline bool isSpace(char ch) { return detail::isFormatSpace(ch); }
+/// isSpace() with one comparison for the common bytes (every format space is <= ' ').
+inline bool isSpaceFast(char ch) { return static_cast<unsigned char>(ch) <= ' ' && isSpace(ch); }
 
 /// The tokenizer of the text readers with this format's messages for numbers and counts;
 /// every failure becomes an InputError "<name>:<line>: <reason>".
@@ -128,12 +131,16 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
     parallelChunks(static_cast<std::size_t>(k), threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) {
             bool inToken = false;
+            long long nTokens = 0, nBreaks = 0;
             for (std::size_t p = cut[i]; p < cut[i + 1]; ++p) {
-                const bool sp = isSpace(text[p]);
-                if (!sp && !inToken) ++tokens[i];
-                if (text[p] == '\n') ++breaks[i];
+                const char ch = text[p];
+                const bool sp = isSpaceFast(ch);
+                nTokens += !sp && !inToken;
+                nBreaks += ch == '\n';
                 inToken = !sp;
             }
+            tokens[i] = nTokens;
+            breaks[i] = nBreaks;
         }
     });
     std::vector<long long> firstToken(static_cast<std::size_t>(k) + 1, 0), lineAt(static_cast<std::size_t>(k) + 1, firstLine);
@@ -148,39 +155,57 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
     std::vector<char> ok(static_cast<std::size_t>(k), 1);
     parallelChunks(static_cast<std::size_t>(k), threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e && ok[i]; ++i) {
-            long long g = firstToken[i];
+            const long long g = firstToken[i];
             int line = static_cast<int>(lineAt[i]);
             std::size_t p = cut[i];
-            while (ok[i]) {
-                while (p < cut[i + 1] && isSpace(text[p])) {
-                    if (text[p] == '\n') ++line;
+            const std::size_t end = cut[i + 1];
+            auto c = static_cast<std::size_t>(g / kTetTokens);
+            int f = static_cast<int>(g % kTetTokens);
+            const std::size_t partial = f == 0 ? SIZE_MAX : c;  // tet begun by the previous chunk
+            bool good = true;
+            while (good) {
+                while (p < end && isSpaceFast(text[p])) {
+                    line += text[p] == '\n';
                     ++p;
                 }
-                if (p >= cut[i + 1]) break;
+                if (p >= end) break;
                 const std::size_t start = p;
-                while (p < cut[i + 1] && !isSpace(text[p])) ++p;
+                while (p < end && !isSpaceFast(text[p])) ++p;
                 const std::string_view tok = text.substr(start, p - start);
-                const auto c = static_cast<std::size_t>(g / kTetTokens);
-                const int f = static_cast<int>(g % kTetTokens);
-                ++g;
                 if (f < 4) {
                     long long idx = 0;
-                    if (detail::parseInteger(tok, idx) != detail::NumberParse::Ok || idx < 0 || idx >= nv) ok[i] = 0;
-                    cells[c][static_cast<std::size_t>(f)] = static_cast<int>(idx);
+                    good = detail::parseIndex(tok, nv, idx);
+                    auto& cv = cells[c];
+                    cv[static_cast<std::size_t>(f)] = static_cast<int>(idx);
                     if (f == 0) lines[c] = line;
+                    // A repeated vertex (the sequential parser names it) once the tet's
+                    // indices are complete; a tet cut by a chunk boundary is checked afterwards.
+                    if (f == 3 && c != partial)
+                        good = good && cv[0] != cv[1] && cv[0] != cv[2] && cv[0] != cv[3] && cv[1] != cv[2] &&
+                               cv[1] != cv[3] && cv[2] != cv[3];
                 } else {
                     double value = 0;
-                    if (detail::parseReal(tok, value) != detail::NumberParse::Ok || !std::isfinite(value)) ok[i] = 0;
+                    good = detail::parseRealFast(tok, value) == detail::NumberParse::Ok && std::isfinite(value);
                     params[c][static_cast<std::size_t>((f - 4) / 3)][(f - 4) % 3] = value;
                 }
+                if (++f == kTetTokens) {
+                    f = 0;
+                    ++c;
+                }
             }
+            ok[i] = good;
         }
     });
     if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
-    for (const auto& cv : cells)
+    // Tets whose indices straddle a chunk boundary were not checked for repeats above.
+    for (std::size_t i = 1; i < static_cast<std::size_t>(k); ++i) {
+        const auto c = static_cast<std::size_t>(firstToken[i] / kTetTokens);
+        if (c >= cells.size()) continue;
+        const auto& cv = cells[c];
         for (int a = 0; a < 4; ++a)
             for (int b = a + 1; b < 4; ++b)
                 if (cv[static_cast<std::size_t>(a)] == cv[static_cast<std::size_t>(b)]) return false;
+    }
     return true;
 }
 

@@ -69,6 +69,55 @@ inline NumberParse parseReal(std::string_view tok, double& value) {
     return NumberParse::Ok;
 }
 
+/// Parses the whole token @p tok as a double like parseReal(), with a fast path for plain
+/// decimals ("-12.0625": optional sign, a digit, digits, optional fraction, no exponent) whose digits
+/// form an integer m <= 2^53 with at most 22 fraction digits: m and 10^k are then exact
+/// doubles and one IEEE division m / 10^k is correctly rounded, i.e. the same value
+/// std::from_chars gives. Every other token goes through parseReal().
+inline NumberParse parseRealFast(std::string_view tok, double& value) {
+    static constexpr double kPow10[23] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                          1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const char* p = tok.data();
+    const char* const last = p + tok.size();
+    bool negative = false;
+    if (p != last && (*p == '-' || *p == '+')) negative = (*p++ == '-');
+    if (p == last || static_cast<unsigned>(*p) - '0' >= 10) return parseReal(tok, value);  // e.g. ".5", "+-1"
+    unsigned long long m = 0;
+    int digits = 0, fraction = -1;  // fraction: digits after the point (-1: no point)
+    for (; p != last; ++p) {
+        const unsigned d = static_cast<unsigned>(*p) - '0';
+        if (d < 10) {
+            if (++digits > 19) return parseReal(tok, value);  // m stays below 2^64
+            m = 10 * m + d;
+            if (fraction >= 0) ++fraction;
+        } else if (*p == '.' && fraction < 0) {
+            fraction = 0;
+        } else {
+            return parseReal(tok, value);
+        }
+    }
+    if (digits == 0 || fraction == 0 || fraction > 22 || m > (1ULL << 53)) return parseReal(tok, value);
+    const double v = static_cast<double>(m) / kPow10[fraction < 0 ? 0 : fraction];
+    value = negative ? -v : v;
+    return NumberParse::Ok;
+}
+
+/// Parses @p tok as a vertex index in [0, @p bound): digits only (a fast path), anything
+/// else through parseInteger(). False if it is not such an index.
+inline bool parseIndex(std::string_view tok, long long bound, long long& value) {
+    if (tok.empty() || tok.size() > 18) {
+        return parseInteger(tok, value) == NumberParse::Ok && value >= 0 && value < bound;
+    }
+    long long v = 0;
+    for (const char ch : tok) {
+        const unsigned d = static_cast<unsigned>(ch) - '0';
+        if (d >= 10) return parseInteger(tok, value) == NumberParse::Ok && value >= 0 && value < bound;
+        v = 10 * v + d;
+    }
+    value = v;
+    return v < bound;
+}
+
 /// Case-insensitive comparison of a token with a keyword.
 inline bool iequals(std::string_view a, std::string_view b) {
     return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
