@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <sstream>
 #include <string>
@@ -57,9 +58,9 @@ std::string joinTokens(const std::vector<std::string>& t) {
     return s;
 }
 
-std::string errorOf(const std::string& text) {
+std::string errorOf(const std::string& text, int threads = 0) {
     try {
-        readHexExBuffer(text, "big.hexex");
+        readHexExBuffer(text, "big.hexex", nullptr, threads);
     } catch (const InputError& e) {
         return e.what();
     }
@@ -67,8 +68,8 @@ std::string errorOf(const std::string& text) {
     return "";
 }
 
-void expectError(const std::string& text, std::size_t line, const std::string& reason) {
-    const std::string msg = errorOf(text);
+void expectError(const std::string& text, std::size_t line, const std::string& reason, int threads = 0) {
+    const std::string msg = errorOf(text, threads);
     const std::string prefix = "big.hexex:" + std::to_string(line) + ": ";
     EXPECT_EQ(msg.rfind(prefix, 0), 0u) << "message: " << msg << "\nexpected prefix: " << prefix;
     EXPECT_NE(msg.find(reason), std::string::npos) << "message: " << msg << "\nexpected reason: " << reason;
@@ -216,4 +217,44 @@ TEST(HexExFileParallel, MutatedFilesReadAsSequentially) {
         if (seq.rfind("ok", 0) == 0) ++accepted;
     }
     EXPECT_LT(accepted, 30);  // most edits are caught
+}
+
+TEST(HexExFileParallel, RepeatedVertexInTetCutByAChunkBoundary) {
+    // Indices padded to 40 characters so that most chunk cuts (8 chunks on 2 threads, at
+    // (n - begin) * i / 8, moved to the next space) fall among a tet's indices; the tet so
+    // cut gets a repeated vertex of the same width (the file keeps its length, so the cuts
+    // stay where they are) and must be reported as in the sequential parser.
+    auto lines = largeLines();
+    const auto pad = [](const std::string& s) { return std::string(40 - s.size(), '0') + s; };
+    for (std::size_t c = 0; c < largeMesh().mesh.n_cells(); ++c) {
+        auto t = tokens(lines[tetLineIndex(c)]);
+        for (int i = 0; i < 4; ++i) t[static_cast<std::size_t>(i)] = pad(t[static_cast<std::size_t>(i)]);
+        lines[tetLineIndex(c)] = joinTokens(t);
+    }
+    const std::string text = join(lines);
+    expectSameMesh(largeMesh(), readHexExBuffer(text, "big.hexex", nullptr, 2));
+    std::size_t begin = 0;  // end of the tet count token
+    for (std::size_t l = 0; l < tetLineIndex(0); ++l) begin += lines[l].size() + 1;
+    --begin;
+    const std::size_t n = text.size();
+    int cutTets = 0;
+    std::size_t prev = begin;
+    for (std::size_t i = 1; i < 8; ++i) {
+        std::size_t p = std::max(begin + (n - begin) * i / 8, prev);
+        while (p < n && text[p] != ' ' && text[p] != '\n') ++p;
+        prev = p;
+        std::istringstream before(text.substr(begin, p - begin));
+        std::size_t count = 0;
+        for (std::string s; before >> s;) ++count;
+        if (count % 16 == 0 || count % 16 >= 4) continue;  // the cut is not among the indices
+        ++cutTets;
+        const std::size_t c = count / 16;
+        auto mutated = lines;
+        auto t = tokens(mutated[tetLineIndex(c)]);
+        t[3] = t[0];
+        mutated[tetLineIndex(c)] = joinTokens(t);
+        const std::string idx = std::to_string(std::stoll(t[0]));
+        expectError(join(mutated), tetLineIndex(c) + 1, "tet " + std::to_string(c) + " repeats vertex " + idx, 2);
+    }
+    EXPECT_GT(cutTets, 0) << "no chunk cut fell among a tet's indices";
 }
