@@ -68,7 +68,7 @@ public:
     double real(const What& what) {
         const std::string_view tok = token(what);
         double value = 0;
-        const detail::NumberParse r = detail::parseReal(tok, value);
+        const detail::NumberParse r = detail::parseRealFast(tok, value);
         if (r == detail::NumberParse::OutOfRange)
             fail(line(), "number " + quoteToken(tok) + " out of double range for " + what());
         if (r != detail::NumberParse::Ok) fail(line(), "expected a number for " + what() + ", got " + quoteToken(tok));
