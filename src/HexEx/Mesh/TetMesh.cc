@@ -88,9 +88,13 @@ void TetMesh::build_adjacency(int threads) {
                         vc_off_[fv[best].uidx() + 1] - vc_off_[fv[best].uidx()])
                         best = k;
                 int found = -1, n_found = 0;
-                for (int o = vc_off_[fv[best].uidx()]; o < vc_off_[fv[best].uidx() + 1]; ++o) {
+                // The star is sorted and holds c itself: only the tets after c are searched.
+                const int* star = vc_idx_.data();
+                const int o0 = static_cast<int>(std::upper_bound(star + vc_off_[fv[best].uidx()],
+                                                                 star + vc_off_[fv[best].uidx() + 1], static_cast<int>(c)) -
+                                                star);
+                for (int o = o0; o < vc_off_[fv[best].uidx() + 1]; ++o) {
                     const int c2 = vc_idx_[o];
-                    if (c2 <= static_cast<int>(c)) continue;
                     const auto& cv = cells_[static_cast<std::size_t>(c2)];
                     int mask = 0;
                     for (int k = 0; k < 3; ++k)
@@ -126,20 +130,43 @@ void TetMesh::build_adjacency(int threads) {
     }
 
     // Faces.
-    halfface_face_.assign(4 * nc, -1);
-    face_halffaces_.clear();
-    face_halffaces_.reserve(2 * nc + 1);
-    n_boundary_faces_ = 0;
-    for (std::size_t hf = 0; hf < 4 * nc; ++hf) {
-        const int opp = opposite_[hf];
-        if (opp >= 0 && opp < static_cast<int>(hf)) {
-            halfface_face_[hf] = halfface_face_[opp];
-            continue;
+    // A halfface opens a new face unless its opposite comes first; faces are numbered in
+    // halfface order: new faces counted per chunk, numbered after a prefix sum, then the
+    // second halfface of every face takes its number (all three passes in parallel).
+    const std::size_t nhf = 4 * nc;
+    halfface_face_.assign(nhf, -1);
+    const int fchunks = std::max(1, chunks);
+    std::vector<int> newFaces(static_cast<std::size_t>(fchunks) + 1, 0), boundaryFaces(static_cast<std::size_t>(fchunks), 0);
+    parallelChunks(nhf, fchunks, [&](int k, std::size_t b, std::size_t e) {
+        int nNew = 0, nBoundary = 0;
+        for (std::size_t hf = b; hf < e; ++hf) {
+            const int opp = opposite_[hf];
+            nNew += !(opp >= 0 && opp < static_cast<int>(hf));
+            nBoundary += opp < 0;
         }
-        halfface_face_[hf] = static_cast<int>(face_halffaces_.size());
-        face_halffaces_.push_back({static_cast<int>(hf), opp});
-        if (opp < 0) ++n_boundary_faces_;
-    }
+        newFaces[static_cast<std::size_t>(k) + 1] = nNew;
+        boundaryFaces[static_cast<std::size_t>(k)] = nBoundary;
+    });
+    for (std::size_t k = 0; k < static_cast<std::size_t>(fchunks); ++k) newFaces[k + 1] += newFaces[k];
+    face_halffaces_.resize(static_cast<std::size_t>(newFaces.back()));
+    n_boundary_faces_ = 0;
+    for (const int nb : boundaryFaces) n_boundary_faces_ += static_cast<std::size_t>(nb);
+    parallelChunks(nhf, fchunks, [&](int k, std::size_t b, std::size_t e) {
+        int f = newFaces[static_cast<std::size_t>(k)];
+        for (std::size_t hf = b; hf < e; ++hf) {
+            const int opp = opposite_[hf];
+            if (opp >= 0 && opp < static_cast<int>(hf)) continue;
+            halfface_face_[hf] = f;
+            face_halffaces_[static_cast<std::size_t>(f)] = {static_cast<int>(hf), opp};
+            ++f;
+        }
+    });
+    parallelChunks(nhf, fchunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t hf = b; hf < e; ++hf) {
+            const int opp = opposite_[hf];
+            if (opp >= 0 && opp < static_cast<int>(hf)) halfface_face_[hf] = halfface_face_[static_cast<std::size_t>(opp)];
+        }
+    });
 
     // Edges, grouped by smaller endpoint and sorted by the larger one: per vertex the
     // larger neighbours are counted, then (after a prefix sum) written, both in parallel.
