@@ -305,3 +305,31 @@ TEST(TetMesh, PropertiesByNameAndType) {
     auto fresh = m.cell_props().request<double>("mark", 1.5);
     EXPECT_EQ(fresh[CellHandle(3)], 1.5);
 }
+
+TEST(TetMesh, NonManifoldVertexNamedTheSameOnAnyThreadCount) {
+    // A cube of 29,791 vertices (vertex stars checked in chunks on several threads) with a
+    // bow tie of two tets sharing only a new vertex at the end, then also a tet touching the
+    // cube only at vertex 0: the first bad vertex in vertex order is named either way.
+    TetMesh m = generateCube(30, 1).mesh;
+    ASSERT_GE(m.n_vertices(), 20000u);
+    ASSERT_EQ(m.position(VertexHandle(0)), Vec3d(0, 0, 0));
+    const auto add = [&](const Vec3d& p) { return m.add_vertex(p); };
+    const VertexHandle w = add({5, 5, 5});
+    const VertexHandle a = add({6, 5, 5}), b = add({5, 6, 5}), c = add({5, 5, 6});
+    const VertexHandle d = add({4, 5, 5}), e = add({5, 4, 5}), f = add({5, 5, 4});
+    m.add_cell({w, a, b, c});
+    m.add_cell({w, d, e, f});
+    m.build_adjacency(2);
+    const std::string late = "non-manifold vertex " + std::to_string(w.idx()) + ": its 2 tets form more than one connected fan";
+    EXPECT_EQ(m.check_manifold(1), late);
+    EXPECT_EQ(m.check_manifold(2), late);
+    EXPECT_EQ(m.check_manifold(3), late);
+    const VertexHandle g = add({-1, 0, 0}), h = add({0, -1, 0}), k = add({0, 0, -1});
+    m.add_cell({VertexHandle(0), g, h, k});
+    m.build_adjacency(2);
+    const std::string first = m.check_manifold(1);
+    EXPECT_EQ(first.rfind("non-manifold vertex 0: its ", 0), 0u) << first;
+    EXPECT_EQ(m.check_manifold(2), first);
+    EXPECT_EQ(m.check_manifold(3), first);
+    EXPECT_EQ(m.check_manifold(0), first);
+}

@@ -68,7 +68,7 @@ inline void finishTetMesh(ParametrizedTetMesh& pm, const std::string& name, int 
     } catch (const InputError& e) {
         throw InputError(name + ": " + e.what());
     }
-    const std::string manifold = pm.mesh.check_manifold();
+    const std::string manifold = pm.mesh.check_manifold(threads);
     if (!manifold.empty()) throw InputError(name + ": " + manifold);
 }
 

@@ -268,7 +268,7 @@ void TetMesh::build_adjacency(int threads) {
     adjacency_built_ = true;
 }
 
-std::string TetMesh::check_manifold() const {
+std::string TetMesh::check_manifold(int threads) const {
     std::ostringstream os;
     for (std::size_t e = 0; e < edges_.size(); ++e)
         for (int o = ec_off_[e]; o < ec_off_[e + 1]; ++o)
@@ -277,33 +277,45 @@ std::string TetMesh::check_manifold() const {
                    << "): its tets do not form a single fan";
                 return os.str();
             }
-    // Vertex stars must be connected through faces that contain the vertex.
-    std::vector<int> stack, mark(cells_.size(), -1);
-    for (std::size_t v = 0; v < positions_.size(); ++v) {
-        const int first = vc_off_[v], last = vc_off_[v + 1];
-        if (first == last) continue;
-        int reached = 0;
-        stack.assign(1, vc_idx_[first]);
-        mark[vc_idx_[first]] = static_cast<int>(v);
-        while (!stack.empty()) {
-            const int c = stack.back();
-            stack.pop_back();
-            ++reached;
-            for (int j = 0; j < 4; ++j) {
-                if (cells_[c][j].idx() == static_cast<int>(v)) continue;  // face opposite v does not contain it
-                const int opp = opposite_[4 * c + j];
-                if (opp >= 0 && mark[opp / 4] != static_cast<int>(v)) {
-                    mark[opp / 4] = static_cast<int>(v);
-                    stack.push_back(opp / 4);
+    // Vertex stars must be connected through faces that contain the vertex. Vertices in
+    // parallel chunks (each with its own marks); the first bad vertex of the first chunk
+    // that has one is reported, i.e. the first in vertex order, for any thread count.
+    const std::size_t nv = positions_.size();
+    const int chunks = nv < 20000 ? 1 : resolveThreadCount(threads);
+    std::vector<long long> firstBad(static_cast<std::size_t>(std::max(1, chunks)), -1);
+    parallelChunks(nv, chunks, [&](int chunk, std::size_t vb, std::size_t ve) {
+        std::vector<int> stack, mark(cells_.size(), -1);
+        for (std::size_t v = vb; v < ve; ++v) {
+            const int first = vc_off_[v], last = vc_off_[v + 1];
+            if (first == last) continue;
+            int reached = 0;
+            stack.assign(1, vc_idx_[first]);
+            mark[vc_idx_[first]] = static_cast<int>(v);
+            while (!stack.empty()) {
+                const int c = stack.back();
+                stack.pop_back();
+                ++reached;
+                for (int j = 0; j < 4; ++j) {
+                    if (cells_[c][j].idx() == static_cast<int>(v)) continue;  // face opposite v does not contain it
+                    const int opp = opposite_[4 * c + j];
+                    if (opp >= 0 && mark[opp / 4] != static_cast<int>(v)) {
+                        mark[opp / 4] = static_cast<int>(v);
+                        stack.push_back(opp / 4);
+                    }
                 }
             }
+            if (reached != last - first) {
+                firstBad[static_cast<std::size_t>(chunk)] = static_cast<long long>(v);
+                return;
+            }
         }
-        if (reached != last - first) {
-            os << "non-manifold vertex " << v << ": its " << (last - first)
+    });
+    for (const long long v : firstBad)
+        if (v >= 0) {
+            os << "non-manifold vertex " << v << ": its " << (vc_off_[v + 1] - vc_off_[v])
                << " tets form more than one connected fan";
             return os.str();
         }
-    }
     return {};
 }
 

@@ -107,8 +107,10 @@ public:
 
     /// A description of the first manifoldness violation found, empty if the mesh is a
     /// 3-manifold with boundary (every face in at most two tets, every edge link a path or
-    /// cycle, every vertex link a disk or sphere). Requires adjacency.
-    std::string check_manifold() const;
+    /// cycle, every vertex link a disk or sphere). Requires adjacency. The vertex stars are
+    /// checked on @p threads threads (0 = all hardware threads); the result does not
+    /// depend on the thread count.
+    std::string check_manifold(int threads = 1) const;
 
     /// Vertex properties.
     PropertyManager<VertexTag>& vertex_props() { return vprops_; }
