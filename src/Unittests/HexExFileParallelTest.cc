@@ -258,3 +258,24 @@ TEST(HexExFileParallel, RepeatedVertexInTetCutByAChunkBoundary) {
     }
     EXPECT_GT(cutTets, 0) << "no chunk cut fell among a tet's indices";
 }
+
+TEST(HexExFileParallel, ControlBytesAsSequentially) {
+    // \v, \f and \r separate tokens like spaces; other bytes below ' ' (counted by the
+    // parallel pass's exact fallback) are part of a token, which then is malformed.
+    auto lines = largeLines();
+    for (const std::size_t c : {100u, 9000u, 19000u}) {
+        auto t = tokens(lines[tetLineIndex(c)]);
+        lines[tetLineIndex(c)] = t[0] + "\v" + t[1] + "\f" + t[2] + "\r " + joinTokens(std::vector<std::string>(t.begin() + 3, t.end()));
+    }
+    const std::string spaced = join(lines);
+    expectSameMesh(largeMesh(), readHexExBuffer(spaced, "big.hexex", nullptr, 2));
+    for (const char bad : {'\x01', '\x1f', '\x08', '\x0e'}) {
+        auto mutated = lines;
+        auto t = tokens(mutated[tetLineIndex(15000)]);
+        t[5] = t[5] + std::string(1, bad);
+        mutated[tetLineIndex(15000)] = joinTokens(t);
+        const std::string text = join(mutated);
+        EXPECT_EQ(outcomeOf(text, 1), outcomeOf(text, 2)) << "byte " << int(bad);
+        expectError(text, tetLineIndex(15000) + 1, "expected a number for parameter v of corner 0 of tet 15000", 2);
+    }
+}

@@ -130,14 +130,27 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
     std::vector<long long> tokens(static_cast<std::size_t>(k), 0), breaks(static_cast<std::size_t>(k), 0);
     parallelChunks(static_cast<std::size_t>(k), threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) {
-            bool inToken = false;
-            long long nTokens = 0, nBreaks = 0;
-            for (std::size_t p = cut[i]; p < cut[i + 1]; ++p) {
-                const char ch = text[p];
-                const bool sp = isSpaceFast(ch);
-                nTokens += !sp && !inToken;
+            // Branch-free count: a token starts at a byte > ' ' after a byte <= ' ' (every cut
+            // is at a space, so the first byte of a chunk starts no token). Bytes below ' '
+            // that are not format spaces (rare) make the chunk be counted exactly instead.
+            long long nTokens = 0, nBreaks = 0, nOdd = 0;
+            const auto* u = reinterpret_cast<const unsigned char*>(text.data());
+            for (std::size_t p = cut[i] + 1; p < cut[i + 1]; ++p) {
+                const unsigned ch = u[p];
+                nTokens += (ch > ' ') & (u[p - 1] <= ' ');
                 nBreaks += ch == '\n';
-                inToken = !sp;
+                nOdd += (ch < '\t') | (ch - 14u < 18u);  // below ' ' but not one of \t \n \v \f \r
+            }
+            if (cut[i] < cut[i + 1]) nBreaks += text[cut[i]] == '\n';
+            if (nOdd > 0) {
+                bool inToken = false;
+                nTokens = nBreaks = 0;
+                for (std::size_t p = cut[i]; p < cut[i + 1]; ++p) {
+                    const bool sp = isSpace(text[p]);
+                    nTokens += !sp && !inToken;
+                    nBreaks += text[p] == '\n';
+                    inToken = !sp;
+                }
             }
             tokens[i] = nTokens;
             breaks[i] = nBreaks;
