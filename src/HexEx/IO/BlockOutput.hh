@@ -42,6 +42,7 @@ public:
 
     /// Appends raw bytes.
     BlockOutput& operator<<(std::string_view s) {
+        if (s.empty()) return *this;  // an empty view may have a null data(), which memcpy must not get
         if (s.size() > kSlack) {
             if (sink_) {
                 flush();
