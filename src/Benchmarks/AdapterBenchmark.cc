@@ -16,13 +16,15 @@
 /// adjacency (for builtin: TetMesh::build_adjacency() alone); extract_s: the extraction;
 /// write_s: fromHexMesh() into the output structure; total_s: all of them.
 
+#include "../TestSupport/LccTetFixtures.hh"
+
 #include <HexEx/Adapters/CgalLinearCellComplex.hh>
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/HexExTraits.hh>
 
-#include <CGAL/Linear_cell_complex_for_combinatorial_map.h>
-
 #ifdef HEXEX_BENCH_OVM
+#include "../TestSupport/OvmTetFixtures.hh"
+
 #include <HexEx/Adapters/OpenVolumeMesh.hh>
 #include <OpenVolumeMesh/Mesh/HexahedralMesh.hh>
 #include <OpenVolumeMesh/Mesh/TetrahedralMesh.hh>
@@ -51,69 +53,44 @@ double since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// LCC items whose darts carry the parameter of their vertex in their volume's chart.
-struct ParamItems {
-    template <class Refs>
-    struct Dart_wrapper {
-        typedef CGAL::Cell_attribute_with_point<Refs> Vertex_attribute;
-        typedef std::tuple<Vertex_attribute> Attributes;
-        typedef std::array<double, 3> Dart_info;
-    };
-};
-using TetLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3, 3, CGAL::Linear_cell_complex_traits<3>, ParamItems>;
-using HexLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3>;
-
-/// Tets of @p pm as an LCC with shared vertex attributes and the map in the darts.
-void buildLcc(const HexEx::ParametrizedTetMesh& pm, TetLcc& lcc) {
-    HexEx::LccHexOutput<TetLcc> b(lcc);
-    b.clear();
-    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) b.addVertex(pm.mesh.position(HexEx::VertexHandle(int(v))));
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        const std::size_t a = cv[0].uidx(), bb = cv[1].uidx(), c = cv[2].uidx(), d = cv[3].uidx();
-        const auto first = b.addVolume({{a, c, bb}, {a, bb, d}, {bb, c, d}, {c, a, d}});
-        for (auto it = lcc.darts_of_cell<3>(first).begin(); it != lcc.darts_of_cell<3>(first).end(); ++it)
-            for (std::size_t i = 0; i < 4; ++i) {
-                const HexEx::Vec3d p = pm.mesh.position(cv[i]);
-                if (lcc.point(it) == TetLcc::Point(p[0], p[1], p[2])) {
-                    const HexEx::Vec3d u = pm.params[t][i];
-                    lcc.info(it) = {u[0], u[1], u[2]};
-                }
-            }
-    }
-}
+using HexExTestSupport::HexLcc;
+using HexExTestSupport::TetLcc;
 
 #ifdef HEXEX_BENCH_OVM
 using OvmTets = OpenVolumeMesh::GeometricTetrahedralMeshV3d;
 using OvmHexes = OpenVolumeMesh::GeometricHexahedralMeshV3d;
-using OvmVec = OpenVolumeMesh::Geometry::Vec3d;
-
-/// Tets of @p pm in OpenVolumeMesh with the halfface map (the files' convention).
-void buildOvm(const HexEx::ParametrizedTetMesh& pm, OvmTets& m) {
-    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) {
-        const HexEx::Vec3d p = pm.mesh.position(HexEx::VertexHandle(int(v)));
-        m.add_vertex(OvmVec(p[0], p[1], p[2]));
-    }
-    auto prop = m.request_halfface_property<OvmVec>(HexEx::kOvmParametrization);
-    m.set_persistent(prop, true);  // outlives this handle, as after reading a file
-    static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
-        for (const auto& f : kFaces) {
-            std::vector<OpenVolumeMesh::VertexHandle> vs = {OpenVolumeMesh::VertexHandle(cv[f[0]].idx()),
-                                                            OpenVolumeMesh::VertexHandle(cv[f[1]].idx()),
-                                                            OpenVolumeMesh::VertexHandle(cv[f[2]].idx())};
-            OpenVolumeMesh::HalfFaceHandle hf = m.find_halfface(vs);
-            if (!hf.is_valid()) hf = m.halfface_handle(m.add_face(vs), 0);
-            const HexEx::Vec3d u = pm.params[t][std::size_t(f[3])];
-            prop[hf] = OvmVec(u[0], u[1], u[2]);
-            hfs.push_back(hf);
-        }
-        m.add_cell(hfs);
-    }
-}
 #endif
+
+/// Times of one extraction through the mesh-kernel traits (see the file comment).
+struct Timings {
+    double view = 0;     ///< constructing the input view (the adapter's scan)
+    double copy = 0;     ///< toParametrizedTetMesh(), adjacency included
+    double extract = 0;  ///< extractHexMesh() on the built-in kernel
+    double write = 0;    ///< fromHexMesh() into the output structure
+    double total = 0;    ///< all of them
+};
+
+/// Runs view -> copy -> extraction -> write-back: @p makeView returns the input view,
+/// @p out receives the hex mesh through the output traits.
+template <class MakeView, class Output>
+Timings timeThroughTraits(MakeView makeView, Output& out) {
+    Timings r;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto in = makeView();
+    r.view = since(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
+    r.copy = since(t1);
+    const auto t2 = std::chrono::steady_clock::now();
+    HexEx::HexMesh hm;
+    HexEx::extractHexMesh(copyPm, hm);
+    r.extract = since(t2);
+    const auto t3 = std::chrono::steady_clock::now();
+    HexEx::fromHexMesh(hm, out);
+    r.write = since(t3);
+    r.total = since(t0);
+    return r;
+}
 
 } // namespace
 
@@ -136,18 +113,18 @@ int main(int argc, char** argv) {
         std::cerr << "unknown case " << c << "\n";
         return 2;
     }
-    double view = 0, copy = 0, extract = 0, write = 0, total = 0;
+    Timings r;
     std::size_t hexes = 0;
     if (path == "builtin") {
         // copy_s: the adjacency, which the traits path builds inside its copy.
         auto t0 = std::chrono::steady_clock::now();
         pm.mesh.build_adjacency();
-        copy = since(t0);
+        r.copy = since(t0);
         HexEx::HexMesh hm;
         auto t1 = std::chrono::steady_clock::now();
         HexEx::extractHexMesh(pm, hm);
-        extract = since(t1);
-        total = since(t0);
+        r.extract = since(t1);
+        r.total = since(t0);
         hexes = hm.hexes.size();
     } else if (path == "arrays") {
         std::vector<HexEx::Vec3d> positions(pm.mesh.n_vertices());
@@ -157,62 +134,25 @@ int main(int argc, char** argv) {
             for (int i = 0; i < 4; ++i) tets[t][std::size_t(i)] = pm.mesh.cell_vertex(HexEx::CellHandle(int(t)), i).idx();
         std::vector<std::array<HexEx::Vec3d, 4>> params = pm.params;
         pm = HexEx::ParametrizedTetMesh();
-        const HexEx::TetArraysView in{&positions, &tets, &params};
         HexEx::HexArrays out;
-        auto t0 = std::chrono::steady_clock::now();
-        HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
-        copy = since(t0);
-        auto t1 = std::chrono::steady_clock::now();
-        HexEx::HexMesh hm;
-        HexEx::extractHexMesh(copyPm, hm);
-        extract = since(t1);
-        auto t2 = std::chrono::steady_clock::now();
-        HexEx::fromHexMesh(hm, out);
-        write = since(t2);
-        total = since(t0);
+        r = timeThroughTraits([&] { return HexEx::TetArraysView{&positions, &tets, &params}; }, out);
         hexes = out.hexes.size();
     } else if (path == "lcc") {
         TetLcc lcc;
-        buildLcc(pm, lcc);
+        HexExTestSupport::buildTetLcc(pm, lcc);
         pm = HexEx::ParametrizedTetMesh();
         HexLcc outLcc;
         HexEx::LccHexOutput<HexLcc> out(outLcc);
-        auto t0 = std::chrono::steady_clock::now();
-        const HexEx::LccTetMesh in(lcc);
-        view = since(t0);
-        auto t1 = std::chrono::steady_clock::now();
-        HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
-        copy = since(t1);
-        auto t2 = std::chrono::steady_clock::now();
-        HexEx::HexMesh hm;
-        HexEx::extractHexMesh(copyPm, hm);
-        extract = since(t2);
-        auto t3 = std::chrono::steady_clock::now();
-        HexEx::fromHexMesh(hm, out);
-        write = since(t3);
-        total = since(t0);
+        r = timeThroughTraits([&] { return HexEx::LccTetMesh(lcc); }, out);
         hexes = out.cellDarts().size();
 #ifdef HEXEX_BENCH_OVM
     } else if (path == "ovm") {
         OvmTets tm;
-        buildOvm(pm, tm);
+        HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
         OvmHexes hexMesh;
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
-        auto t0 = std::chrono::steady_clock::now();
-        const HexEx::OvmTetMesh in(tm);
-        view = since(t0);
-        auto t1 = std::chrono::steady_clock::now();
-        HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
-        copy = since(t1);
-        auto t2 = std::chrono::steady_clock::now();
-        HexEx::HexMesh hm;
-        HexEx::extractHexMesh(copyPm, hm);
-        extract = since(t2);
-        auto t3 = std::chrono::steady_clock::now();
-        HexEx::fromHexMesh(hm, out);
-        write = since(t3);
-        total = since(t0);
+        r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
         hexes = out.cells().size();
 #endif
     } else {
@@ -220,6 +160,6 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::printf("case=%s path=%s hexes=%zu view_s=%.3f copy_s=%.3f extract_s=%.3f write_s=%.3f total_s=%.3f peak_mb=%.0f\n",
-                c.c_str(), path.c_str(), hexes, view, copy, extract, write, total, peakMb());
+                c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb());
     return 0;
 }

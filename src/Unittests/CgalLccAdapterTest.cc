@@ -3,6 +3,7 @@
 // sew3_same_facets, extract the same mesh as the .hexex path; the output LCC is valid, its
 // volumes are combinatorial hexahedra, 3-sewn along every interior face.
 
+#include "../TestSupport/LccTetFixtures.hh"
 #include "TestMeshChecks.hh"
 
 #include <HexEx/Adapters/CgalLinearCellComplex.hh>
@@ -23,67 +24,20 @@
 
 namespace {
 
-/// LCC items whose darts carry the parameter of their vertex in their volume's chart.
-struct ParamItems {
-    template <class Refs>
-    struct Dart_wrapper {
-        typedef CGAL::Cell_attribute_with_point<Refs> Vertex_attribute;
-        typedef std::tuple<Vertex_attribute> Attributes;
-        typedef std::array<double, 3> Dart_info;
-    };
-};
+using HexExTestSupport::HexLcc;
+using HexExTestSupport::TetLcc;
 
-using TetLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3, 3, CGAL::Linear_cell_complex_traits<3>, ParamItems>;
-using HexLcc = CGAL::Linear_cell_complex_for_combinatorial_map<3>;
-
-/// Sets the info of every dart of the volume of @p d to the parameter of its vertex.
-void setVolumeParams(TetLcc& lcc, TetLcc::Dart_handle d, const std::array<HexEx::Vec3d, 4>& corners,
-                     const std::array<TetLcc::Point, 4>& points) {
-    for (auto it = lcc.darts_of_cell<3>(d).begin(); it != lcc.darts_of_cell<3>(d).end(); ++it)
-        for (std::size_t i = 0; i < 4; ++i)
-            if (lcc.point(it) == points[i]) lcc.info(it) = {corners[i][0], corners[i][1], corners[i][2]};
-}
-
-/// A tet LCC with one vertex attribute per vertex of @p pm (same order) and one volume per
-/// tet (same order, first dart at corner 0), 3-sewn; the map in the darts.
+/// The tets of @p pm as a 3-sewn LCC with the map in the darts (LccTetFixtures.hh).
 TetLcc toLcc(const HexEx::ParametrizedTetMesh& pm) {
     TetLcc lcc;
-    HexEx::LccHexOutput<TetLcc> b(lcc);
-    b.clear();
-    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) b.addVertex(pm.mesh.position(HexEx::VertexHandle(int(v))));
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        const std::size_t a = cv[0].uidx(), bb = cv[1].uidx(), c = cv[2].uidx(), d = cv[3].uidx();
-        b.addVolume({{a, c, bb}, {a, bb, d}, {bb, c, d}, {c, a, d}});  // outward loops
-    }
-    EXPECT_EQ(b.unsewnFaces(), 0u);
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        std::array<TetLcc::Point, 4> pts;
-        for (std::size_t i = 0; i < 4; ++i) {
-            const HexEx::Vec3d p = pm.mesh.position(cv[i]);
-            pts[i] = TetLcc::Point(p[0], p[1], p[2]);
-        }
-        setVolumeParams(lcc, b.cellDarts()[t], pm.params[t], pts);
-    }
+    EXPECT_EQ(HexExTestSupport::buildTetLcc(pm, lcc), 0u);
     return lcc;
 }
 
-/// The same tets built with CGAL's own make_tetrahedron() (four new vertex attributes per
-/// tet) and joined by sew3_same_facets() (which merges them): vertex order differs.
+/// The same tets built with CGAL's make_tetrahedron() and sew3_same_facets().
 TetLcc toLccWithCgalOps(const HexEx::ParametrizedTetMesh& pm) {
     TetLcc lcc;
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        std::array<TetLcc::Point, 4> pts;
-        for (std::size_t i = 0; i < 4; ++i) {
-            const HexEx::Vec3d p = pm.mesh.position(cv[i]);
-            pts[i] = TetLcc::Point(p[0], p[1], p[2]);
-        }
-        const auto d = lcc.make_tetrahedron(pts[0], pts[1], pts[2], pts[3]);
-        setVolumeParams(lcc, d, pm.params[t], pts);
-    }
-    lcc.sew3_same_facets();
+    HexExTestSupport::buildTetLccWithCgalOps(pm, lcc);
     return lcc;
 }
 

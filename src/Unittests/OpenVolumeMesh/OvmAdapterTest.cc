@@ -3,6 +3,7 @@
 // built in memory, extract the same mesh as the .hexex path bit for bit; the output
 // passes OpenVolumeMesh's topology checks and writes and reads back with its writers.
 
+#include "../../TestSupport/OvmTetFixtures.hh"
 #include "../TestMeshChecks.hh"
 
 #include <HexEx/Adapters/OpenVolumeMesh.hh>
@@ -56,36 +57,11 @@ std::string capture(const std::string& cmd) {
     return out;
 }
 
-/// A tet mesh in the files' convention: tet a b c d becomes the cell of halffaces a b c,
-/// a c d, a d b, b d c, each carrying the parameter of the opposite corner (d, b, c, a).
+/// The tets of @p pm in OpenVolumeMesh with the halfface map (OvmTetFixtures.hh).
 template <class Mesh>
 Mesh toOvm(const HexEx::ParametrizedTetMesh& pm) {
     Mesh m;
-    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) {
-        const HexEx::Vec3d p = pm.mesh.position(HexEx::VertexHandle(int(v)));
-        m.add_vertex(OvmVec(p[0], p[1], p[2]));
-    }
-    auto prop = m.template request_halfface_property<OvmVec>(HexEx::kOvmParametrization);
-    m.set_persistent(prop, true);
-    static const int kFaces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
-    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
-        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
-        std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
-        for (const auto& f : kFaces) {
-            std::vector<OpenVolumeMesh::VertexHandle> vs = {OpenVolumeMesh::VertexHandle(cv[f[0]].idx()),
-                                                            OpenVolumeMesh::VertexHandle(cv[f[1]].idx()),
-                                                            OpenVolumeMesh::VertexHandle(cv[f[2]].idx())};
-            OpenVolumeMesh::HalfFaceHandle hf = m.find_halfface(vs);
-            if (!hf.is_valid()) hf = m.halfface_handle(m.add_face(vs), 0);
-            hfs.push_back(hf);
-        }
-        const auto ch = m.add_cell(hfs, true);
-        EXPECT_TRUE(ch.is_valid()) << "tet " << t;
-        for (int k = 0; k < 4; ++k) {
-            const HexEx::Vec3d u = pm.params[t][std::size_t(kFaces[k][3])];
-            prop[hfs[std::size_t(k)]] = OvmVec(u[0], u[1], u[2]);
-        }
-    }
+    EXPECT_EQ(HexExTestSupport::buildOvmTets(pm, m), 0u);
     return m;
 }
 
