@@ -32,6 +32,7 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
     d["moved_vertices"] = r.moved_vertices;
     d["max_displacement"] = r.max_displacement;
     d["mean_displacement"] = r.mean_displacement;
+    d["released_feature_vertices"] = r.released_feature_vertices;
     d["attempts"] = r.attempts;
     d["rings"] = r.rings;
     d["outer_iterations"] = r.outer_iterations;

@@ -170,6 +170,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
                 w.num("moved_vertices", u.moved_vertices);
                 w.num("max_displacement", u.max_displacement);
                 w.num("mean_displacement", u.mean_displacement);
+                w.num("released_feature_vertices", u.released_feature_vertices);
                 w.num("attempts", static_cast<long>(u.attempts));
                 w.num("rings", static_cast<long>(u.rings));
                 w.num("outer_iterations", static_cast<long>(u.outer_iterations));

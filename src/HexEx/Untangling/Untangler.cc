@@ -70,6 +70,14 @@ std::array<Vec3d, 2> tangentFrame(const Vec3d& n) {
     return {{t1, n % t1}};
 }
 
+/// Vertex kinds (how a vertex may move); kUnknown until classified.
+constexpr char kUnknown = -1;
+constexpr char kInterior = 0;  ///< anywhere (3 variables)
+constexpr char kSurface = 1;   ///< on the boundary surface (2 variables)
+constexpr char kCurve = 2;     ///< on a feature curve (1 variable)
+constexpr char kCorner = 3;    ///< fixed: on a feature corner
+constexpr char kFixed = 4;     ///< fixed: fixed boundary, no surface, or vertex of a polyhedron
+
 /// How one free vertex moves: position = base + scale * sum_k basis[k] q[k].
 struct FreeVertex {
     int vertex = -1;
@@ -82,21 +90,16 @@ struct FreeVertex {
 /// One minimisation problem: the free vertices of a neighbourhood and the hexes they touch.
 class Problem {
 public:
-    Problem(HexMesh& mesh, const UntangleOptions& opt, const SurfaceProjection* proj, double tol,
-            const std::vector<char>& role, const std::vector<int>& region_vertices, const VertexHexes& vh,
-            const std::vector<double>& h)
+    Problem(HexMesh& mesh, const UntangleOptions& opt, const SurfaceProjection* proj, const std::vector<char>& kind,
+            const std::vector<int>& region_vertices, const VertexHexes& vh, const std::vector<double>& h)
         : mesh_(mesh), opt_(opt), proj_(proj), h_(h), threads_(resolveThreadCount(opt.threads)) {
         slot_.assign(mesh.vertices.size(), -1);
         for (const int v : region_vertices) {
-            const char r = role[static_cast<std::size_t>(v)];
-            if (r == 2 || (r == 1 && (opt.boundary == BoundaryMode::Fixed || !proj_))) continue;
+            const char k = kind[static_cast<std::size_t>(v)];
+            if (k < kInterior || k > kCurve) continue;
             FreeVertex fv;
             fv.vertex = v;
-            if (r == 1) {
-                const Vec3d p = mesh.vertices[static_cast<std::size_t>(v)];
-                if (proj_->distanceToCorner(p) <= tol) continue;  // feature corner: fixed
-                fv.kind = proj_->hasFeatures() && (proj_->closestOnFeature(p) - p).norm() <= tol ? 2 : 1;
-            }
+            fv.kind = k;
             slot_[static_cast<std::size_t>(v)] = static_cast<int>(free_.size());
             free_.push_back(fv);
         }
@@ -257,6 +260,7 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, doub
     lo.relative_decrease = 1e-8;
     int steps_untangled = 0, steps_without_progress = 0;
     long fewest_inverted = std::numeric_limits<long>::max();
+    double best_dmin = -std::numeric_limits<double>::infinity();
     for (int it = 0; it < opt.max_outer_iterations; ++it) {
         q.setZero(pb.variables());
         const double e_prev = pb.energy(q, eps, nullptr, nullptr);
@@ -273,8 +277,12 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, doub
         if (inverted == 0 && (decrease < 1e-3 || ++steps_untangled >= 5)) break;
         // Give up on this neighbourhood when the count of inverted hexes has not dropped
         // for 8 steps (a larger one may have room; a fixed boundary may admit no solution).
-        if (inverted < fewest_inverted) {
-            fewest_inverted = inverted;
+        // Progress: fewer inverted hexes, or a worst corner that rose by 2 % of its size
+        // (with a folded neighbourhood the count often stays while the fold unwinds).
+        const bool dmin_rose = dmin > best_dmin + 0.02 * std::abs(best_dmin);
+        best_dmin = std::max(best_dmin, dmin);
+        if (inverted < fewest_inverted || dmin_rose) {
+            fewest_inverted = std::min(fewest_inverted, inverted);
             steps_without_progress = 0;
         } else if (++steps_without_progress >= 8) {
             break;
@@ -352,6 +360,24 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     }
     const double tol = options.on_surface_tolerance * diag;
     const VertexHexes vh(nv, mesh.hexes);
+    // Vertex kinds, classified when a vertex first enters a neighbourhood.
+    std::vector<char> kind(nv, kUnknown);
+    auto classify = [&](int v) {
+        char& k = kind[static_cast<std::size_t>(v)];
+        if (k != kUnknown) return k;
+        const char r = role[static_cast<std::size_t>(v)];
+        if (r == 0) {
+            k = kInterior;
+        } else if (r == 2 || !proj) {
+            k = kFixed;
+        } else {
+            const Vec3d p = mesh.vertices[static_cast<std::size_t>(v)];
+            if (proj->distanceToCorner(p) <= tol) k = kCorner;
+            else if (proj->hasFeatures() && (proj->closestOnFeature(p) - p).norm() <= tol) k = kCurve;
+            else k = kSurface;
+        }
+        return k;
+    };
 
     int rings = std::max(0, options.rings);
     double budget = std::max(options.min_work, options.work_per_hex * static_cast<double>(mesh.hexes.size()));
@@ -359,6 +385,7 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     // worse than it started (possible when boundary vertices are projected back) is undone.
     std::vector<Vec3d> best = mesh.vertices;
     std::size_t best_inverted = inverted.size();
+    int ring_attempts = 0;
     for (;;) {
         // Region: vertices within `rings` hex rings of the inverted hexes.
         std::vector<char> in_v(nv, 0), in_h(mesh.hexes.size(), 0);
@@ -389,8 +416,11 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
         const bool whole = frontier.empty();
         std::vector<int> region;
         for (std::size_t v = 0; v < nv; ++v)
-            if (in_v[v]) region.push_back(static_cast<int>(v));
-        Problem pb(mesh, options, proj.get(), tol, role, region, vh, h);
+            if (in_v[v]) {
+                region.push_back(static_cast<int>(v));
+                classify(static_cast<int>(v));
+            }
+        Problem pb(mesh, options, proj.get(), kind, region, vh, h);
         ++rep.attempts;
         rep.rings = whole ? -1 : rings;
         rep.free_vertices = static_cast<long>(pb.freeVertices());
@@ -407,7 +437,23 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
             for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
                 if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));
         }
-        if (inverted.empty() || whole || rep.attempts >= 3 || budget <= 0) break;
+        if (inverted.empty() || budget <= 0) break;
+        // Feature vertices of hexes that stay inverted may be what blocks them (e.g. a hex
+        // with two edges along one straight feature curve at a vertex can only have a zero
+        // Jacobian there): let them slide on the surface and retry with the same rings.
+        long released = 0;
+        if (options.release_features)
+            for (const int c : inverted)
+                for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) {
+                    char& k = kind[static_cast<std::size_t>(v)];
+                    if (k == kCurve || k == kCorner) {
+                        k = kSurface;
+                        ++released;
+                    }
+                }
+        rep.released_feature_vertices += released;
+        if (released > 0) continue;
+        if (whole || ++ring_attempts >= 3) break;
         rings = rings == 0 ? 1 : 4 * rings;
     }
 
@@ -424,29 +470,39 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     rep.mean_displacement = rep.moved_vertices > 0 ? sum_d / static_cast<double>(rep.moved_vertices) / diag : 0;
     finish();
     if (!inverted.empty()) {
-        long stuck = 0, at_polyhedra = 0;
+        long stuck = 0, at_polyhedra = 0, on_features = 0, on_fixed_boundary = 0;
         for (const int c : inverted) {
-            bool any_free = false, poly = false;
+            bool any_free = false, poly = false, feature = false, fixed = false;
             for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) {
-                const char r = role[static_cast<std::size_t>(v)];
-                any_free = any_free || r == 0 || (r == 1 && options.boundary == BoundaryMode::Surface);
-                poly = poly || r == 2;
+                const char k = classify(v);
+                any_free = any_free || k == kInterior || k == kSurface || k == kCurve;
+                poly = poly || role[static_cast<std::size_t>(v)] == 2;
+                feature = feature || k == kCurve || k == kCorner;
+                fixed = fixed || (k == kFixed && role[static_cast<std::size_t>(v)] == 1);
             }
             stuck += !any_free;
             at_polyhedra += any_free && poly;
+            on_features += any_free && !poly && feature;
+            on_fixed_boundary += any_free && !poly && !feature && fixed;
         }
         rep.message = std::to_string(inverted.size()) + " hexes remain inverted";
         if (stuck > 0)
             rep.message += "; " + std::to_string(stuck) + " of them have no vertex that may move (all on a fixed "
-                           "boundary or on polyhedra), so the boundary itself forces the inversion";
+                           "boundary, feature corners or polyhedra), so the boundary itself forces the inversion";
         if (at_polyhedra > 0)
             rep.message += "; " + std::to_string(at_polyhedra) + " of them share vertices with non-hex cells "
                            "(polyhedra), whose vertices do not move";
-        if (stuck == 0 && at_polyhedra == 0)
-            rep.message += ": the minimisation found no foldover-free placement within its limits (" +
+        if (on_features > 0)
+            rep.message += "; " + std::to_string(on_features) + " of them have vertices held on feature curves or "
+                           "corners (features were not released)";
+        if (on_fixed_boundary > 0)
+            rep.message += "; " + std::to_string(on_fixed_boundary) + " of them have vertices on the fixed boundary, "
+                           "which may not admit a foldover-free placement";
+        if (stuck + at_polyhedra + on_features + on_fixed_boundary < static_cast<long>(inverted.size()))
+            rep.message += "; for " + std::to_string(static_cast<long>(inverted.size()) - stuck - at_polyhedra - on_features - on_fixed_boundary) +
+                           " of them the minimisation found no foldover-free placement within its limits (" +
                            std::to_string(rep.outer_iterations) + " regularisation steps" +
-                           (rep.budget_exhausted ? ", work budget used up" : "") + ")" +
-                           (options.boundary == BoundaryMode::Fixed ? "; the fixed boundary may not admit one" : "");
+                           (rep.budget_exhausted ? ", work budget used up" : "") + ")";
     }
     return rep;
 }

@@ -45,6 +45,9 @@ struct UntangleOptions {
     int max_lbfgs_iterations = 300;///< L-BFGS iterations per regularisation step
     double feature_angle_deg = 40; ///< surface edges with a larger normal angle are feature curves
     double theta = 1.0 / 128;      ///< weight of the volume term g in the energy (shape term f: 1 - theta)
+    /// If hexes stay inverted with vertices on feature curves or corners, let those vertices
+    /// slide on the surface and retry (the feature is rounded there); false keeps every feature.
+    bool release_features = true;
     double on_surface_tolerance = 1e-6;  ///< relative to the bbox diagonal: vertices this close to a feature curve/corner are on it
     /// Work budget: at most max(min_work, work_per_hex * hexes) evaluations of one hex's
     /// energy in total (all attempts); bounds the cost when no untangled placement is found.
@@ -65,6 +68,7 @@ struct UntangleReport {
     long moved_vertices = 0;           ///< vertices whose position changed
     double max_displacement = 0;       ///< largest displacement / bbox diagonal
     double mean_displacement = 0;      ///< mean displacement of the moved vertices / bbox diagonal
+    long released_feature_vertices = 0; ///< feature curve/corner vertices let slide on the surface (UntangleOptions::release_features)
     int attempts = 0;                  ///< neighbourhood sizes tried (rings 2, 4, 8, ...)
     int rings = 0;                     ///< ring count of the last attempt (-1: whole mesh)
     int outer_iterations = 0;          ///< regularisation steps in total
