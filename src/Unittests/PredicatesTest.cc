@@ -1,11 +1,14 @@
 // Exact predicates, point classification (including flat tets) and the symbolic perturbation.
 
+#include <HexEx/Extraction/FacePlanes.hh>
 #include <HexEx/Extraction/TetSoS.hh>
 #include <HexEx/Predicates/ExactPredicates.hh>
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <random>
+#include <vector>
 
 using namespace HexEx;
 
@@ -129,4 +132,59 @@ TEST(SymbolicPerturbation, DegenerateTetOwnsNothing) {
     const TetSoS T(flat);
     EXPECT_EQ(T.vol, 0);
     EXPECT_FALSE(T.contains(T.sides(Vec3d(1, 1, 0)), 0, 2, 4));
+}
+
+// FacePlanes::side() (one cross product per face, a filter per point) and TetSoS::sides()
+// (with its shortcut at corners) must give exactly TetSoS::side(): on small integer tets
+// (many exact zeros, flat tets, repeated corners), on nearly flat tets whose filter fails,
+// and on large random coordinates, at every grid point of the box and at the corners.
+TEST(SymbolicPerturbation, FacePlanesAndSidesAgreeWithSide) {
+    std::mt19937 rng(23);
+    std::uniform_int_distribution<int> small(-3, 3);
+    std::uniform_real_distribution<double> real(-40.0, 40.0);
+    long checked = 0, zeros = 0;
+    auto check = [&](const std::array<Vec3d, 4>& corners) {
+        const TetSoS T(corners);
+        const FacePlanes F(T);
+        std::vector<Vec3d> points(corners.begin(), corners.end());
+        Vec3d lo = corners[0], hi = corners[0];
+        for (const Vec3d& c : corners) {
+            lo.minimize(c);
+            hi.maximize(c);
+        }
+        for (int x = static_cast<int>(std::floor(lo[0])) - 1; x <= static_cast<int>(std::ceil(hi[0])) + 1; ++x)
+            for (int y = static_cast<int>(std::floor(lo[1])) - 1; y <= static_cast<int>(std::ceil(hi[1])) + 1; ++y)
+                for (int z = static_cast<int>(std::floor(lo[2])) - 1; z <= static_cast<int>(std::ceil(hi[2])) + 1; ++z)
+                    points.emplace_back(x, y, z);
+        for (const Vec3d& q : points) {
+            const std::array<int, 4> all = T.sides(q);
+            for (int j = 0; j < 4; ++j) {
+                const int want = T.side(j, q);
+                ASSERT_EQ(F.side(j, q), want) << "face " << j << " at " << q;
+                ASSERT_EQ(all[static_cast<std::size_t>(j)], want) << "face " << j << " at " << q;
+                ++checked;
+                zeros += want == 0;
+            }
+        }
+    };
+    for (int n = 0; n < 400; ++n) {  // small integers: exact zeros, flat tets, repeated corners
+        std::array<Vec3d, 4> c;
+        for (auto& v : c) v = Vec3d(small(rng), small(rng), small(rng));
+        check(c);
+    }
+    for (int n = 0; n < 200; ++n) {  // nearly flat: the fourth corner a hair off the plane of the others
+        std::array<Vec3d, 4> c;
+        for (int k = 0; k < 3; ++k) c[static_cast<std::size_t>(k)] = Vec3d(small(rng), small(rng), small(rng));
+        const double t = std::uniform_real_distribution<double>(0.1, 0.9)(rng);
+        c[3] = c[0] + t * (c[1] - c[0]) + (1 - t) * (c[2] - c[0]);
+        c[3][n % 3] = std::nextafter(c[3][n % 3], n % 2 ? 1e9 : -1e9);
+        check(c);
+    }
+    for (int n = 0; n < 50; ++n) {  // general position, larger boxes
+        std::array<Vec3d, 4> c;
+        for (auto& v : c) v = Vec3d(real(rng) / 4, real(rng) / 4, real(rng) / 4);
+        check(c);
+    }
+    EXPECT_GT(checked, 100000);
+    EXPECT_GT(zeros, 10000);
 }

@@ -2,6 +2,7 @@
 
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
+#include "FacePlanes.hh"
 #include "FoldCancellation.hh"
 
 #include <algorithm>
@@ -125,6 +126,7 @@ void markBoxFlags(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di, boo
     const int ob = ra == 0 ? 1 : 0, oc = ra == 2 ? 1 : 2;          // the other two axes
     const int n = di.dims[ra];
     std::vector<int> sign(static_cast<std::size_t>(n) * 4);
+    const FacePlanes F(T);
     for (int ib = 0; ib < di.dims[ob]; ++ib)
         for (int ic = 0; ic < di.dims[oc]; ++ic) {
             int p[3];
@@ -132,7 +134,7 @@ void markBoxFlags(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di, boo
             p[oc] = ic;
             auto side = [&](int j, int k) {
                 p[ra] = k;
-                return T.side(j, Vec3d(di.lo[0] + p[0], di.lo[1] + p[1], di.lo[2] + p[2]));
+                return F.side(j, Vec3d(di.lo[0] + p[0], di.lo[1] + p[1], di.lo[2] + p[2]));
             };
             bool lineOutside = false;
             for (int j = 0; j < 4 && !lineOutside; ++j) {
@@ -190,12 +192,52 @@ std::array<std::uint8_t, 48> frameOctants() {
     return octant;
 }
 
+/// Frames (bit fi of allFrames()) for which the symbolic side of a face through the point
+/// (TetSoS::sosSide() with oz = 0) is +1 (`pos`) or -1 (`neg`), per sign pattern of the
+/// face's gradient: index (g0 + 1) * 9 + (g1 + 1) * 3 + (g2 + 1).
+struct FrameSideMasks {
+    std::uint64_t pos[27] = {};  ///< frames on the positive side
+    std::uint64_t neg[27] = {};  ///< frames on the negative side
+};
+
+const FrameSideMasks& frameSideMasks() {
+    static const FrameSideMasks masks = [] {
+        FrameSideMasks m;
+        const auto& frames = allFrames();
+        for (int code = 0; code < 27; ++code) {
+            const int g[3] = {code / 9 - 1, (code / 3) % 3 - 1, code % 3 - 1};
+            for (std::size_t fi = 0; fi < frames.size(); ++fi) {
+                int s = 0;
+                for (AxisDir d : frames[fi])
+                    if (s == 0) s = dirSign(d) * g[dirAxis(d)];
+                if (s > 0) m.pos[code] |= std::uint64_t(1) << fi;
+                if (s < 0) m.neg[code] |= std::uint64_t(1) << fi;
+            }
+        }
+        return m;
+    }();
+    return masks;
+}
+
+/// The frames of a point with face signs @p oz (none opposite to the volume's sign) that
+/// tet @p T contains: bit fi set iff T.contains(oz, frames[fi]...).
+std::uint64_t containedFrames(const TetSoS& T, const std::array<int, 4>& oz) {
+    const FrameSideMasks& m = frameSideMasks();
+    std::uint64_t mask = (std::uint64_t(1) << 48) - 1;
+    for (int j = 0; j < 4; ++j) {
+        if (oz[static_cast<std::size_t>(j)] != 0) continue;
+        const int code = (T.g[j][0] + 1) * 9 + (T.g[j][1] + 1) * 3 + (T.g[j][2] + 1);
+        mask &= T.vol > 0 ? m.pos[code] : m.neg[code];
+    }
+    return mask;
+}
+
 /// The darts of tet @p T at grid point (x, y, zc), box index @p l of the dense index @p di
 /// (if any; its flags, if any, decide membership and implicit octants): calls emit(z, frame
 /// index) in frame order and returns their number. With kCountOnly, a point strictly inside
 /// is counted without going through its frames (6 frames per octant not implicit).
 template <bool kCountOnly, class Emit>
-std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, int y, int zc, std::size_t l,
+std::uint32_t pointDarts(const TetSoS& T, const FacePlanes& F, const DartSet::DenseIndex* di, int x, int y, int zc, std::size_t l,
                          const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit) {
     std::array<int, 4> oz;
     bool interior = true;
@@ -214,7 +256,7 @@ std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, 
     } else {
         const Vec3d zp(x, y, zc);
         for (int j = 0; j < 4; ++j) {
-            oz[static_cast<std::size_t>(j)] = T.side(j, zp);
+            oz[static_cast<std::size_t>(j)] = F.side(j, zp);
             if (oz[static_cast<std::size_t>(j)] == -T.vol) return 0;  // outside
             if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
         }
@@ -226,11 +268,12 @@ std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, 
     }
     const auto& frames = allFrames();
     const Vec3i z(x, y, zc);
+    // The frames the tet contains there: one mask per face through z (no per-frame tests).
+    const std::uint64_t inside = interior ? ~std::uint64_t(0) : containedFrames(T, oz);
     std::uint32_t n = 0;
     for (std::size_t fi = 0; fi < frames.size(); ++fi) {
-        const auto& f = frames[fi];
         if ((implicitOctants >> frameOctant[fi]) & 1) continue;
-        if (!interior && !T.contains(oz, f[0], f[1], f[2])) continue;
+        if (!((inside >> fi) & 1)) continue;
         emit(z, fi);
         ++n;
     }
@@ -244,6 +287,7 @@ std::uint32_t pointDarts(const TetSoS& T, const DartSet::DenseIndex* di, int x, 
 template <bool kCountOnly, class Emit, class Row>
 std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di,
                               const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit, Row&& row) {
+    const FacePlanes F(T);
     std::uint32_t counted = 0;
     std::size_t l = 0;  // local index of (x, y, zc) in the box
     for (int x = box.lo[0]; x <= box.hi[0]; ++x)
@@ -251,7 +295,7 @@ std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::Dens
             row(counted);
             for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
                 if (di) di->offset.push_back(counted);
-                counted += pointDarts<kCountOnly>(T, di, x, y, zc, l, frameOctant, emit);
+                counted += pointDarts<kCountOnly>(T, F, di, x, y, zc, l, frameOctant, emit);
             }
         }
     if (di) di->offset.push_back(counted);
@@ -272,6 +316,7 @@ void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::De
         d.d = frames[fi];
         d.sign = sign;
     };
+    const FacePlanes F(T);
     std::size_t l = 0;
     for (int x = box.lo[0]; x <= box.hi[0]; ++x)
         for (int y = box.lo[1]; y <= box.hi[1]; ++y)
@@ -285,7 +330,7 @@ void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::De
                         continue;
                     }
                 }
-                pointDarts<false>(T, di, x, y, zc, l, frameOctant, emit);
+                pointDarts<false>(T, F, di, x, y, zc, l, frameOctant, emit);
             }
 }
 } // namespace

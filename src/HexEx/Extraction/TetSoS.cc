@@ -52,7 +52,16 @@ int TetSoS::side(int j, const Vec3d& x) const {
     return orient3d(q[0], q[1], q[2], q[3]);
 }
 
-std::array<int, 4> TetSoS::sides(const Vec3d& z) const { return {side(0, z), side(1, z), side(2, z), side(3, z)}; }
+std::array<int, 4> TetSoS::sides(const Vec3d& z) const {
+    // At a corner k every face but k passes through z, and o_k(p_k) is the volume itself.
+    for (int k = 0; k < 4; ++k)
+        if (z == p[k]) {
+            std::array<int, 4> oz{0, 0, 0, 0};
+            oz[static_cast<std::size_t>(k)] = vol;
+            return oz;
+        }
+    return {side(0, z), side(1, z), side(2, z), side(3, z)};
+}
 
 int TetSoS::gradCrossSign(int a, int b, AxisDir dir) const {
     int c = -1, d = -1;
