@@ -5,6 +5,7 @@
 /// mostly with points on grid lines, where the floating-point filter cannot decide.
 
 #include "../Predicates/ExactPredicates.hh"
+#include "ParametrizedTriMesh.hh"
 
 #include <cmath>
 
@@ -20,20 +21,20 @@ inline bool smallDyadicCoord(double x) {
 } // namespace detail
 
 /// Sign of (b - a) x (c - a) in the (u, v) plane for c = (cu, cv): the same value as
-/// orient2dAxis(a, b, Vec3d(cu, cv, 0), 2), whose steps it repeats inline (floating-point
+/// orient2dAxis((a, 0), (b, 0), (cu, cv, 0), 2), whose steps it repeats inline (floating-point
 /// filter, exact zero by equal coordinates, exact determinant of small dyadic inputs);
 /// only the remaining cases make the call.
-inline int orient2dUV(const Vec3d& a, const Vec3d& b, double cu, double cv) {
+inline int orient2dUV(const Vec2d& a, const Vec2d& b, double cu, double cv) {
     const double t1 = (b[0] - a[0]) * (cv - a[1]), t2 = (b[1] - a[1]) * (cu - a[0]);
     const double det = t1 - t2, bound = 5e-16 * (std::fabs(t1) + std::fabs(t2));
     if (det > bound) return 1;
     if (-det > bound) return -1;
     if ((b[0] == a[0] || cv == a[1]) && (b[1] == a[1] || cu == a[0])) return 0;
     using detail::smallDyadicCoord;
-    if (smallDyadicCoord(a[0]) && smallDyadicCoord(a[1]) && smallDyadicCoord(a[2]) && smallDyadicCoord(b[0]) &&
-        smallDyadicCoord(b[1]) && smallDyadicCoord(b[2]) && smallDyadicCoord(cu) && smallDyadicCoord(cv))
+    if (smallDyadicCoord(a[0]) && smallDyadicCoord(a[1]) && smallDyadicCoord(b[0]) && smallDyadicCoord(b[1]) &&
+        smallDyadicCoord(cu) && smallDyadicCoord(cv))
         return (det > 0) - (det < 0);
-    return orient2dAxis(a, b, Vec3d(cu, cv, 0), 2);
+    return orient2dAxis(Vec3d(a[0], a[1], 0), Vec3d(b[0], b[1], 0), Vec3d(cu, cv, 0), 2);
 }
 
 } // namespace HexEx

@@ -17,7 +17,7 @@ int frameOrientation(const TriDart& d) {
 Vec3d pointOf(const ParametrizedTriMesh& mesh, const TriParams& params, const TriDart& d) {
     const auto& p = params[static_cast<std::size_t>(d.tri)];
     const auto& t = mesh.triangles[static_cast<std::size_t>(d.tri)];
-    auto area = [](const Vec3d& a, const Vec3d& b, double x, double y) {
+    auto area = [](const Vec2d& a, const Vec2d& b, double x, double y) {
         return (b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]);
     };
     const double total = area(p[0], p[1], p[2][0], p[2][1]);
@@ -30,11 +30,10 @@ Vec3d pointOf(const ParametrizedTriMesh& mesh, const TriParams& params, const Tr
 }
 } // namespace
 
-QuadAssemblyStats assembleQuadMesh(const GMap<2>& g, const std::vector<TriDart>& darts, const QuadOrbitLabels& labels,
+QuadAssemblyStats assembleQuadMesh(const QuadLinks& L, const TriDartVector& darts, const QuadOrbitLabels& labels,
                                    const ParametrizedTriMesh& mesh, const TriParams& params, QuadMesh& out, int threads) {
     QuadAssemblyStats st;
     out = QuadMesh();
-    const auto& L = g.links();
     const std::size_t n = L.size();
     const int chunks = std::max(1, threads);
     const std::size_t nv = static_cast<std::size_t>(labels.n_vertices);

@@ -17,12 +17,12 @@ struct QuadAssemblyStats {
     long boundary_edges = 0;  ///< edge orbits with a free alpha_2
 };
 
-/// Builds @p out from the map @p g whose dart k is @p darts[k] (same indexing) and its
+/// Builds @p out from the map with links @p links (every dart alive) whose dart k is @p darts[k] (same indexing) and its
 /// orbit @p labels. Vertex positions: the point of the vertex orbit's smallest dart,
 /// mapped from its triangle's parameter image to 3D by barycentric coordinates. Faces are
 /// numbered by their smallest dart and oriented counter-clockwise in parameter space.
 /// Runs on @p threads threads; the result does not depend on their number.
-QuadAssemblyStats assembleQuadMesh(const GMap<2>& g, const std::vector<TriDart>& darts, const QuadOrbitLabels& labels,
+QuadAssemblyStats assembleQuadMesh(const QuadLinks& links, const TriDartVector& darts, const QuadOrbitLabels& labels,
                                    const ParametrizedTriMesh& mesh, const TriParams& params, QuadMesh& out,
                                    int threads = 1);
 

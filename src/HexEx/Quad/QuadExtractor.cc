@@ -34,7 +34,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     const TriAdjacency adj = buildTriAdjacency(in, threads);
     const std::size_t nf = in.triangles.size();
     const int chunks = std::max(1, threads);
-    TriParams params(nf);
+    TriParams params(nf);  // not zeroed: the parallel loop below writes every corner
     {
         // Per chunk, its first bad parameter; the lowest chunk's is the sequential first.
         std::vector<std::string> errors(static_cast<std::size_t>(chunks));
@@ -48,7 +48,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
                                                               " is larger than 2^28 in magnitude";
                         return;
                     }
-                    params[f][k] = Vec3d(p[0], p[1], 0);
+                    params[f][k] = p;
                 }
         });
         for (const std::string& e : errors)
@@ -61,7 +61,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     rep.input.triangles = static_cast<long>(nf);
     // Counts and signed areas per triangle in parallel; the two area sums stay sequential
     // (in triangle order), so they are rounded exactly as before for any thread count.
-    std::vector<double> triArea(nf);
+    std::vector<double, DefaultInitAllocator<double>> triArea(nf);  // every entry written below
     std::vector<std::array<long, 3>> counts(static_cast<std::size_t>(chunks), {0, 0, 0});
     parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
         auto& cnt = counts[static_cast<std::size_t>(c)];
@@ -109,7 +109,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     // Connections.
     t0 = Clock::now();
     TriTraceStats ts;
-    std::vector<std::array<int, 3>> links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
+    TriLinks links = traceTriConnections(in, adj, params, tr, sign, ds, threads, &ts);
     rep.darts.asymmetric_links = ts.asymmetric;
     rep.timings_s.connect = since(t0);
 
@@ -151,8 +151,8 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     for (int c = 0; c < chunks; ++c) base[static_cast<std::size_t>(c) + 1] += base[static_cast<std::size_t>(c)];
     const bool allAlive = alive.empty() || base.back() == n;  // then the numbering is the identity
     std::vector<long> unconnected(static_cast<std::size_t>(chunks), 0);
-    std::vector<TriDart> kept;
-    std::vector<std::array<int, 3>> glinks;
+    TriDartVector kept;
+    QuadLinks glinks;
     if (allAlive) {
         // Unconnected links (-1) become free ones, in place.
         kept = std::move(ds.darts);
@@ -168,7 +168,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
         glinks = std::move(links);
     } else {
         const std::size_t nk = base.back();
-        std::vector<int> newIndex(n, -1);
+        std::vector<int, DefaultInitAllocator<int>> newIndex(n);  // read only where written (alive darts)
         kept.resize(nk);
         parallelChunks(n, chunks, [&](int c, std::size_t b, std::size_t e) {
             std::size_t k = base[static_cast<std::size_t>(c)];
@@ -200,15 +200,13 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
         links.shrink_to_fit();
     }
     for (long u : unconnected) rep.output.unconnected_darts += u;
-    GMap<2> g;
-    g.assign_links(std::move(glinks));
     rep.timings_s.postprocess = since(t0);
 
     // Validation and assembly.
     t0 = Clock::now();
     QuadOrbitLabels labels;
-    rep.validation = validateQuadGMap(g, &labels, threads);
-    const QuadAssemblyStats as = assembleQuadMesh(g, kept, labels, in, params, out, threads);
+    rep.validation = validateQuadLinks(glinks, &labels, threads);
+    const QuadAssemblyStats as = assembleQuadMesh(glinks, kept, labels, in, params, out, threads);
     rep.output.vertices = static_cast<long>(out.vertices.size());
     rep.output.quads = as.quads;
     rep.output.non_quad_faces = as.polygons;

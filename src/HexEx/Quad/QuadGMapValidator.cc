@@ -9,16 +9,29 @@
 namespace HexEx {
 
 namespace {
+/// The links of a map and which darts are alive: a GMap<2>'s, or an extractor's links
+/// array (no GMap: every dart alive).
+struct LinkView {
+    const std::array<int, 3>* L;  ///< links per dart
+    std::size_t n;                ///< darts
+    const GMap<2>* g;             ///< the map (null: every dart alive)
+    /// True if @p d is a dart of the map and alive.
+    bool alive(int d) const {
+        return d >= 0 && static_cast<std::size_t>(d) < n && (!g || g->is_alive(DartHandle(d)));
+    }
+};
+
 /// Labels the orbits of two links (bits a and b) by search, smallest dart first; works for
 /// any map, involutive or not. @p first receives the smallest dart of each orbit.
-std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& size, std::vector<int>& first) {
-    const auto& L = g.links();
-    const std::size_t n = L.size();
-    std::vector<int> label(n, -1), stack;
+QuadLabelVector labelPair(const LinkView& g, int a, int b, std::vector<int>& size, std::vector<int>& first) {
+    const std::array<int, 3>* L = g.L;
+    const std::size_t n = g.n;
+    QuadLabelVector label(n, -1);
+    std::vector<int> stack;
     size.clear();
     first.clear();
     for (std::size_t s = 0; s < n; ++s) {
-        if (!g.is_alive(DartHandle(static_cast<int>(s))) || label[s] >= 0) continue;
+        if (!g.alive(static_cast<int>(s)) || label[s] >= 0) continue;
         const int l = static_cast<int>(size.size());
         size.push_back(0);
         first.push_back(static_cast<int>(s));
@@ -30,7 +43,7 @@ std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& siz
             ++size[static_cast<std::size_t>(l)];
             for (int i : {a, b}) {
                 const int e = L[static_cast<std::size_t>(d)][static_cast<std::size_t>(i)];
-                if (e < 0 || static_cast<std::size_t>(e) >= n || !g.is_alive(DartHandle(e)) || label[static_cast<std::size_t>(e)] >= 0)
+                if (!g.alive(e) || label[static_cast<std::size_t>(e)] >= 0)
                     continue;
                 label[static_cast<std::size_t>(e)] = l;
                 stack.push_back(e);
@@ -42,7 +55,8 @@ std::vector<int> labelPair(const GMap<2>& g, int a, int b, std::vector<int>& siz
 
 /// Labels, sizes and smallest darts of the orbits of one pair of involutions.
 struct PairLabels {
-    std::vector<int> label, size, first;
+    QuadLabelVector label;          ///< orbit per dart
+    std::vector<int> size, first;   ///< per orbit: darts, smallest dart
 };
 
 /// The generator pairs of the face, vertex and edge orbits.
@@ -54,10 +68,11 @@ constexpr int kPairs[3][2] = {{0, 1}, {1, 2}, {0, 2}};
 /// at the first smaller dart, started only where both neighbours are larger), then each
 /// chunk numbers its marked darts in dart order from its offset, and pass 2 walks each
 /// orbit once from its smallest dart and writes its label (orbits are disjoint, so the
-/// writes are too).
-void labelInvolutionOrbits(const GMap<2>& g, int threads, PairLabels out[3]) {
-    const auto& L = g.links();
-    const std::size_t n = L.size();
+/// writes are too). The label arrays are not zeroed: pass 1 writes -1 for erased darts,
+/// pass 2 every alive dart's label.
+void labelInvolutionOrbits(const LinkView& g, int threads, PairLabels out[3]) {
+    const std::array<int, 3>* L = g.L;
+    const std::size_t n = g.n;
     // Visits the orbit of d under pair q (d itself excluded), alternating the generators,
     // in both directions of a chain; stops early when visit() returns false.
     auto walk = [&](int q, int d, auto&& visit) {
@@ -73,14 +88,19 @@ void labelInvolutionOrbits(const GMap<2>& g, int threads, PairLabels out[3]) {
             }
         }
     };
-    std::vector<unsigned char> roots(n, 0);  // bit q: smallest dart of its pair-q orbit
+    std::vector<unsigned char, DefaultInitAllocator<unsigned char>> roots(n);  // bit q: smallest dart of its pair-q orbit
+    for (int q = 0; q < 3; ++q) out[q].label.resize(n);
     const int chunks = std::max(1, threads);
     std::vector<std::array<int, 3>> count(static_cast<std::size_t>(chunks), {0, 0, 0});
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
         auto& cnt = count[static_cast<std::size_t>(c)];
         for (std::size_t s = bgn; s < end; ++s) {
             const int d = static_cast<int>(s);
-            if (!g.is_alive(DartHandle(d))) continue;
+            if (!g.alive(d)) {
+                roots[s] = 0;
+                for (int q = 0; q < 3; ++q) out[q].label[s] = -1;
+                continue;
+            }
             unsigned char bits = 0;
             for (int q = 0; q < 3; ++q) {
                 bool smallest = L[s][static_cast<std::size_t>(kPairs[q][0])] >= d && L[s][static_cast<std::size_t>(kPairs[q][1])] >= d;
@@ -101,7 +121,6 @@ void labelInvolutionOrbits(const GMap<2>& g, int threads, PairLabels out[3]) {
         const std::size_t orbits = static_cast<std::size_t>(base.back()[q]);
         out[q].size.assign(orbits, 0);
         out[q].first.assign(orbits, 0);
-        out[q].label.assign(n, -1);
     }
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
         std::array<int, 3> l = base[static_cast<std::size_t>(c)];
@@ -135,10 +154,12 @@ std::string QuadGMapValidation::summary() const {
     return os.str();
 }
 
-QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, int threads) {
-    const auto& L = g.links();
-    const std::size_t n = L.size();
-    auto alive = [&](int d) { return d >= 0 && static_cast<std::size_t>(d) < n && g.is_alive(DartHandle(d)); };
+namespace {
+/// validateQuadGMap() and validateQuadLinks() on a LinkView.
+QuadGMapValidation validateView(const LinkView& g, QuadOrbitLabels* labels, int threads) {
+    const std::array<int, 3>* L = g.L;
+    const std::size_t n = g.n;
+    auto alive = [&](int d) { return g.alive(d); };
     const int chunks = std::max(1, threads);
     std::vector<QuadGMapValidation> parts(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
@@ -185,7 +206,7 @@ QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, i
             P[q].label = labelPair(g, kPairs[q][0], kPairs[q][1], P[q].size, P[q].first);
         }
     }
-    const std::vector<int>& face = P[0].label;
+    const QuadLabelVector& face = P[0].label;
     const std::vector<int>& fsize = P[0].size;
     std::vector<long> eq3(static_cast<std::size_t>(chunks), 0);
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
@@ -205,6 +226,15 @@ QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, i
         labels->edge_first = std::move(P[2].first);
     }
     return v;
+}
+} // namespace
+
+QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels, int threads) {
+    return validateView(LinkView{g.links().data(), g.links().size(), &g}, labels, threads);
+}
+
+QuadGMapValidation validateQuadLinks(const QuadLinks& links, QuadOrbitLabels* labels, int threads) {
+    return validateView(LinkView{links.data(), links.size(), nullptr}, labels, threads);
 }
 
 } // namespace HexEx

@@ -4,7 +4,10 @@
 /// involutions, closed faces, edges connected as a whole (the 2D form of equation 1) and
 /// quad faces (equation 3); the 3D-only equations (2, 4-6) have no 2D counterpart.
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../GMap/GMap.hh"
+
+#include <array>
 
 #include <string>
 #include <vector>
@@ -25,13 +28,20 @@ struct QuadGMapValidation {
     std::string summary() const;
 };
 
+/// An int array that resize() does not zero (filled by parallel passes).
+using QuadLabelVector = std::vector<int, DefaultInitAllocator<int>>;
+
+/// The links of a 2D map as the extractor builds it, alpha_0 .. alpha_2 per dart (every
+/// dart alive, a free link is the dart itself), sized without zeroing.
+using QuadLinks = std::vector<std::array<int, 3>, DefaultInitAllocator<std::array<int, 3>>>;
+
 /// Orbit labels of a GMap<2>, numbered 0.. in order of their smallest dart (-1 for erased
 /// darts). An orbit is the set of darts reachable by the two involutions (for a map whose
 /// links are not involutions: reachable from the smallest dart not yet labelled).
 struct QuadOrbitLabels {
-    std::vector<int> face;    ///< <alpha_0, alpha_1> orbit per dart
-    std::vector<int> vertex;  ///< <alpha_1, alpha_2> orbit per dart
-    std::vector<int> edge;    ///< <alpha_0, alpha_2> orbit per dart
+    QuadLabelVector face;    ///< <alpha_0, alpha_1> orbit per dart
+    QuadLabelVector vertex;  ///< <alpha_1, alpha_2> orbit per dart
+    QuadLabelVector edge;    ///< <alpha_0, alpha_2> orbit per dart
     std::vector<int> face_first;    ///< smallest dart of each face orbit
     std::vector<int> vertex_first;  ///< smallest dart of each vertex orbit
     std::vector<int> edge_first;    ///< smallest dart of each edge orbit
@@ -44,5 +54,9 @@ struct QuadOrbitLabels {
 /// @p threads > 1 the checks and, when every link is an involution, the orbit labelling
 /// run in parallel; the result does not depend on @p threads.
 QuadGMapValidation validateQuadGMap(const GMap<2>& g, QuadOrbitLabels* labels = nullptr, int threads = 1);
+
+/// validateQuadGMap() for the map whose links are @p links, every dart alive (what the
+/// extractor builds): the same checks and labels, without a GMap.
+QuadGMapValidation validateQuadLinks(const QuadLinks& links, QuadOrbitLabels* labels = nullptr, int threads = 1);
 
 } // namespace HexEx

@@ -132,15 +132,13 @@ void applyTriParameterNoise(ParametrizedTriMesh& m, double a, unsigned seed) {
 void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPerturbStats* stats) {
     if (!(a >= 0) || !std::isfinite(a)) throw std::invalid_argument("perturbation amplitude must be finite and >= 0");
     const TriAdjacency adj = buildTriAdjacency(m);
-    TriParams params(m.triangles.size());
-    for (std::size_t f = 0; f < m.triangles.size(); ++f)
-        for (int k = 0; k < 3; ++k) params[f][k] = Vec3d(m.params[f][k][0], m.params[f][k][1], 0);
+    TriParams params(m.params.begin(), m.params.end());
     const TriTransitions tr = computeTriTransitions(m, adj, params, nullptr, 1);
     const std::vector<int> holonomy = vertexHolonomy(m, adj, tr);
     TriPerturbStats st;
     std::mt19937 rng(seed);
     std::vector<int> star;
-    std::vector<GridTransform> toChart;
+    std::vector<PlanarTransform> toChart;
     auto cornerOf = [&](int f, int v) {
         const auto& t = m.triangles[static_cast<std::size_t>(f)];
         return t[0] == v ? 0 : t[1] == v ? 1 : 2;
@@ -151,7 +149,7 @@ void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPe
         if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
         ++st.vertices;
         star.assign(1, adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])]);
-        toChart.assign(1, GridTransform());
+        toChart.assign(1, PlanarTransform());
         bool free[2] = {true, true}, boundary = false;
         for (std::size_t q = 0; q < star.size(); ++q) {
             const int f = star[q];
@@ -163,12 +161,12 @@ void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPe
                 if (o < 0) {
                     // Boundary edge at v: an axis in which both ends agree on an integer stays fixed.
                     boundary = true;
-                    const Vec3d& pa = params[static_cast<std::size_t>(f)][(j + 1) % 3];
-                    const Vec3d& pb = params[static_cast<std::size_t>(f)][(j + 2) % 3];
+                    const Vec2d& pa = params[static_cast<std::size_t>(f)][(j + 1) % 3];
+                    const Vec2d& pb = params[static_cast<std::size_t>(f)][(j + 2) % 3];
                     for (int c = 0; c < 2; ++c)
                         if (pa[c] == pb[c] && pa[c] == std::round(pa[c])) {
                             // Axis c of this chart is axis R^-1(c) of the reference chart.
-                            const AxisDir ref = toChart[q].R.inverse().apply(makeDir(c, 1));
+                            const AxisDir ref = toChart[q].inverse().applyDir(makeDir(c, 1));
                             free[dirAxis(ref)] = false;
                         }
                     continue;
@@ -176,16 +174,16 @@ void perturbTriParameters(ParametrizedTriMesh& m, double a, unsigned seed, TriPe
                 const int g = o / 3;
                 if (std::find(star.begin(), star.end(), g) != star.end()) continue;
                 star.push_back(g);
-                toChart.push_back(tr.halfedge[h] * toChart[q]);
+                toChart.push_back(tr.at(h) * toChart[q]);
             }
         }
         if (boundary) ++st.boundary_vertices;
         if (!boundary && holonomy[vi] > 0) free[0] = free[1] = false;  // cone
-        const Vec3d d(free[0] ? dx : 0.0, free[1] ? dy : 0.0, 0.0);
+        const Vec2d d(free[0] ? dx : 0.0, free[1] ? dy : 0.0);
         if (!free[0] && !free[1]) ++st.fixed_vertices;
         if (d[0] != 0 || d[1] != 0) ++st.moved_vertices;
         for (std::size_t q = 0; q < star.size(); ++q) {
-            const Vec3d r = toChart[q].R.apply(d);
+            const Vec2d r = toChart[q].rotate(d);
             Vec2d& p = m.params[static_cast<std::size_t>(star[q])][cornerOf(star[q], v)];
             p = Vec2d(p[0] + r[0], p[1] + r[1]);
         }

@@ -15,7 +15,7 @@ namespace HexEx {
 
 namespace {
 /// Sign of (b - a) x d for an axis direction d: exact (a comparison of two coordinates).
-int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
+int crossEdgeDir(const Vec2d& a, const Vec2d& b, AxisDir d) {
     auto sgn = [](double lo, double hi) { return lo < hi ? 1 : (lo > hi ? -1 : 0); };
     switch (d) {
         case 0: return sgn(b[1], a[1]);  // d = +u: -(b_v - a_v)
@@ -29,12 +29,11 @@ int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
 auto dartKey(int x, int y, AxisDir d1, AxisDir d2) { return std::make_tuple(y, x, d1, d2); }
 } // namespace
 
-bool triangleOwnsDart(const std::array<Vec3d, 3>& p, int sign, int x, int y, AxisDir d1, AxisDir d2) {
-    const Vec3d z(x, y, 0);
+bool triangleOwnsDart(const std::array<Vec2d, 3>& p, int sign, int x, int y, AxisDir d1, AxisDir d2) {
     for (int i = 0; i < 3; ++i) {
-        const Vec3d& a = p[(i + 1) % 3];
-        const Vec3d& b = p[(i + 2) % 3];
-        int o = sign * orient2dAxis(a, b, z, 2);
+        const Vec2d& a = p[(i + 1) % 3];
+        const Vec2d& b = p[(i + 2) % 3];
+        int o = sign * orient2dUV(a, b, x, y);
         if (o == 0) o = sign * crossEdgeDir(a, b, d1);
         if (o == 0) o = sign * crossEdgeDir(a, b, d2);
         if (o <= 0) return false;
@@ -91,7 +90,7 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
     if (!(points <= max_points))
         throw InputError("parameter map too large: the triangles' parameter images span " + std::to_string(points) +
                          " grid points (limit " + std::to_string(max_points) + ")");
-    std::vector<std::vector<TriDart>> parts(static_cast<std::size_t>(chunks));
+    std::vector<TriDartVector> parts(static_cast<std::size_t>(chunks));
     std::vector<std::vector<int>> counts(static_cast<std::size_t>(chunks));
     parallelChunks(nf, chunks, [&](int k, std::size_t fb, std::size_t fe) {
         auto& out = parts[static_cast<std::size_t>(k)];
@@ -161,7 +160,8 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
     for (const auto& part : parts) total += part.size();
     if (total > static_cast<std::size_t>(INT32_MAX / 2)) throw InputError("parameter map too large: too many darts");
     // Offsets and the concatenation, each chunk copying its own part.
-    ds.offset.assign(nf + 1, 0);
+    ds.offset.resize(nf + 1);  // every entry is written below, by the chunk of its triangle
+    ds.offset[0] = 0;
     std::vector<std::size_t> first(static_cast<std::size_t>(chunks) + 1, 0);
     for (int k = 0; k < chunks; ++k)
         first[static_cast<std::size_t>(k) + 1] = first[static_cast<std::size_t>(k)] + parts[static_cast<std::size_t>(k)].size();
@@ -183,7 +183,7 @@ TriDartSet extractTriDarts(const TriParams& params, const std::vector<signed cha
         const auto e = k > 0 ? b + static_cast<std::ptrdiff_t>(part.size()) : b + static_cast<std::ptrdiff_t>(n0);
         for (auto d = b; d != e; ++d)
             if (d->sign < 0) ++anti[static_cast<std::size_t>(k)];
-        std::vector<TriDart>().swap(part);
+        TriDartVector().swap(part);
     });
     for (long a : anti) ds.anti += a;
     return ds;

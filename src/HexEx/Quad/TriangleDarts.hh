@@ -15,25 +15,30 @@
 namespace HexEx {
 
 /// One dart: triangle, grid point (in the triangle's chart), frame and sign.
+/// No default member values: arrays of darts are sized without a zeroing pass
+/// (TriDartVector) and filled in parallel.
 struct TriDart {
-    int tri = 0;             ///< owning triangle
-    int x = 0;               ///< grid point, first coordinate
-    int y = 0;               ///< grid point, second coordinate
-    AxisDir d1 = 0;          ///< edge direction (0..3: +u, -u, +v, -v)
-    AxisDir d2 = 0;          ///< face side, orthogonal to d1
-    signed char sign = 1;    ///< +1 regular (proper triangle), -1 anti (flipped triangle)
+    int tri;           ///< owning triangle
+    int x;             ///< grid point, first coordinate
+    int y;             ///< grid point, second coordinate
+    AxisDir d1;        ///< edge direction (0..3: +u, -u, +v, -v)
+    AxisDir d2;        ///< face side, orthogonal to d1
+    signed char sign;  ///< +1 regular (proper triangle), -1 anti (flipped triangle)
 };
+
+/// An array of darts that resize() does not zero (see DefaultInitAllocator).
+using TriDartVector = std::vector<TriDart, DefaultInitAllocator<TriDart>>;
 
 /// The darts of all triangles, sorted by triangle, then grid point (v, then u), then frame.
 struct TriDartSet {
-    std::vector<TriDart> darts;  ///< all darts
-    std::vector<int> offset;     ///< darts of triangle f: [offset[f], offset[f+1])
+    TriDartVector darts;                                 ///< all darts
+    std::vector<int, DefaultInitAllocator<int>> offset;  ///< darts of triangle f: [offset[f], offset[f+1])
     long anti = 0;               ///< anti darts
 };
 
 /// True if the closed parameter triangle @p p (orientation @p sign, +1 or -1) contains
 /// z + e d1 + e^2 d2 for infinitesimal e > 0. Exact.
-bool triangleOwnsDart(const std::array<Vec3d, 3>& p, int sign, int x, int y, AxisDir d1, AxisDir d2);
+bool triangleOwnsDart(const std::array<Vec2d, 3>& p, int sign, int x, int y, AxisDir d1, AxisDir d2);
 
 /// Extracts the darts of every non-degenerate triangle (in parallel; the output does not
 /// depend on @p threads). Throws InputError if the triangles' parameter bounding boxes

@@ -2,15 +2,21 @@
 
 #include "../Core/Error.hh"
 #include "../Core/Parallel.hh"
-#include "../Grid/PlanarRotation.hh"
-#include "../Predicates/ExactPredicates.hh"
 #include "../Preprocessing/Sanitization.hh"
+#include "PlanarOrientation.hh"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace HexEx {
+
+PlanarTransform TriTransitions::at(std::size_t h) const {
+    if (is_identity(h)) return PlanarTransform();
+    const auto it = std::lower_bound(seam.begin(), seam.end(), static_cast<int>(h));
+    return seam_transform[static_cast<std::size_t>(it - seam.begin())];
+}
 
 namespace {
 /// Corner of triangle @p f at vertex @p v (-1 if none).
@@ -22,7 +28,7 @@ int cornerOf(const ParametrizedTriMesh& m, int f, int v) {
 /// Best planar rotation for edge vectors e (source chart) and g (target chart): the k
 /// maximizing g . (R_k e). Sets @p ambiguous when e or g is (nearly) zero or two rotations
 /// score (nearly) the same.
-int fitQuarterTurns(const Vec3d& e, const Vec3d& g, bool& ambiguous) {
+int fitQuarterTurns(const Vec2d& e, const Vec2d& g, bool& ambiguous) {
     // R_k e for k = 0..3: (x, y), (-y, x), (-x, -y), (y, -x).
     const double s[4] = {g[0] * e[0] + g[1] * e[1], -g[0] * e[1] + g[1] * e[0], -(g[0] * e[0] + g[1] * e[1]),
                          g[0] * e[1] - g[1] * e[0]};
@@ -36,17 +42,25 @@ int fitQuarterTurns(const Vec3d& e, const Vec3d& g, bool& ambiguous) {
     ambiguous = !(scale > 1e-12) || s[best] - second <= 1e-9 * scale;
     return best;
 }
-/// Transition with rotation @p R from the corners of edge halfedge @p h (exact rounding).
-GridTransform fitTranslation(const ParametrizedTriMesh& m, const TriParams& params, std::size_t h, int o, Rotation R) {
+/// Translation for rotation @p k between the two charts of an edge: the mean of the
+/// corner differences w - R u, rounded (exact rounding).
+PlanarTransform fitTranslation(int k, const Vec2d& u0, const Vec2d& u1, const Vec2d& w0, const Vec2d& w1) {
+    PlanarTransform T;
+    T.k = k;
+    const Vec2d r0 = T.rotate(u0), r1 = T.rotate(u1);
+    T.tu = static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0]))));
+    T.tv = static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1]))));
+    return T;
+}
+
+/// Transition with rotation @p k from the corners of edge halfedge @p h (exact rounding).
+PlanarTransform fitTranslation(const ParametrizedTriMesh& m, const TriParams& params, std::size_t h, int o, int k) {
     const int f = static_cast<int>(h / 3), i = static_cast<int>(h % 3), g = o / 3;
     const int ka = (i + 1) % 3, kb = (i + 2) % 3;
     const int ja = cornerOf(m, g, m.triangles[static_cast<std::size_t>(f)][ka]);
     const int jb = cornerOf(m, g, m.triangles[static_cast<std::size_t>(f)][kb]);
-    const Vec3d r0 = R.apply(params[static_cast<std::size_t>(f)][ka]), r1 = R.apply(params[static_cast<std::size_t>(f)][kb]);
-    const Vec3d& w0 = params[static_cast<std::size_t>(g)][ja];
-    const Vec3d& w1 = params[static_cast<std::size_t>(g)][jb];
-    return GridTransform(R, Vec3i(static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0])))),
-                                  static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1])))), 0));
+    return fitTranslation(k, params[static_cast<std::size_t>(f)][ka], params[static_cast<std::size_t>(f)][kb],
+                          params[static_cast<std::size_t>(g)][ja], params[static_cast<std::size_t>(g)][jb]);
 }
 
 /// Resolves the rotation of ambiguous edges (zero parametric length) by consistency:
@@ -56,9 +70,10 @@ GridTransform fitTranslation(const ParametrizedTriMesh& m, const TriParams& para
 /// breadth first over known transitions, among at most kResolveReach triangles and never
 /// through a triangle at a known cone (vertexHolonomy() over the known edges). Edges are
 /// taken in halfedge order and each resolved edge helps the next; returns the number left
-/// with their best fit.
+/// with their best fit. Works on @p full, the transitions of all halfedges (@p tr's kind
+/// still describes the best fits, for the holonomy of the known edges).
 long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency& adj, const TriParams& params,
-                                TriTransitions& tr, std::vector<char>& ambiguous) {
+                                const TriTransitions& tr, std::vector<PlanarTransform>& full, std::vector<char>& ambiguous) {
     constexpr std::size_t kResolveReach = 256;
     std::vector<std::size_t> open;
     for (std::size_t h = 0; h < ambiguous.size(); ++h) {
@@ -74,7 +89,7 @@ long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency
     };
     std::vector<int> seen(m.triangles.size(), -1), queue;
     long arbitrary = 0;
-    std::vector<GridTransform> toChart(m.triangles.size());
+    std::vector<PlanarTransform> toChart(m.triangles.size());
     bool changed = true;
     while (changed && !open.empty()) {
         changed = false;
@@ -85,7 +100,7 @@ long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency
             // Breadth first from f0 over known transitions until g0 is reached.
             queue.assign(1, f0);
             seen[static_cast<std::size_t>(f0)] = static_cast<int>(h);
-            toChart[static_cast<std::size_t>(f0)] = GridTransform();
+            toChart[static_cast<std::size_t>(f0)] = PlanarTransform();
             bool found = false;
             for (std::size_t q = 0; q < queue.size() && !found && queue.size() <= kResolveReach; ++q) {
                 const int f = queue[q];
@@ -96,7 +111,7 @@ long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency
                     const int g = oe / 3;
                     if (seen[static_cast<std::size_t>(g)] == static_cast<int>(h)) continue;
                     seen[static_cast<std::size_t>(g)] = static_cast<int>(h);
-                    toChart[static_cast<std::size_t>(g)] = tr.halfedge[he] * toChart[static_cast<std::size_t>(f)];
+                    toChart[static_cast<std::size_t>(g)] = full[he] * toChart[static_cast<std::size_t>(f)];
                     if (g == g0) {
                         found = true;
                     } else if (!atCone(g)) {
@@ -105,8 +120,8 @@ long resolveByVertexConsistency(const ParametrizedTriMesh& m, const TriAdjacency
                 }
             }
             if (found) {
-                tr.halfedge[h] = fitTranslation(m, params, h, o, toChart[static_cast<std::size_t>(g0)].R);
-                tr.halfedge[static_cast<std::size_t>(o)] = tr.halfedge[h].inverse();
+                full[h] = fitTranslation(m, params, h, o, toChart[static_cast<std::size_t>(g0)].k);
+                full[static_cast<std::size_t>(o)] = full[h].inverse();
                 ambiguous[h] = ambiguous[static_cast<std::size_t>(o)] = 0;
                 open.erase(open.begin() + static_cast<std::ptrdiff_t>(idx));
                 changed = true;
@@ -132,28 +147,39 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                                      const std::vector<int>* given, int threads) {
     const std::size_t nh = adj.opposite.size();
     TriTransitions tr;
-    tr.halfedge.assign(nh, GridTransform());
     if (given && given->size() != nh)
         throw InputError("given rotations: " + std::to_string(given->size()) + " values for " + std::to_string(nh) +
                          " halfedges");
+    // Every halfedge's kind is written exactly once below (boundary ones by themselves,
+    // each edge by its smaller halfedge), so the array is not zeroed first.
+    tr.kind.resize(nh);
     const int chunks = std::max(1, threads);
     std::vector<long> ambiguous(static_cast<std::size_t>(chunks), 0);
     std::vector<char> isAmbiguous(given ? 0 : nh, 0);
     std::vector<std::string> errors(static_cast<std::size_t>(chunks));
-    const Rotation quarter[4] = {planarRotation(0), planarRotation(1), planarRotation(2), planarRotation(3)};
+    // Per chunk, the halfedges with a transition other than the identity.
+    std::vector<std::vector<std::pair<int, PlanarTransform>>> seams(static_cast<std::size_t>(chunks));
+    auto kindOf = [](const PlanarTransform& T) {
+        return static_cast<unsigned char>(T.k | (T.is_identity() ? 0 : TriTransitions::kNotIdentity));
+    };
     parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
+        auto& seam = seams[static_cast<std::size_t>(chunk)];
         for (std::size_t h = hb; h < he; ++h) {
             const int o = adj.opposite[h];
-            if (o < 0 || o < static_cast<int>(h)) continue;  // each edge once, from its smaller halfedge
+            if (o < 0) {
+                tr.kind[h] = 0;
+                continue;
+            }
+            if (o < static_cast<int>(h)) continue;  // each edge once, from its smaller halfedge
             const int f = static_cast<int>(h / 3), i = static_cast<int>(h % 3);
             const int g = o / 3;
             const int ka = (i + 1) % 3, kb = (i + 2) % 3;
             const int va = m.triangles[static_cast<std::size_t>(f)][ka], vb = m.triangles[static_cast<std::size_t>(f)][kb];
             const int ja = cornerOf(m, g, va), jb = cornerOf(m, g, vb);
-            const Vec3d& u0 = params[static_cast<std::size_t>(f)][ka];
-            const Vec3d& u1 = params[static_cast<std::size_t>(f)][kb];
-            const Vec3d& w0 = params[static_cast<std::size_t>(g)][ja];
-            const Vec3d& w1 = params[static_cast<std::size_t>(g)][jb];
+            const Vec2d& u0 = params[static_cast<std::size_t>(f)][ka];
+            const Vec2d& u1 = params[static_cast<std::size_t>(f)][kb];
+            const Vec2d& w0 = params[static_cast<std::size_t>(g)][ja];
+            const Vec2d& w1 = params[static_cast<std::size_t>(g)][jb];
             int k = 0;
             if (given) {
                 const int a = (*given)[h], b = (*given)[static_cast<std::size_t>(o)];
@@ -172,7 +198,9 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     // integer vector: keep the rotations for which it (nearly) is.
                     unsigned mask = 0;
                     for (int c = 0; c < 4; ++c) {
-                        const Vec3d d = w0 - quarter[c].apply(u0);
+                        PlanarTransform R;
+                        R.k = c;
+                        const Vec2d d = w0 - R.rotate(u0);
                         if (std::fabs(d[0] - std::round(d[0])) <= 1e-6 && std::fabs(d[1] - std::round(d[1])) <= 1e-6)
                             mask |= 1u << c;
                     }
@@ -189,30 +217,45 @@ TriTransitions computeTriTransitions(const ParametrizedTriMesh& m, const TriAdja
                     }
                 }
             }
-            const Rotation R = quarter[k];
-            const Vec3d r0 = R.apply(u0), r1 = R.apply(u1);
-            const Vec3i t(static_cast<int>(std::lround(0.5 * ((w0[0] - r0[0]) + (w1[0] - r1[0])))),
-                          static_cast<int>(std::lround(0.5 * ((w0[1] - r0[1]) + (w1[1] - r1[1])))), 0);
-            const GridTransform T(R, t);
-            tr.halfedge[h] = T;
-            tr.halfedge[static_cast<std::size_t>(o)] = T.inverse();
+            const PlanarTransform T = fitTranslation(k, u0, u1, w0, w1);
+            const PlanarTransform Ti = T.inverse();
+            tr.kind[h] = kindOf(T);
+            tr.kind[static_cast<std::size_t>(o)] = kindOf(Ti);
+            if (!T.is_identity()) {
+                seam.emplace_back(static_cast<int>(h), T);
+                seam.emplace_back(o, Ti);
+            }
         }
     });
     for (const auto& e : errors)
         if (!e.empty()) throw InputError(e);
     for (long a : ambiguous) tr.ambiguous += a;
-    if (tr.ambiguous > 0) tr.unresolved = resolveByVertexConsistency(m, adj, params, tr, isAmbiguous);
-    tr.kind.resize(nh);
-    std::vector<char> planar(static_cast<std::size_t>(chunks), 1);
-    parallelChunks(nh, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
-        for (std::size_t h = hb; h < he; ++h) {
-            const int q = planarQuarterTurns(tr.halfedge[h].R);
-            if (q < 0) planar[static_cast<std::size_t>(chunk)] = 0;
-            tr.kind[h] = static_cast<unsigned char>((q & 3) | (tr.halfedge[h].is_identity() ? 0 : TriTransitions::kNotIdentity));
+    std::vector<std::pair<int, PlanarTransform>> all;
+    std::size_t total = 0;
+    for (const auto& sm : seams) total += sm.size();
+    all.reserve(total);
+    for (auto& sm : seams) {
+        all.insert(all.end(), sm.begin(), sm.end());
+        std::vector<std::pair<int, PlanarTransform>>().swap(sm);
+    }
+    if (tr.ambiguous > 0) {
+        // Resolution on the full array (rare: maps with edges of zero parametric length).
+        std::vector<PlanarTransform> full(nh);
+        for (const auto& e : all) full[static_cast<std::size_t>(e.first)] = e.second;
+        tr.unresolved = resolveByVertexConsistency(m, adj, params, tr, full, isAmbiguous);
+        all.clear();
+        for (std::size_t h = 0; h < nh; ++h) {
+            tr.kind[h] = kindOf(full[h]);
+            if (!full[h].is_identity()) all.emplace_back(static_cast<int>(h), full[h]);
         }
-    });
-    for (char p : planar)
-        if (!p) tr.kind.clear();
+    }
+    std::sort(all.begin(), all.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    tr.seam.resize(all.size());
+    tr.seam_transform.resize(all.size());
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        tr.seam[i] = all[i].first;
+        tr.seam_transform[i] = all[i].second;
+    }
     return tr;
 }
 
@@ -221,14 +264,17 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
     const std::size_t nv = m.points.size();
     const int chunks = std::max(1, threads);
     std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
-    const bool compact = tr.kind.size() == tr.halfedge.size();
-    auto isIdentity = [&](std::size_t h) {
-        return compact ? !(tr.kind[h] & TriTransitions::kNotIdentity) : tr.halfedge[h].is_identity();
+    auto isIdentity = [&](std::size_t h) { return tr.is_identity(h); };
+    // quantizeParameter() on the (u, v, 0) point (the third coordinate stays 0).
+    auto quantize = [&](Vec2d& u, double bound, int& snap) {
+        Vec3d x(u[0], u[1], 0);
+        quantizeParameter(x, bound, epsilon, snap);
+        u = Vec2d(x[0], x[1]);
     };
     parallelChunks(nv, chunks, [&](int chunk, std::size_t vb, std::size_t ve) {
         int& snap = snapped[static_cast<std::size_t>(chunk)];
         std::vector<int> star;
-        std::vector<GridTransform> toChart;
+        std::vector<PlanarTransform> toChart;
         for (std::size_t vi = vb; vi < ve; ++vi) {
             const int v = static_cast<int>(vi);
             const int b = adj.vertex_offset[vi], e = adj.vertex_offset[vi + 1];
@@ -236,7 +282,7 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
             // Common case: identity transitions around v and one parameter everywhere.
             bool simple = true;
             const int f0 = adj.vertex_triangles[static_cast<std::size_t>(b)];
-            const Vec3d first = params[static_cast<std::size_t>(f0)][cornerOf(m, f0, v)];
+            const Vec2d first = params[static_cast<std::size_t>(f0)][cornerOf(m, f0, v)];
             for (int p = b; p < e && simple; ++p) {
                 const int f = adj.vertex_triangles[static_cast<std::size_t>(p)];
                 const int k = cornerOf(m, f, v);
@@ -245,8 +291,8 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
                     if (j != k && !isIdentity(3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(j))) simple = false;
             }
             if (simple) {
-                Vec3d u = first;
-                quantizeParameter(u, std::max(std::fabs(u[0]), std::fabs(u[1])), epsilon, snap);
+                Vec2d u = first;
+                quantize(u, std::max(std::fabs(u[0]), std::fabs(u[1])), snap);
                 if (u == first) continue;
                 for (int p = b; p < e; ++p) {
                     const int f = adj.vertex_triangles[static_cast<std::size_t>(p)];
@@ -256,7 +302,7 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
             }
             // Breadth first over the edges around v, composing transitions from f0's chart.
             star.assign(1, f0);
-            toChart.assign(1, GridTransform());
+            toChart.assign(1, PlanarTransform());
             for (std::size_t q = 0; q < star.size(); ++q) {
                 const int f = star[q];
                 const int k = cornerOf(m, f, v);
@@ -268,18 +314,18 @@ long sanitizeTriParams(const ParametrizedTriMesh& m, const TriAdjacency& adj, Tr
                     const int g = o / 3;
                     if (std::find(star.begin(), star.end(), g) != star.end()) continue;
                     star.push_back(g);
-                    toChart.push_back(tr.halfedge[h] * toChart[q]);
+                    toChart.push_back(tr.at(h) * toChart[q]);
                 }
             }
-            Vec3d u = first;
+            Vec2d u = first;
             double bound = 0;
             const double umax = std::max(std::fabs(u[0]), std::fabs(u[1]));
             for (std::size_t q = 0; q < star.size(); ++q) {
-                const Vec3d& p = params[static_cast<std::size_t>(star[q])][cornerOf(m, star[q], v)];
-                const Vec3i& t = toChart[q].t;
-                bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), umax + std::max(std::abs(t[0]), std::abs(t[1]))});
+                const Vec2d& p = params[static_cast<std::size_t>(star[q])][cornerOf(m, star[q], v)];
+                const PlanarTransform& t = toChart[q];
+                bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), umax + std::max(std::abs(t.tu), std::abs(t.tv))});
             }
-            quantizeParameter(u, bound, epsilon, snap);
+            quantize(u, bound, snap);
             for (std::size_t q = 0; q < star.size(); ++q)
                 params[static_cast<std::size_t>(star[q])][cornerOf(m, star[q], v)] = toChart[q].apply(u);
         }
@@ -293,7 +339,7 @@ std::vector<signed char> classifyTriangles(const TriParams& params, int threads)
     std::vector<signed char> s(params.size());
     parallelChunks(params.size(), std::max(1, threads), [&](int, std::size_t fb, std::size_t fe) {
         for (std::size_t f = fb; f < fe; ++f)
-            s[f] = static_cast<signed char>(orient2dAxis(params[f][0], params[f][1], params[f][2], 2));
+            s[f] = static_cast<signed char>(orient2dUV(params[f][0], params[f][1], params[f][2][0], params[f][2][1]));
     });
     return s;
 }
@@ -302,15 +348,13 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                                 const std::vector<char>* unknown, int threads) {
     const std::size_t nv = m.points.size();
     std::vector<int> hol(nv, -1);
-    const bool compact = tr.kind.size() == tr.halfedge.size();
     parallelChunks(nv, std::max(1, threads), [&](int, std::size_t vb, std::size_t ve) {
     for (std::size_t vi = vb; vi < ve; ++vi) {
         if (adj.vertex_offset[vi] == adj.vertex_offset[vi + 1]) continue;
         const int v = static_cast<int>(vi);
         const int f0 = adj.vertex_triangles[static_cast<std::size_t>(adj.vertex_offset[vi])];
         // Around the fan: leave each triangle through the edge at v it was not entered by.
-        // Planar rotations commute, so with the compact copy the quarter turns just add up.
-        Rotation R;
+        // Planar rotations commute, so the quarter turns just add up.
         int turns = 0;
         int f = f0, entry = -1, steps = 0;
         const int limit = adj.vertex_offset[vi + 1] - adj.vertex_offset[vi] + 1;
@@ -324,12 +368,11 @@ std::vector<int> vertexHolonomy(const ParametrizedTriMesh& m, const TriAdjacency
                 ok = false;
                 break;
             }
-            if (compact) turns += tr.kind[he] & 3;
-            else if (!tr.halfedge[he].R.is_identity()) R = tr.halfedge[he].R * R;
+            turns += tr.kind[he] & 3;
             f = oe / 3;
             entry = oe % 3;
         } while (f != f0);
-        if (ok) hol[vi] = compact ? turns % 4 : std::max(0, planarQuarterTurns(R));
+        if (ok) hol[vi] = turns % 4;
     }
     });
     return hol;

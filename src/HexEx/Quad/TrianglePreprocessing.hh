@@ -4,30 +4,37 @@
 /// per halfedge (paper 4.1.1 in 2D), sanitization (4.1.2 in 2D), the orientation of every
 /// triangle's parameter image and the holonomy (cones) of the map.
 
-#include "../Grid/GridTransform.hh"
+#include "../Core/DefaultInitAllocator.hh"
 #include "ParametrizedTriMesh.hh"
+#include "PlanarTransform.hh"
 
 #include <vector>
 
 namespace HexEx {
 
-/// Corner parameters of every triangle as (u, v, 0), so that the grid algebra
-/// (GridTransform with planar rotations) and the exact predicates of the 3D kernel apply.
-using TriParams = std::vector<std::array<Vec3d, 3>>;
+/// Corner parameters of every triangle, (u, v) per corner, sized without zeroing (the
+/// extraction fills them in parallel, so the pages are first touched by the threads that
+/// write them).
+using TriParams = std::vector<std::array<Vec2d, 3>, DefaultInitAllocator<std::array<Vec2d, 3>>>;
 
-/// The transition of every halfedge into the neighbouring triangle's chart.
+/// The transition of every halfedge into the neighbouring triangle's chart, compact: one
+/// byte per halfedge, and the full transition only for the halfedges whose transition is
+/// not the identity (seams; usually few).
 struct TriTransitions {
-    std::vector<GridTransform> halfedge;  ///< per halfedge (identity on the boundary)
-    /// Compact copy of `halfedge` for the walks around vertices and across triangles (one
-    /// byte per halfedge instead of 16): the rotation's quarter turns in bits 0-1, bit 2 set
-    /// if the transition is not the identity (kNotIdentity). Filled by
-    /// computeTriTransitions(); empty (then `halfedge` is read) while transitions are being
-    /// resolved or if a rotation were not planar.
-    std::vector<unsigned char> kind;
+    /// Per halfedge: the rotation's quarter turns in bits 0-1, bit 2 (kNotIdentity) set if
+    /// the transition is not the identity (boundary halfedges: 0).
+    std::vector<unsigned char, DefaultInitAllocator<unsigned char>> kind;
+    std::vector<int> seam;                    ///< halfedges whose transition is not the identity, ascending
+    std::vector<PlanarTransform> seam_transform;  ///< their transitions (same order)
     /// Bit of `kind` marking a transition that is not the identity.
     static constexpr unsigned char kNotIdentity = 4;
     long ambiguous = 0;   ///< interior edges of (nearly) zero parametric length, whose rotation the edge does not determine
     long unresolved = 0;  ///< of those, not resolvable by vertex consistency (best fit kept)
+
+    /// True if halfedge @p h has the identity transition.
+    bool is_identity(std::size_t h) const { return !(kind[h] & kNotIdentity); }
+    /// The transition of halfedge @p h (a binary search in `seam` unless it is the identity).
+    PlanarTransform at(std::size_t h) const;
 };
 
 /// Computes the transition of every interior halfedge: the planar rotation (one of 4)

@@ -21,10 +21,10 @@ constexpr int kFrameTurn[4][4] = {{0, 0, 1, -1}, {0, 0, -1, 1}, {-1, 1, 0, 0}, {
 constexpr int kDirU[4] = {1, -1, 0, 0}, kDirV[4] = {0, 0, 1, -1};
 
 /// The exact orientation test (PlanarOrientation.hh).
-inline int orient2d(const Vec3d& a, const Vec3d& b, double cu, double cv) { return orient2dUV(a, b, cu, cv); }
+inline int orient2d(const Vec2d& a, const Vec2d& b, double cu, double cv) { return orient2dUV(a, b, cu, cv); }
 
 /// Sign of (b - a) x d for an axis direction d (exact comparison).
-inline int crossEdgeDir(const Vec3d& a, const Vec3d& b, AxisDir d) {
+inline int crossEdgeDir(const Vec2d& a, const Vec2d& b, AxisDir d) {
     auto sgn = [](double lo, double hi) { return lo < hi ? 1 : (lo > hi ? -1 : 0); };
     switch (d) {
         case 0: return sgn(b[1], a[1]);
@@ -42,22 +42,22 @@ struct Pt {
 /// Side of point p of the perturbed grid line {q + s*w} + (infinitesimal offset):
 /// sign(w x (p - q)), or @p tie if p lies on the unperturbed line. Exact (q, q + w are
 /// integer points).
-inline int lineSide(const Vec3d& p, Pt q, Pt w, int tie) {
+inline int lineSide(const Vec2d& p, Pt q, Pt w, int tie) {
     int s;
     if (w.v == 0) {  // along u: w x (p - q) = w_u (p_v - q_v)
         s = p[1] > q.v ? w.u : (p[1] < q.v ? -w.u : 0);
     } else if (w.u == 0) {  // along v: w x (p - q) = -w_v (p_u - q_u)
         s = p[0] > q.u ? -w.v : (p[0] < q.u ? w.v : 0);
     } else {
-        s = orient2d(Vec3d(q.u, q.v, 0), Vec3d(q.u + w.u, q.v + w.v, 0), p[0], p[1]);
+        s = orient2d(Vec2d(q.u, q.v), Vec2d(q.u + w.u, q.v + w.v), p[0], p[1]);
     }
     return s != 0 ? s : tie;
 }
 
 /// sign((b - a) x w) for an edge (a, b) that contains the grid point q (exact): the sign of
 /// (b - q) x w, or of (q - a) x w when b == q.
-inline int crossEdgeThrough(const Vec3d& a, const Vec3d& b, Pt q, Pt w) {
-    const Vec3d z(q.u, q.v, 0), zw(q.u + w.u, q.v + w.v, 0);
+inline int crossEdgeThrough(const Vec2d& a, const Vec2d& b, Pt q, Pt w) {
+    const Vec2d z(q.u, q.v), zw(q.u + w.u, q.v + w.v);
     if (b != z) return -orient2d(z, zw, b[0], b[1]);
     return orient2d(z, zw, a[0], a[1]);
 }
@@ -68,9 +68,10 @@ struct Desc {
     AxisDir d1, d2;
 };
 
-Desc mapDesc(const GridTransform& g, const Desc& d) {
-    const Vec3i z = g.apply(Vec3i(d.x, d.y, 0));
-    return {z[0], z[1], g.R.apply(d.d1), g.R.apply(d.d2)};
+Desc mapDesc(const PlanarTransform& g, const Desc& d) {
+    Desc r{0, 0, g.applyDir(d.d1), g.applyDir(d.d2)};
+    g.apply(d.x, d.y, r.x, r.y);
+    return r;
 }
 
 /// Everything a trace reads.
@@ -81,7 +82,6 @@ struct Tracer {
     const TriTransitions& tr;
     const std::vector<signed char>& sign;
     const TriDartSet& ds;
-    const bool compact = tr.kind.size() == tr.halfedge.size();  ///< tr.kind is usable
 
     /// Index of dart @p d of triangle @p f or -1 (degenerate triangles own no darts). Keys
     /// are unique per triangle, so a linear scan of a short range finds what the binary
@@ -136,8 +136,8 @@ struct Tracer {
                 if (e == entry) continue;
                 const int ia = e == 2 ? 0 : e + 1, ib = e == 0 ? 2 : e - 1;
                 if (side[ia] == side[ib]) continue;
-                const Vec3d& a = p[static_cast<std::size_t>(ia)];
-                const Vec3d& b = p[static_cast<std::size_t>(ib)];
+                const Vec2d& a = p[static_cast<std::size_t>(ia)];
+                const Vec2d& b = p[static_cast<std::size_t>(ib)];
                 // In the start triangle alpha_0 leaves through the edge its direction crosses
                 // outwards (a cheap exact test, so first).
                 if (entry < 0 && i == 0 && sf * crossEdgeDir(a, b, s.d1) >= 0) continue;
@@ -155,13 +155,15 @@ struct Tracer {
                 boundary = true;
                 return -1;
             }
-            if (compact ? (tr.kind[h] & TriTransitions::kNotIdentity) != 0 : !tr.halfedge[h].is_identity()) {
-                const GridTransform& g = tr.halfedge[h];
+            if (!tr.is_identity(h)) {
+                const PlanarTransform g = tr.at(h);
                 from = mapDesc(g, from);
                 to = mapDesc(g, to);
-                const Vec3i qn = g.apply(Vec3i(q.u, q.v, 0)), wn = g.R.apply(Vec3i(w.u, w.v, 0));
-                q = {qn[0], qn[1]};
-                w = {wn[0], wn[1]};
+                Pt qn{}, wn{};
+                g.apply(q.u, q.v, qn.u, qn.v);
+                g.rotate(w.u, w.v, wn.u, wn.v);
+                q = qn;
+                w = wn;
             }
             f = o / 3;
             entry = o % 3;
@@ -179,7 +181,7 @@ struct Tracer {
 
 } // namespace
 
-std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
+TriLinks traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
                                                     const TriParams& params, const TriTransitions& tr,
                                                     const std::vector<signed char>& sign, const TriDartSet& ds, int threads,
                                                     TriTraceStats* stats) {
@@ -195,7 +197,12 @@ std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m
         return kFrameTurn[t.d1][t.d2] * t.sign > 0;
     };
     constexpr int kUntraced = -2, kContested = -3;
-    std::vector<std::array<int, 3>> links(n, {kUntraced, kUntraced, kUntraced});
+    // Sized without zeroing and set to kUntraced in parallel (each chunk touches its own
+    // pages first), before any claim can write into another chunk's range.
+    TriLinks links(n);
+    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t d = b; d < e; ++d) links[d] = {kUntraced, kUntraced, kUntraced};
+    });
     auto traceInto = [&](std::size_t d, int i) {
         const int di = static_cast<int>(d);
         bool boundary = false;
@@ -228,14 +235,17 @@ std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m
                 if (links[d][static_cast<std::size_t>(i)] < 0 && !counterClockwise(d)) traceInto(d, i);
     });
     // Keep only mutual links (decided on the traced links, then applied).
-    std::vector<unsigned char> drop(n, 0);
+    std::vector<unsigned char, DefaultInitAllocator<unsigned char>> drop(n);  // every entry written below
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t d = b; d < e; ++d)
+        for (std::size_t d = b; d < e; ++d) {
+            unsigned bits = 0;
             for (int i = 0; i < 3; ++i) {
                 const int p = links[d][static_cast<std::size_t>(i)];
                 if (p >= 0 && p != static_cast<int>(d) && links[static_cast<std::size_t>(p)][static_cast<std::size_t>(i)] != static_cast<int>(d))
-                    drop[d] = static_cast<unsigned char>(drop[d] | (1u << i));
+                    bits |= 1u << i;
             }
+            drop[d] = static_cast<unsigned char>(bits);
+        }
     });
     std::vector<TriTraceStats> parts(static_cast<std::size_t>(chunks));
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {

@@ -18,11 +18,15 @@ struct TriTraceStats {
     long asymmetric = 0;   ///< traced links whose partner traced elsewhere (dropped)
 };
 
+/// Links of the 2D map, alpha_0 .. alpha_2 per dart, sized without zeroing (the passes
+/// that fill them run in parallel, so each chunk first touches its own pages).
+using TriLinks = std::vector<std::array<int, 3>, DefaultInitAllocator<std::array<int, 3>>>;
+
 /// Traces alpha_0 .. alpha_2 of every dart of @p ds. Returns links[d] = {alpha_0, alpha_1,
 /// alpha_2}: a dart index, the dart itself for a free alpha_2 (the quad edge lies on the
 /// surface boundary), -1 for an unconnected link. Only mutual links are kept. Runs in
 /// parallel; the result does not depend on @p threads.
-std::vector<std::array<int, 3>> traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
+TriLinks traceTriConnections(const ParametrizedTriMesh& m, const TriAdjacency& adj,
                                                     const TriParams& params, const TriTransitions& tr,
                                                     const std::vector<signed char>& sign, const TriDartSet& ds,
                                                     int threads, TriTraceStats* stats = nullptr);
