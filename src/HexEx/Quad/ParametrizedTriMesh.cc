@@ -75,7 +75,7 @@ TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
     // way). Any edge used other than once in each direction fails the check (all a -> b
     // halfedges match the same first b -> a one), and then the full scan below runs and
     // reports the first defect exactly as it always did.
-    adj.opposite.assign(3 * nf, -1);
+    adj.opposite.resize(3 * nf);  // every entry is written by the pass below
     auto starOf = [&](int v, auto&& visit) {
         for (int p = adj.vertex_offset[static_cast<std::size_t>(v)]; p < adj.vertex_offset[static_cast<std::size_t>(v) + 1]; ++p)
             if (!visit(adj.vertex_triangles[static_cast<std::size_t>(p)])) return;

@@ -3,6 +3,7 @@
 /// Input of the 2D (quad) pipeline: a triangle mesh with an integer-grid map given per
 /// triangle corner, and its halfedge adjacency.
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Vec.hh"
 
 #include <array>
@@ -26,11 +27,12 @@ struct ParametrizedTriMesh {
 
 /// Halfedge adjacency of a ParametrizedTriMesh. Halfedge `3 f + i` is the edge of triangle
 /// f opposite its corner i, running from corner (i+1)%3 to corner (i+2)%3 (the 2D analogue
-/// of the tet mesh's halfface `4 c + i`).
+/// of the tet mesh's halfface `4 c + i`). The two per-halfedge arrays are sized without
+/// zeroing (buildTriAdjacency() fills them in parallel).
 struct TriAdjacency {
-    std::vector<int> opposite;          ///< per halfedge: the neighbour's halfedge, -1 on the boundary
-    std::vector<int> vertex_offset;     ///< triangles of vertex v: vertex_triangles[vertex_offset[v] .. vertex_offset[v+1])
-    std::vector<int> vertex_triangles;  ///< see vertex_offset (ascending per vertex)
+    std::vector<int, DefaultInitAllocator<int>> opposite;          ///< per halfedge: the neighbour's halfedge, -1 on the boundary
+    std::vector<int> vertex_offset;                                ///< triangles of vertex v: vertex_triangles[vertex_offset[v] .. vertex_offset[v+1])
+    std::vector<int, DefaultInitAllocator<int>> vertex_triangles;  ///< see vertex_offset (ascending per vertex)
 };
 
 /// Checks @p m (index ranges, repeated corners, finite parameters, one parameter triple
