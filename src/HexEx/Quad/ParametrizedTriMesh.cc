@@ -34,41 +34,70 @@ TriAdjacency buildTriAdjacency(const ParametrizedTriMesh& m, int threads) {
             if (!std::isfinite(m.points[v][k])) err = "triangle mesh: vertex " + std::to_string(v) + ": position is not finite";
     });
     TriAdjacency adj;
-    adj.vertex_offset.assign(nv + 1, 0);
-    firstError(nf, [&](std::size_t f, std::string& err) {
-        const auto& t = m.triangles[f];
-        for (int k = 0; k < 3; ++k) {
-            if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= nv) {
-                err = "triangle mesh: triangle " + std::to_string(f) + ": vertex index " + std::to_string(t[k]) +
-                      " out of range (" + std::to_string(nv) + " vertices)";
-                return;
+    // Corners per vertex, counted per chunk of triangles (no shared counters): slot[c][v]
+    // is chunk c's count for v, later the position of its next triangle of v.
+    std::vector<std::vector<int, DefaultInitAllocator<int>>> slot(static_cast<std::size_t>(chunks));
+    {
+        std::vector<std::string> errors(static_cast<std::size_t>(chunks));
+        parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+            auto& cnt = slot[static_cast<std::size_t>(c)];
+            cnt.assign(nv, 0);
+            std::string& err = errors[static_cast<std::size_t>(c)];
+            for (std::size_t f = fb; f < fe; ++f) {
+                const auto& t = m.triangles[f];
+                for (int k = 0; k < 3 && err.empty(); ++k) {
+                    if (t[k] < 0 || static_cast<std::size_t>(t[k]) >= nv) {
+                        err = "triangle mesh: triangle " + std::to_string(f) + ": vertex index " + std::to_string(t[k]) +
+                              " out of range (" + std::to_string(nv) + " vertices)";
+                    } else if (!std::isfinite(m.params[f][k][0]) || !std::isfinite(m.params[f][k][1])) {
+                        err = "triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " + std::to_string(k) +
+                              " is not finite";
+                    }
+                }
+                if (err.empty() && (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]))
+                    err = "triangle mesh: triangle " + std::to_string(f) + ": repeated vertex";
+                if (!err.empty()) return;
+                for (int k = 0; k < 3; ++k) ++cnt[static_cast<std::size_t>(t[k])];
             }
-            if (!std::isfinite(m.params[f][k][0]) || !std::isfinite(m.params[f][k][1])) {
-                err = "triangle mesh: triangle " + std::to_string(f) + ": parameter of corner " + std::to_string(k) +
-                      " is not finite";
-                return;
-            }
-        }
-        if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2]) {
-            err = "triangle mesh: triangle " + std::to_string(f) + ": repeated vertex";
-            return;
-        }
-        for (int k = 0; k < 3; ++k)  // counts are sums: the order of the additions does not matter
-            __atomic_fetch_add(&adj.vertex_offset[static_cast<std::size_t>(t[k]) + 1], 1, __ATOMIC_RELAXED);
+        });
+        for (const auto& e : errors)
+            if (!e.empty()) throw InputError(e);
+    }
+    // Offsets per vertex and each chunk's first position per vertex, in parallel over
+    // vertex ranges (per-range totals, then a prefix sum over the ranges).
+    adj.vertex_offset.resize(nv + 1);
+    std::vector<long> rangeFirst(static_cast<std::size_t>(chunks) + 1, 0);
+    parallelChunks(nv, chunks, [&](int r, std::size_t vb, std::size_t ve) {
+        long total = 0;
+        for (const auto& cnt : slot)
+            if (!cnt.empty())
+                for (std::size_t v = vb; v < ve; ++v) total += cnt[v];
+        rangeFirst[static_cast<std::size_t>(r) + 1] = total;
     });
-    for (std::size_t v = 0; v < nv; ++v) adj.vertex_offset[v + 1] += adj.vertex_offset[v];
-    // Triangles per vertex in ascending order: each chunk owns a range of vertices and
-    // places, in triangle order, the corners that fall into it.
+    for (int r = 0; r < chunks; ++r) rangeFirst[static_cast<std::size_t>(r) + 1] += rangeFirst[static_cast<std::size_t>(r)];
+    parallelChunks(nv, chunks, [&](int r, std::size_t vb, std::size_t ve) {
+        int pos = static_cast<int>(rangeFirst[static_cast<std::size_t>(r)]);
+        for (std::size_t v = vb; v < ve; ++v) {
+            adj.vertex_offset[v] = pos;
+            for (auto& cnt : slot)
+                if (!cnt.empty()) {
+                    const int k = cnt[v];
+                    cnt[v] = pos;
+                    pos += k;
+                }
+        }
+    });
+    adj.vertex_offset[nv] = static_cast<int>(3 * nf);
+    // Triangles per vertex in ascending order: chunk c places its triangles (in order)
+    // after those of the chunks before it.
     adj.vertex_triangles.resize(3 * nf);
-    parallelChunks(nv, chunks, [&](int, std::size_t vb, std::size_t ve) {
-        std::vector<int> fill(adj.vertex_offset.begin() + static_cast<std::ptrdiff_t>(vb),
-                              adj.vertex_offset.begin() + static_cast<std::ptrdiff_t>(ve));
-        for (std::size_t f = 0; f < nf; ++f)
-            for (int k = 0; k < 3; ++k) {
-                const std::size_t v = static_cast<std::size_t>(m.triangles[f][k]);
-                if (v >= vb && v < ve) adj.vertex_triangles[static_cast<std::size_t>(fill[v - vb]++)] = static_cast<int>(f);
-            }
+    parallelChunks(nf, chunks, [&](int c, std::size_t fb, std::size_t fe) {
+        auto& pos = slot[static_cast<std::size_t>(c)];
+        for (std::size_t f = fb; f < fe; ++f)
+            for (int k = 0; k < 3; ++k)
+                adj.vertex_triangles[static_cast<std::size_t>(pos[static_cast<std::size_t>(m.triangles[f][k])]++)] = static_cast<int>(f);
     });
+    slot.clear();
     // Halfedge 3f+i runs a -> b; its opposite runs b -> a in a triangle around b.
     // Fast path: the first such triangle in b's star, then a check that the pairing is
     // consistent (every match mutual, no boundary halfedge with a twin running the same
