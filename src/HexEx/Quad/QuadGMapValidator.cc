@@ -23,7 +23,7 @@ struct LinkView {
 
 /// Labels the orbits of two links (bits a and b) by search, smallest dart first; works for
 /// any map, involutive or not. @p first receives the smallest dart of each orbit.
-QuadLabelVector labelPair(const LinkView& g, int a, int b, std::vector<int>& size, std::vector<int>& first) {
+QuadLabelVector labelPair(const LinkView& g, int a, int b, QuadLabelVector& size, QuadLabelVector& first) {
     const std::array<int, 3>* L = g.L;
     const std::size_t n = g.n;
     QuadLabelVector label(n, -1);
@@ -56,7 +56,7 @@ QuadLabelVector labelPair(const LinkView& g, int a, int b, std::vector<int>& siz
 /// Labels, sizes and smallest darts of the orbits of one pair of involutions.
 struct PairLabels {
     QuadLabelVector label;          ///< orbit per dart
-    std::vector<int> size, first;   ///< per orbit: darts, smallest dart
+    QuadLabelVector size, first;    ///< per orbit: darts, smallest dart
 };
 
 /// The generator pairs of the face, vertex and edge orbits.
@@ -119,8 +119,8 @@ void labelInvolutionOrbits(const LinkView& g, int threads, PairLabels out[3]) {
             base[static_cast<std::size_t>(c) + 1][q] = base[static_cast<std::size_t>(c)][q] + count[static_cast<std::size_t>(c)][q];
     for (std::size_t q = 0; q < 3; ++q) {
         const std::size_t orbits = static_cast<std::size_t>(base.back()[q]);
-        out[q].size.assign(orbits, 0);
-        out[q].first.assign(orbits, 0);
+        out[q].size.resize(orbits);  // every orbit's entries are written in pass 2
+        out[q].first.resize(orbits);
     }
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
         std::array<int, 3> l = base[static_cast<std::size_t>(c)];
@@ -207,7 +207,7 @@ QuadGMapValidation validateView(const LinkView& g, QuadOrbitLabels* labels, int 
         }
     }
     const QuadLabelVector& face = P[0].label;
-    const std::vector<int>& fsize = P[0].size;
+    const QuadLabelVector& fsize = P[0].size;
     std::vector<long> eq3(static_cast<std::size_t>(chunks), 0);
     parallelChunks(n, chunks, [&](int c, std::size_t bgn, std::size_t end) {
         for (std::size_t s = bgn; s < end; ++s)

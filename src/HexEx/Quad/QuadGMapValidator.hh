@@ -42,9 +42,9 @@ struct QuadOrbitLabels {
     QuadLabelVector face;    ///< <alpha_0, alpha_1> orbit per dart
     QuadLabelVector vertex;  ///< <alpha_1, alpha_2> orbit per dart
     QuadLabelVector edge;    ///< <alpha_0, alpha_2> orbit per dart
-    std::vector<int> face_first;    ///< smallest dart of each face orbit
-    std::vector<int> vertex_first;  ///< smallest dart of each vertex orbit
-    std::vector<int> edge_first;    ///< smallest dart of each edge orbit
+    QuadLabelVector face_first;    ///< smallest dart of each face orbit
+    QuadLabelVector vertex_first;  ///< smallest dart of each vertex orbit
+    QuadLabelVector edge_first;    ///< smallest dart of each edge orbit
     int n_faces = 0;          ///< number of face orbits
     int n_vertices = 0;       ///< number of vertex orbits
     int n_edges = 0;          ///< number of edge orbits
