@@ -6,10 +6,14 @@
 /// threads it bounds the wall time from below even on a loaded machine), the stage times
 /// of the median run.
 ///
-/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io]`
-/// Cases: disk5 (a flat disk around a valence-5 cone, 998,560 triangles, 499,280 quads,
-/// exact map) and disk5-perturbed (the same map perturbed with a = 0.3, many flipped
-/// triangles). `--quick` uses about 10,000 triangles (a smoke test), `--n N` 10 N^2 triangles;
+/// Usage: `quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io] [--cases LIST]`
+/// Cases (`--cases`, comma-separated; default disk5,disk5-perturbed): disk5 (a flat disk
+/// around a valence-5 cone, 998,560 triangles, 499,280 quads, exact map), disk5-perturbed
+/// (the same map perturbed with a = 0.3 as `hexex perturb -a 0.3 --seed 1`, 29 flipped
+/// triangles), torus (generateTorus(700, 700, 707, 707), 999,698 triangles, 490,000 quads)
+/// and square (generateSquare(707, 707), 999,698 triangles, 499,849 quads): the four maps of
+/// issue 27. `--quick` uses about 10,000 triangles (a smoke test), `--n N` 10 N^2 triangles
+/// (torus and square: 2 M^2 with M = round(sqrt(5) N));
 /// `--min-per-thread K` sets QuadExtractionOptions::min_triangles_per_thread. `--io` times, instead
 /// of the extraction, the OBJ text of each case: writing it to /dev/null (writeTriObjFile(),
 /// i.e. formatting) and parsing it from memory (parseTriObj()): median wall time, MB/s of
@@ -21,6 +25,7 @@
 #include <HexEx/Quad/TriObjReader.hh>
 
 #include <algorithm>
+#include <cmath>
 #include <time.h>
 #include <chrono>
 #include <ctime>
@@ -45,6 +50,7 @@ int main(int argc, char** argv) {
     bool quick = false, io = false;
     int size = 316;
     long minPerThread = HexEx::QuadExtractionOptions().min_triangles_per_thread;
+    std::vector<std::string> names = {"disk5", "disk5-perturbed"};
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--threads") && i + 1 < argc) {
             threads.clear();
@@ -61,8 +67,14 @@ int main(int argc, char** argv) {
             minPerThread = std::stol(argv[++i]);
         } else if (!std::strcmp(argv[i], "--io")) {
             io = true;
+        } else if (!std::strcmp(argv[i], "--cases") && i + 1 < argc) {
+            names.clear();
+            std::stringstream ss(argv[++i]);
+            std::string t;
+            while (std::getline(ss, t, ',')) names.push_back(t);
         } else {
-            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io]\n");
+            std::fprintf(stderr, "usage: quad_benchmark [--threads 1,2] [--runs 3] [--quick] [--n N] [--min-per-thread K] [--io] "
+                                 "[--cases disk5,disk5-perturbed,torus,square]\n");
             return 2;
         }
     }
@@ -72,9 +84,23 @@ int main(int argc, char** argv) {
         HexEx::ParametrizedTriMesh mesh;
     };
     std::vector<Case> cases;
-    cases.push_back({"disk5", HexEx::generateConeDisk(5, n, n)});
-    cases.push_back({"disk5-perturbed", cases[0].mesh});
-    HexEx::perturbTriParameters(cases[1].mesh, 0.3, 1);
+    const int m = static_cast<int>(std::lround(std::sqrt(5.0) * n));  // torus and square: 2 m^2 triangles
+    for (const std::string& name : names) {
+        if (name == "disk5") {
+            cases.push_back({name, HexEx::generateConeDisk(5, n, n)});
+        } else if (name == "disk5-perturbed") {
+            cases.push_back({name, HexEx::generateConeDisk(5, n, n)});
+            HexEx::perturbTriParameters(cases.back().mesh, 0.3, 1);
+        } else if (name == "torus") {
+            const int l = std::max(1, m * 700 / 707);
+            cases.push_back({name, HexEx::generateTorus(l, l, std::max(3, m), std::max(3, m))});
+        } else if (name == "square") {
+            cases.push_back({name, HexEx::generateSquare(m, m)});
+        } else {
+            std::fprintf(stderr, "quad_benchmark: unknown case '%s' (disk5, disk5-perturbed, torus, square)\n", name.c_str());
+            return 2;
+        }
+    }
     if (io) {
         std::printf("%-16s %8s %7s %7s %9s %11s %10s %9s %10s %10s\n", "case", "tris", "threads", "MB", "format_s",
                     "format_MB/s", "format_cpu", "parse_s", "parse_MB/s", "parse_cpu");
