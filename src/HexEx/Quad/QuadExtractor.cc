@@ -10,6 +10,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <type_traits>
 
 namespace HexEx {
 
@@ -31,7 +32,7 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
     auto t0 = Clock::now();
 
     // Preprocessing.
-    const TriAdjacency adj = buildTriAdjacency(in, threads);
+    TriAdjacency adj = buildTriAdjacency(in, threads);
     const std::size_t nf = in.triangles.size();
     const int chunks = std::max(1, threads);
     TriParams params(nf);  // not zeroed: the parallel loop below writes every corner
@@ -224,6 +225,25 @@ QuadExtractionReport extractQuadMesh(const ParametrizedTriMesh& in, QuadMesh& ou
         rep.warnings.push_back(std::to_string(as.dropped_faces) + " faces with fewer than three vertices were left out");
     if (!rep.validation.valid()) rep.warnings.push_back("validation: " + rep.validation.summary());
     rep.valid_all_quad = rep.validation.valid() && as.polygons == 0 && as.dropped_faces == 0 && rep.darts.remaining_anti == 0;
+
+    // The large arrays are released on the threads as well: giving their pages back to
+    // the system (unmapping) costs about as much per page as touching them first, and done
+    // by the destructors it would all fall to the calling thread. About half the bytes each.
+    auto release = [](auto& v) { std::decay_t<decltype(v)>().swap(v); };
+    parallelChunks(10, chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t k = b; k < e; ++k) switch (k) {
+                case 0: release(kept); break;
+                case 1: release(adj.opposite); break;
+                case 2: release(adj.vertex_triangles); break;
+                case 3: release(labels.vertex); break;
+                case 4: release(labels.edge); break;
+                case 5: release(glinks); break;
+                case 6: release(params); break;
+                case 7: release(labels.face); break;
+                case 8: release(ds.offset); break;
+                default: release(ds.darts); break;  // empty unless darts were annihilated
+            }
+    });
     return rep;
 }
 
