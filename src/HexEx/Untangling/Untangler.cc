@@ -50,17 +50,31 @@ struct VertexHexes {
     }
 };
 
-/// Vertex roles: 0 interior (free), 1 boundary (surface or fixed by the mode), 2 never moves.
-std::vector<char> vertexRoles(const HexMesh& mesh) {
-    std::vector<char> role(mesh.vertices.size(), 0);
-    const TriangleSurface b = hexMeshBoundary(mesh);
-    for (const auto& t : b.triangles)
-        for (const int v : t) role[static_cast<std::size_t>(v)] = 1;
-    for (const auto& p : mesh.polyhedra)
-        for (const auto& f : p.faces)
-            for (const int v : f)
-                if (v >= 0 && static_cast<std::size_t>(v) < role.size()) role[static_cast<std::size_t>(v)] = 2;
-    return role;
+/// True if vertex @p v lies on a quad that only one hex uses (checked among the hexes at @p v).
+bool onBoundary(const HexMesh& mesh, const VertexHexes& vh, int v) {
+    const int* first = vh.hexes.data() + vh.offset[static_cast<std::size_t>(v)];
+    const int* last = vh.hexes.data() + vh.offset[static_cast<std::size_t>(v) + 1];
+    for (const int* c = first; c != last; ++c) {
+        const auto& hx = mesh.hexes[static_cast<std::size_t>(*c)];
+        for (std::size_t f = 0; f < 6; ++f) {
+            std::array<int, 4> q;
+            bool has_v = false;
+            for (std::size_t i = 0; i < 4; ++i) {
+                q[i] = hx[static_cast<std::size_t>(HexArcs::kHexFaces[f][i])];
+                has_v = has_v || q[i] == v;
+            }
+            if (!has_v) continue;
+            bool shared = false;
+            for (const int* d = first; d != last && !shared; ++d) {
+                if (d == c) continue;
+                const auto& other = mesh.hexes[static_cast<std::size_t>(*d)];
+                shared = std::all_of(q.begin(), q.end(),
+                                     [&](int w) { return std::find(other.begin(), other.end(), w) != other.end(); });
+            }
+            if (!shared) return true;
+        }
+    }
+    return false;
 }
 
 /// Two unit vectors orthogonal to the unit vector @p n and to each other.
@@ -352,7 +366,13 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     const double h_floor = 0.1 * h_sum / static_cast<double>(mesh.hexes.size());
     for (auto& x : h) x = std::max(x, h_floor > 0 ? h_floor : 1.0);
 
-    const std::vector<char> role = vertexRoles(mesh);
+    // Vertex roles (0 interior, 1 boundary, 2 vertex of a polyhedron: never moves), found
+    // when a vertex is first needed, so that the cost follows the neighbourhood, not the mesh.
+    std::vector<char> role(nv, -1);
+    for (const auto& p : mesh.polyhedra)
+        for (const auto& f : p.faces)
+            for (const int v : f)
+                if (v >= 0 && static_cast<std::size_t>(v) < nv) role[static_cast<std::size_t>(v)] = 2;
     std::unique_ptr<SurfaceProjection> proj;
     if (options.boundary == BoundaryMode::Surface) {
         proj.reset(new SurfaceProjection(surface ? *surface : hexMeshBoundary(mesh), options.feature_angle_deg));
@@ -360,12 +380,17 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
     }
     const double tol = options.on_surface_tolerance * diag;
     const VertexHexes vh(nv, mesh.hexes);
+    auto roleOf = [&](int v) {
+        char& r = role[static_cast<std::size_t>(v)];
+        if (r < 0) r = onBoundary(mesh, vh, v) ? 1 : 0;
+        return r;
+    };
     // Vertex kinds, classified when a vertex first enters a neighbourhood.
     std::vector<char> kind(nv, kUnknown);
     auto classify = [&](int v) {
         char& k = kind[static_cast<std::size_t>(v)];
         if (k != kUnknown) return k;
-        const char r = role[static_cast<std::size_t>(v)];
+        const char r = roleOf(v);
         if (r == 0) {
             k = kInterior;
         } else if (r == 2 || !proj) {
@@ -476,9 +501,9 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
             for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) {
                 const char k = classify(v);
                 any_free = any_free || k == kInterior || k == kSurface || k == kCurve;
-                poly = poly || role[static_cast<std::size_t>(v)] == 2;
+                poly = poly || roleOf(v) == 2;
                 feature = feature || k == kCurve || k == kCorner;
-                fixed = fixed || (k == kFixed && role[static_cast<std::size_t>(v)] == 1);
+                fixed = fixed || (k == kFixed && roleOf(v) == 1);
             }
             stuck += !any_free;
             at_polyhedra += any_free && poly;
