@@ -76,7 +76,9 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
 
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
 /// For i == 0, @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
-int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr) {
+/// For i > 0, @p known (if given) holds the signs of the four face functions at s.z
+/// (DartSet::pointSides()); otherwise they are computed.
+int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr, const std::array<int, 4>* known = nullptr) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
     int cand[4], n = 0;
     if (i == 0) {
@@ -111,7 +113,7 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullp
         }
         return -1;
     }
-    const std::array<int, 4> oz = T.sides(toVec3d(s.z));
+    const std::array<int, 4> oz = known ? *known : T.sides(toVec3d(s.z));
     for (int j = 0; j < 4; ++j) {
         if (j == entry || oz[j] != 0) continue;
         const int g0 = T.g[j][dirAxis(d0)], g1 = T.g[j][dirAxis(d1)], g2 = T.g[j][dirAxis(d2)];
@@ -258,7 +260,15 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
                 continue;
             }
         }
-        const int f = T.vol != 0 ? exitFace(i, T, start, entry) : exitFaceDegenerate(i, T, start, entry, mesh, t);
+        int f;
+        if (T.vol == 0) {
+            f = exitFaceDegenerate(i, T, start, entry, mesh, t);
+        } else if (i == 0) {
+            f = exitFace(0, T, start, entry);
+        } else {  // the face signs at the pivot point, from the dense index's flags where it has them
+            const std::array<int, 4> oz = set.pointSides(t, T, start.z);
+            f = exitFace(i, T, start, entry, nullptr, &oz);
+        }
         if (f < 0) return kUnconnected;
         const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
         const HalfFaceHandle opp = mesh.opposite_halfface(hf);
