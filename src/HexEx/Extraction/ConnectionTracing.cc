@@ -113,13 +113,34 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullp
         }
         return -1;
     }
-    const std::array<int, 4> oz = known ? *known : T.sides(toVec3d(s.z));
+    // A candidate face passes through z (o_j(z) = 0) and meets the gradient conditions of
+    // the trace type; the conditions are tested first, the face functions only where they
+    // hold (an alpha_3 trace usually has one such face, an alpha_2 trace two).
+    std::array<int, 4> oz{};
+    unsigned have = 0;  // bit j: oz[j] is known
+    const Vec3d z = toVec3d(s.z);
+    if (known) {
+        oz = *known;
+        have = 0xF;
+    } else {
+        for (int k = 0; k < 4; ++k)
+            if (z == T.p[k]) {  // at a corner: every other face passes through z (TetSoS::sides())
+                oz = {0, 0, 0, 0};
+                oz[static_cast<std::size_t>(k)] = T.vol;
+                have = 0xF;
+                break;
+            }
+    }
     for (int j = 0; j < 4; ++j) {
-        if (j == entry || oz[j] != 0) continue;
+        if (j == entry) continue;
         const int g0 = T.g[j][dirAxis(d0)], g1 = T.g[j][dirAxis(d1)], g2 = T.g[j][dirAxis(d2)];
-        if (i == 1 && (g0 != 0 || g1 != 0)) cand[n++] = j;
-        if (i == 2 && g0 == 0) cand[n++] = j;
-        if (i == 3 && g0 == 0 && g1 == 0 && T.vol * dirSign(d2) * g2 > 0) cand[n++] = j;
+        const bool fits = i == 1 ? (g0 != 0 || g1 != 0) : i == 2 ? g0 == 0 : (g0 == 0 && g1 == 0 && T.vol * dirSign(d2) * g2 > 0);
+        if (!fits) continue;
+        if (!((have >> j) & 1)) {
+            oz[static_cast<std::size_t>(j)] = T.side(j, z);
+            have |= 1u << j;
+        }
+        if (oz[static_cast<std::size_t>(j)] == 0) cand[n++] = j;
     }
     if (n == 0) return -1;
     if (i == 3) return cand[0];
@@ -207,6 +228,19 @@ namespace {
 
 long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 
+/// The signs of the four face functions of tet @p t at @p z from its dense index's flags
+/// (as DartSet::pointSides()), if it has them and z lies in the closed image; else false.
+bool flaggedSides(const DartSet& set, int t, const TetSoS& T, const Vec3i& z, std::array<int, 4>& oz) {
+    const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
+    if (slot < 0) return false;
+    const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
+    const long l = di.flags.empty() ? -1 : di.local(z);
+    if (l < 0 || !(di.flags[static_cast<std::size_t>(l)] & 1)) return false;
+    const unsigned fl = di.flags[static_cast<std::size_t>(l)];
+    for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
+    return true;
+}
+
 /// Number of distinct frame codes (frameCode()).
 constexpr int kFrameCodes = 216;
 /// A table index for a frame (d1, d2, d3): each direction is one of 6 values.
@@ -266,8 +300,8 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
         } else if (i == 0) {
             f = exitFace(0, T, start, entry);
         } else {  // the face signs at the pivot point, from the dense index's flags where it has them
-            const std::array<int, 4> oz = set.pointSides(t, T, start.z);
-            f = exitFace(i, T, start, entry, nullptr, &oz);
+            std::array<int, 4> oz;
+            f = exitFace(i, T, start, entry, nullptr, flaggedSides(set, t, T, start.z, oz) ? &oz : nullptr);
         }
         if (f < 0) return kUnconnected;
         const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);

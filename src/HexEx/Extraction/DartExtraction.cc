@@ -418,11 +418,20 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         std::size_t total = 0;
         for (const auto& p : parts) total += p.size();
         s.darts = std::move(parts[0]);
-        s.darts.reserve(total);
-        for (std::size_t k = 1; k < parts.size(); ++k) {
-            s.darts.insert(s.darts.end(), parts[k].begin(), parts[k].end());
-            DartVector().swap(parts[k]);
-        }
+        // The other chunks' darts are appended by all threads (sized without zeroing: the
+        // copies touch the new pages in parallel), each thread an equal share of the range.
+        const std::size_t head = s.darts.size();
+        s.darts.resize(total);
+        parallelChunks(total - head, chunks, [&](int, std::size_t b, std::size_t e) {
+            std::size_t at = 0;  // start of part k in the appended range
+            for (std::size_t k = 1; k < parts.size(); ++k) {
+                const std::size_t lo = std::max(b, at), hi = std::min(e, at + parts[k].size());
+                if (lo < hi) std::copy(parts[k].begin() + static_cast<long>(lo - at), parts[k].begin() + static_cast<long>(hi - at),
+                                       s.darts.begin() + static_cast<long>(head + lo));
+                at += parts[k].size();
+            }
+        });
+        for (std::size_t k = 1; k < parts.size(); ++k) DartVector().swap(parts[k]);
         s.tet_begin.assign(n + 1, 0);
         for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
     } else {

@@ -75,7 +75,11 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // (encoded as -2 - label) once every class is final.
         vlabel.assign(nd, -1);
         occLabel.assign(static_cast<std::size_t>(nocc), -1);
-        for (std::size_t x = 0; x < uf.parent.size(); ++x) uf.find(static_cast<int>(x));  // flatten: parent = root
+        // Flatten (parent = root) the elements that get a label: the corners and the used
+        // occurrences (most box points of a large tet lie outside its image and are never used).
+        for (int x = 0; x < nk; ++x) uf.find(x);
+        for (long o = 0; o < nocc; ++o)
+            if (used[static_cast<std::size_t>(o)]) uf.find(nk + static_cast<int>(o));
         auto labelOf = [&](int x) {
             const int r = uf.parent[static_cast<std::size_t>(x)];
             if (r < 0) return -2 - r;  // x is a root that has a label already
