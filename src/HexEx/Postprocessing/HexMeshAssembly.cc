@@ -133,8 +133,9 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     }
 
     std::vector<int> off, idx;
-    // The validator usually grouped the darts by cell already (ascending within a cell).
-    const bool grouped = !implicit && !labels.cell_offset.empty();
+    // The validator usually grouped the darts by cell already (in search order within a
+    // cell; the loop below does not depend on the order within a cell).
+    const bool grouped = !labels.cell_offset.empty();
     if (!grouped) groupByLabel(clabel, nc, off, idx);
     const std::vector<int>& cellOff = grouped ? labels.cell_offset : off;
     const std::vector<int>& cellDarts = grouped ? labels.cell_darts : idx;
