@@ -57,16 +57,37 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         const int nk = static_cast<int>(labels.corner_size.size());
         UnionFind uf(static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc));
         std::vector<char> used(static_cast<std::size_t>(nocc), 0);
+        const std::vector<int>& dartOcc = implicit->dart_occurrence;
+        // The darts of one grid point of a tet (consecutive) share their occurrence: each of
+        // their corners is joined with it once (the last few corners joined with the
+        // current occurrence are remembered).
+        int lastOcc = -1;
+        int joined[8];
+        int nJoined = 0;
         for (std::size_t d = 0; d < nd; ++d) {
             if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
             const int k = corner[d];
             const int d3 = a(static_cast<int>(d), 3);
-            if (d3 != static_cast<int>(d)) uf.unite(k, corner[static_cast<std::size_t>(d3)]);
-            for (int o : {implicit->dart_occurrence[d], implicit->alpha3_occurrence[d]})
-                if (o >= 0) {
-                    uf.unite(k, nk + o);
+            // Partners on the same occurrence are joined through it anyway.
+            if (d3 != static_cast<int>(d) && (dartOcc[d] < 0 || dartOcc[d] != dartOcc[static_cast<std::size_t>(d3)]))
+                uf.unite(k, corner[static_cast<std::size_t>(d3)]);
+            const int o = dartOcc[d];
+            if (o >= 0) {
+                if (o != lastOcc) {
+                    lastOcc = o;
+                    nJoined = 0;
                     used[static_cast<std::size_t>(o)] = 1;
                 }
+                if (std::find(joined, joined + nJoined, k) == joined + nJoined) {
+                    uf.unite(k, nk + o);
+                    if (nJoined < 8) joined[nJoined++] = k;
+                }
+            }
+            const int o3 = implicit->alpha3_occurrence[d];
+            if (o3 >= 0) {
+                uf.unite(k, nk + o3);
+                used[static_cast<std::size_t>(o3)] = 1;
+            }
         }
         for (const auto& jo : implicit->joined_occurrences) uf.unite(nk + jo.first, nk + jo.second);
         for (const auto& c : implicit->cells)
