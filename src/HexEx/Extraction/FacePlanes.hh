@@ -16,7 +16,8 @@ namespace HexEx {
 /// computed once. The filter is the one of orient3d(): the determinant's sign is accepted
 /// when its magnitude exceeds 1e-15 times the permanent (Shewchuk's bound for an expansion
 /// along one row with 2x2 minors of the other two is (7 + 56e)e, e = 2^-53, about 7.8e-16;
-/// an absolute 1e-280 is added for underflow); otherwise TetSoS::side() decides.
+/// an absolute 1e-280 is added for underflow); otherwise, unless the arithmetic was exact
+/// (smallDyadic() corners and point), TetSoS::side() decides.
 class FacePlanes {
 public:
     /// Sets up the four faces of @p T (which must outlive this object).
@@ -36,6 +37,18 @@ public:
             }
             sign_[j] = ((3 - j) % 2 == 0) ? 1 : -1;
         }
+        exact_ = smallDyadic(T.p[0]) && smallDyadic(T.p[1]) && smallDyadic(T.p[2]) && smallDyadic(T.p[3]);
+    }
+
+    /// True if every coordinate of @p v is a multiple of 1/64 of magnitude at most 512. For
+    /// such corners and points the differences, cross products and the dot product of
+    /// side() are exact integers in units of 2^-18 below 2^53: the computed sign is exact.
+    static bool smallDyadic(const Vec3d& v) {
+        for (int k = 0; k < 3; ++k) {
+            const double x = v[k] * 64.0;
+            if (!(std::fabs(x) <= 32768.0) || x != static_cast<double>(static_cast<int>(x))) return false;
+        }
+        return true;
     }
 
     /// Sign of o_j(x): the same value as TetSoS::side(j, x).
@@ -48,6 +61,7 @@ public:
         const double bound = 1e-15 * perm + 1e-280;
         if (det > bound) return sign_[j];
         if (-det > bound) return -sign_[j];
+        if (exact_ && smallDyadic(x)) return det > 0 ? sign_[j] : det < 0 ? -sign_[j] : 0;
         return T_->side(j, x);
     }
 
@@ -57,6 +71,7 @@ private:
     double n_[4][3];     ///< (b - a) x (c - a), rounded
     double perm_[4][3];  ///< |products| of each cross product component (for the error bound)
     int sign_[4];        ///< (-1)^(3-j)
+    bool exact_ = false; ///< all corners are smallDyadic()
 };
 
 } // namespace HexEx
