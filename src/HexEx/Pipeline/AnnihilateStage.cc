@@ -5,6 +5,7 @@
 #include "../Postprocessing/FaceConnectionRepair.hh"
 #include "../Postprocessing/FaceRelinking.hh"
 
+#include <algorithm>
 #include <cstring>
 #include <functional>
 
@@ -28,9 +29,21 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
     } else {
         out.remaining_anti = in.anti;
     }
-    out.new_index.assign(nd, -1);
-    for (std::size_t d = 0; d < nd; ++d)
-        if (out.alive[d]) out.new_index[d] = out.n_alive++;
+    // Survivors numbered in order: counted per chunk, then numbered from the chunk's prefix.
+    out.new_index.resize(nd);
+    const int chunks = std::max(1, std::min(in.threads, static_cast<int>(nd / 65536) + 1));
+    std::vector<int> before(static_cast<std::size_t>(chunks) + 1, 0);
+    parallelChunks(nd, chunks, [&](int k, std::size_t b, std::size_t e) {
+        int n = 0;
+        for (std::size_t d = b; d < e; ++d) n += out.alive[d] ? 1 : 0;
+        before[static_cast<std::size_t>(k) + 1] = n;
+    });
+    for (std::size_t k = 0; k < static_cast<std::size_t>(chunks); ++k) before[k + 1] += before[k];
+    parallelChunks(nd, chunks, [&](int k, std::size_t b, std::size_t e) {
+        int next = before[static_cast<std::size_t>(k)];
+        for (std::size_t d = b; d < e; ++d) out.new_index[d] = out.alive[d] ? next++ : -1;
+    });
+    out.n_alive = before.back();
     return out;
 }
 

@@ -22,6 +22,7 @@ struct AnnihilateInput {
     /// The darts (optional): removed darts at the same grid point of the same tet as the
     /// previous one, with the same heir, are then left out of AnnihilateOutput::heir.
     const DartSet* darts = nullptr;
+    int threads = 1;                                   ///< worker threads for the numbering
 };
 
 /// Output of annihilateStage().

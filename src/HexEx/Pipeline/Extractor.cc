@@ -91,7 +91,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.connect = clock.lap();
 
     enter("postprocess");
-    AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts});
+    AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads});
     addToReport(survivors, rep);
     ImplicitCells cells;
     if (implicit)

@@ -255,12 +255,15 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         stats.collapsed_cells += P.collapsed_cells;
     }
     if (implicit) {
-        out.hexes.reserve(out.hexes.size() + implicit->cells.size());
-        for (const auto& c : implicit->cells) {
-            std::array<int, 8> h;
-            for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = occLabel[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
-            out.hexes.push_back(h);
-        }
+        const std::size_t base = out.hexes.size();
+        out.hexes.resize(base + implicit->cells.size());
+        parallelChunks(implicit->cells.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i) {
+                const auto& c = implicit->cells[i];
+                std::array<int, 8>& h = out.hexes[base + i];
+                for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = occLabel[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
+            }
+        });
         long cellFaces = 6 * static_cast<long>(out.hexes.size());
         for (const auto& p : out.polyhedra) cellFaces += static_cast<long>(p.faces.size());
         stats.quads = (cellFaces + stats.boundary_quads) / 2;
