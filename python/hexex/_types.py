@@ -83,7 +83,7 @@ class UntangleResult(HexMesh):
         """The untangling report: a dict with the fields of ``HexEx::UntangleReport``
         (hexes, inverted_before, inverted_after, min/mean_scaled_jacobian_before/after,
         free_vertices, moved_vertices, max_displacement, mean_displacement (relative to the
-        bounding-box diagonal), released_feature_vertices, attempts, rings, outer_iterations, lbfgs_iterations,
+        bounding-box diagonal), released_feature_vertices, attempts, rings, outer_iterations, lbfgs_iterations, quality_iterations,
         seconds, success, budget_exhausted, message)."""
 
     @property

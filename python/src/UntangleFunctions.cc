@@ -37,6 +37,7 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
     d["rings"] = r.rings;
     d["outer_iterations"] = r.outer_iterations;
     d["lbfgs_iterations"] = r.lbfgs_iterations;
+    d["quality_iterations"] = r.quality_iterations;
     d["seconds"] = r.seconds;
     d["success"] = r.success;
     d["budget_exhausted"] = r.budget_exhausted;

@@ -175,6 +175,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
                 w.num("rings", static_cast<long>(u.rings));
                 w.num("outer_iterations", static_cast<long>(u.outer_iterations));
                 w.num("lbfgs_iterations", static_cast<long>(u.lbfgs_iterations));
+                w.num("quality_iterations", static_cast<long>(u.quality_iterations));
                 w.num("seconds", u.seconds);
                 w.boolean("success", u.success);
                 w.boolean("budget_exhausted", u.budget_exhausted);

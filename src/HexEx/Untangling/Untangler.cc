@@ -135,6 +135,31 @@ public:
     std::size_t freeVertices() const { return free_.size(); }
     /// Hex energy evaluations so far (the work budget counts these).
     double work() const { return work_; }
+    /// Positions of the free vertices (for restorePositions()).
+    std::vector<Vec3d> positions() const {
+        std::vector<Vec3d> p;
+        p.reserve(free_.size());
+        for (const auto& fv : free_) p.push_back(mesh_.vertices[static_cast<std::size_t>(fv.vertex)]);
+        return p;
+    }
+    /// Puts the free vertices back to @p p (from positions()) and resets the bases.
+    void restorePositions(const std::vector<Vec3d>& p) {
+        for (std::size_t i = 0; i < free_.size(); ++i) mesh_.vertices[static_cast<std::size_t>(free_[i].vertex)] = p[i];
+        rebase();
+    }
+    /// Smallest scaled Jacobian among the elements.
+    double minScaledJacobian() const {
+        double worst = 1;
+        for (const int e : elems_) {
+            std::array<Vec3d, 8> p;
+            for (std::size_t k = 0; k < 8; ++k)
+                p[k] = mesh_.vertices[static_cast<std::size_t>(mesh_.hexes[static_cast<std::size_t>(e)][k])];
+            worst = std::min(worst, hexScaledJacobian(p));
+        }
+        return worst;
+    }
+    /// Exponent p of the corner energies in the sum (1: the paper's energy).
+    void setPower(double p) { power_ = p; }
     const std::vector<int>& elements() const { return elems_; }
     int variables() const { return n_vars_; }
 
@@ -198,8 +223,16 @@ public:
                     const Vec3d b2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[2])])] - o;
                     const Vec3d c2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[3])])] - o;
                     std::array<Vec3d, 3> cg;
-                    sum += cornerEnergy(a, b2, c2, h, eps, opt_.theta, grad ? &cg : nullptr);
+                    const double ce = cornerEnergy(a, b2, c2, h, eps, opt_.theta, grad ? &cg : nullptr);
                     dmin = std::min(dmin, ((a % b2) | c2) / (h * h * h));
+                    if (power_ == 1) {
+                        sum += ce;
+                    } else {  // sum of ce^p: the worst corners dominate
+                        const double cp = power_ == 4 ? ce * ce * ce : std::pow(ce, power_ - 1);
+                        sum += cp * ce;
+                        if (grad)
+                            for (auto& x : cg) x *= power_ * cp;
+                    }
                     if (grad) {
                         for (int k = 0; k < 3; ++k) {
                             g[static_cast<std::size_t>(f[static_cast<std::size_t>(k + 1)])] += cg[static_cast<std::size_t>(k)];
@@ -255,6 +288,7 @@ private:
     std::vector<int> elems_;
     double scale_ = 1;
     double work_ = 0;
+    double power_ = 1;
     int n_vars_ = 0;
     std::vector<double> e_val_, e_det_;
     std::vector<std::array<Vec3d, 8>> e_grad_;
@@ -309,6 +343,38 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, doub
         const double mu = (1.0 - sigma) * regularizedDeterminant(dmin, eps);
         eps = dmin < mu ? 2.0 * std::sqrt(mu * (mu - dmin)) : 1e-10;
         eps = std::max(eps, 1e-12);
+    }
+    const int quality_iterations = opt.quality_iterations;
+    if (pb.invertedElements() == 0 && quality_iterations > 0 && pb.work() < budget) {
+        // Quality: L-BFGS on the sum of the corner energies to the power quality_power (the
+        // worst corners dominate) with eps so small that the energy is the barrier, in rounds
+        // of 5 iterations; the round with the largest worst scaled Jacobian and no inverted
+        // hex is kept (the energy is not the scaled Jacobian, so it can also go down).
+        std::vector<Vec3d> best = pb.positions();
+        double best_sj = pb.minScaledJacobian();
+        pb.setPower(opt.quality_power);
+        const double eps_q = 1e-8;
+        LbfgsOptions lq;
+        lq.relative_decrease = 1e-6;
+        for (int done = 0; done < quality_iterations;) {
+            lq.max_iterations = std::min(5, quality_iterations - done);
+            q.setZero(pb.variables());
+            auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& gr) { return pb.energy(x, eps_q, &gr, nullptr); };
+            const LbfgsResult r = minimizeLbfgs(f, q, lq);
+            rep.quality_iterations += r.iterations;
+            done += std::max(r.iterations, 1);
+            pb.energy(q, eps_q, nullptr, nullptr);
+            pb.rebase();
+            if (pb.invertedElements() > 0) break;
+            const double sj = pb.minScaledJacobian();
+            if (sj > best_sj) {
+                best_sj = sj;
+                best = pb.positions();
+            }
+            if (r.iterations < lq.max_iterations) break;  // converged
+        }
+        pb.setPower(1);
+        pb.restorePositions(best);
     }
     budget -= pb.work();
     return pb.invertedElements() == 0;

@@ -43,6 +43,10 @@ struct UntangleOptions {
     int rings = 1;                 ///< hex rings around inverted hexes whose vertices move at first
     int max_outer_iterations = 60; ///< regularisation steps (eps updates) per attempt
     int max_lbfgs_iterations = 300;///< L-BFGS iterations per regularisation step
+    /// After a neighbourhood is untangled: L-BFGS iterations at most on the corner energies
+    /// to the power quality_power (raises the worst scaled Jacobian; undone if it does not). 0: off.
+    int quality_iterations = 10;
+    double quality_power = 4;      ///< see quality_iterations
     double feature_angle_deg = 40; ///< surface edges with a larger normal angle are feature curves
     double theta = 1.0 / 128;      ///< weight of the volume term g in the energy (shape term f: 1 - theta)
     /// If hexes stay inverted with vertices on feature curves or corners, let those vertices
@@ -72,6 +76,7 @@ struct UntangleReport {
     int attempts = 0;                  ///< neighbourhood sizes tried (rings 2, 4, 8, ...)
     int rings = 0;                     ///< ring count of the last attempt (-1: whole mesh)
     int outer_iterations = 0;          ///< regularisation steps in total
+    int quality_iterations = 0;        ///< L-BFGS iterations of the quality steps (UntangleOptions::quality_iterations)
     int lbfgs_iterations = 0;          ///< L-BFGS iterations in total
     double seconds = 0;                ///< wall time
     bool success = true;               ///< inverted_after == 0

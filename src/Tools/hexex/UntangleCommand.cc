@@ -30,6 +30,8 @@ const char* kUntangleUsage =
     "  --feature-angle DEG    surface edges sharper than this are feature curves (default 40)\n"
     "  --keep-features        never let vertices leave feature curves/corners (default: vertices of hexes\n"
     "                         that stay inverted with them kept are released onto the surface)\n"
+    "  --quality-iterations N L-BFGS iterations that raise the worst scaled Jacobian of an untangled\n"
+    "                         neighbourhood (default 10, 0 = off)\n"
     "  --rings K              hex rings around inverted hexes that move at first (default 1)\n"
     "  --threads N            worker threads (0 = all, default); the output is identical\n"
     "  --encoding E           .vtu data: binary (default), compressed or ascii\n"
@@ -40,7 +42,8 @@ const char* kUntangleUsage =
 int runUntangle(const Args& args) {
     const std::vector<OptionSpec> spec = {
         {"--output", true, "-o"},         {"--surface-from", true, ""}, {"--fixed-boundary", false, ""},
-        {"--feature-angle", true, ""},    {"--keep-features", false, ""}, {"--rings", true, ""},        {"--threads", true, ""},
+        {"--feature-angle", true, ""},    {"--keep-features", false, ""}, {"--rings", true, ""},
+        {"--quality-iterations", true, ""},        {"--threads", true, ""},
         {"--encoding", true, ""},         {"--quiet", false, "-q"},
     };
     std::string input, output, surface_path;
@@ -64,6 +67,7 @@ int runUntangle(const Args& args) {
         if (pa.has("--fixed-boundary")) opt.boundary = HexEx::BoundaryMode::Fixed;
         opt.feature_angle_deg = pa.getDouble("--feature-angle", opt.feature_angle_deg, 0, 180);
         opt.release_features = !pa.has("--keep-features");
+        opt.quality_iterations = static_cast<int>(pa.getInt("--quality-iterations", opt.quality_iterations, 0, 1000000));
         opt.rings = static_cast<int>(pa.getInt("--rings", opt.rings, 0, 1000000));
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         quiet = pa.has("--quiet");

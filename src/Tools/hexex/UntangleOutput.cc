@@ -19,7 +19,7 @@ void printUntangleReport(std::ostream& os, const HexEx::UntangleReport& r) {
        << (r.rings < 0 ? std::string("whole mesh") : std::to_string(r.rings) + " rings") << "), displacement max "
        << r.max_displacement << ", mean " << r.mean_displacement << " of the bbox diagonal\n"
        << "untangle: iterations " << r.outer_iterations << " regularisation steps, " << r.lbfgs_iterations
-       << " L-BFGS, " << r.attempts << " neighbourhood(s); time " << std::setprecision(3) << r.seconds << " s\n";
+       << " L-BFGS (+" << r.quality_iterations << " for quality), " << r.attempts << " neighbourhood(s); time " << std::setprecision(3) << r.seconds << " s\n";
     if (r.released_feature_vertices > 0)
         os << "untangle: " << r.released_feature_vertices
            << " vertices on feature curves/corners released onto the surface (their hexes stayed inverted with them kept)\n";
