@@ -31,6 +31,29 @@ std::vector<Vec3d> distinctPositions(std::vector<Vec3d> p, double tol) {
     return out;
 }
 
+/// The position (up to @p tol) that more than half of @p p share, if there is one and
+/// @p p holds more than one position.
+bool majorityPosition(const std::vector<Vec3d>& p, double tol, Vec3d& out) {
+    const std::vector<Vec3d> dist = distinctPositions(p, tol);
+    if (dist.size() < 2) return false;
+    for (const Vec3d& x : dist) {
+        std::size_t n = 0;
+        for (const Vec3d& y : p) n += (x - y).norm() <= tol ? 1 : 0;
+        if (2 * n > p.size()) {
+            out = x;
+            return true;
+        }
+    }
+    return false;
+}
+
+/// Moves the entry of @p v within @p tol of @p x to the front (appends @p x if none is).
+void moveToFront(std::vector<Vec3d>& v, const Vec3d& x, double tol) {
+    auto it = std::find_if(v.begin(), v.end(), [&](const Vec3d& y) { return (x - y).norm() <= tol; });
+    if (it == v.end()) v.insert(v.begin(), x);
+    else std::rotate(v.begin(), it, it + 1);
+}
+
 /// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
@@ -102,13 +125,28 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 }
             };
             flippedPts.clear();
-            for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
-                if (xflip[static_cast<std::size_t>(k)]) flippedPts.push_back(darts.position[static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)])]);
-                else addPoint(static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]));
-            }
             for (int k = off[l]; k < off[l + 1]; ++k) {
                 const auto d = static_cast<std::size_t>(idx[static_cast<std::size_t>(k)]);
                 addPoint(static_cast<std::size_t>(darts.point[d]));
+            }
+            // Whether the vertex is on the boundary is decided by its own (surviving)
+            // h-vertices: a removed dart inherited through the annihilation can sit at
+            // another grid point on the boundary (an alpha_0 pair joins the vertices at both
+            // ends of its edge), and its boundary planes would pull an interior vertex there.
+            // Without an own boundary h-vertex, the removed darts' positions are plain
+            // candidates.
+            const bool ownBoundary = !bnd.empty();
+            // Where most of the vertex's own darts are: a fold copy of a grid point carries
+            // only the darts of the few hex corners the fold covers that survived the
+            // annihilation, the proper preimage those of all the others (issue 22: 19-80
+            // darts against 2-10). Such a majority is the only preferred candidate.
+            Vec3d major;
+            const bool hasMajor = majorityPosition(all, tol, major);
+            for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
+                const auto q = static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]);
+                if (xflip[static_cast<std::size_t>(k)]) flippedPts.push_back(darts.position[q]);
+                else if (ownBoundary) addPoint(q);
+                else all.push_back(darts.position[q]);
             }
             if (all.empty()) continue;
             // Distinct anti-dart positions not among @p known (last-resort candidates).
@@ -123,12 +161,13 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 return extra;
             };
             if (bnd.empty()) {
-                const auto dist = distinctPositions(all, tol);
+                auto dist = distinctPositions(all, tol);
+                if (hasMajor) moveToFront(dist, major, tol);
                 out[l] = dist[0];
                 const auto extra = flippedExtras(dist);
                 if (dist.size() > 1 || !extra.empty()) {
                     cand.vertex.push_back(static_cast<int>(l));
-                    cand.preferred.push_back(static_cast<int>(dist.size()));
+                    cand.preferred.push_back(hasMajor ? 1 : static_cast<int>(dist.size()));
                     cand.offset.push_back(static_cast<int>(cand.position.size()));
                     cand.position.insert(cand.position.end(), dist.begin(), dist.end());
                     cand.position.insert(cand.position.end(), extra.begin(), extra.end());
@@ -181,6 +220,11 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 for (const Vec3d& q : dist) known = known || (p - q).norm() <= tol;
                 if (!known && residualOf(p) <= resTol) dist.push_back(p);
             }
+            if (hasMajor) {
+                bool known = false;
+                for (const Vec3d& q : dist) known = known || (major - q).norm() <= tol;
+                if (!known) dist.push_back(major);
+            }
             std::vector<Vec3d> extra;
             for (const Vec3d& p : flippedExtras(dist))
                 if (residualOf(p) <= resTol) extra.push_back(p);
@@ -195,20 +239,30 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 if (residual[k] <= resTol &&
                     (best == dist.size() || (dist[k] - target).sqrnorm() < (dist[best] - target).sqrnorm()))
                     best = k;
-            out[l] = dist[best];
-            cand.vertex.push_back(static_cast<int>(l));
-            cand.offset.push_back(static_cast<int>(cand.position.size()));
-            cand.position.push_back(dist[best]);
+            std::vector<Vec3d> ordered(1, dist[best]);
             int preferred = 1;
             for (std::size_t k = 0; k < dist.size(); ++k)
                 if (k != best && residual[k] <= resTol) {
-                    cand.position.push_back(dist[k]);
+                    ordered.push_back(dist[k]);
                     ++preferred;
                 }
-            cand.preferred.push_back(preferred);
             for (std::size_t k = 0; k < dist.size(); ++k)
-                if (k != best && residual[k] > resTol) cand.position.push_back(dist[k]);
-            cand.position.insert(cand.position.end(), extra.begin(), extra.end());
+                if (k != best && residual[k] > resTol) ordered.push_back(dist[k]);
+            ordered.insert(ordered.end(), extra.begin(), extra.end());
+            // On a smooth part of the boundary a fold copy and the proper preimage both lie on
+            // the surface up to its curvature, and the planes cannot tell them apart: the
+            // darts decide. A majority that lies clearly off the planes (its distance to them
+            // more than a quarter of its distance to the plane rule's choice: a copy inside
+            // the volume, or on one side of a sharp edge) is not taken.
+            if (hasMajor && std::sqrt(residualOf(major)) <= 0.25 * (major - dist[best]).norm() + tol) {
+                moveToFront(ordered, major, tol);
+                preferred = 1;
+            }
+            out[l] = ordered[0];
+            cand.vertex.push_back(static_cast<int>(l));
+            cand.offset.push_back(static_cast<int>(cand.position.size()));
+            cand.preferred.push_back(preferred);
+            cand.position.insert(cand.position.end(), ordered.begin(), ordered.end());
         }
     });
     if (candidates) {

@@ -53,6 +53,12 @@ struct VertexCandidates {
 /// the vertex stays on the input boundary (paper 4.4.2), among the boundary h-vertices
 /// closest to those planes (smallest sum of squared distances, up to rounding); if it has
 /// several boundary h-vertices it is listed too, with that choice first.
+/// Whether a class is on the boundary is decided by its surviving darts only (a removed
+/// dart's boundary h-vertex is then just one more candidate). A position held by more than
+/// half of the class's surviving darts is its only preferred candidate (first), for
+/// boundary classes only if its distance to the boundary planes is at most a quarter of
+/// its distance to the plane rule's choice (issue 22; Documentation/algorithm.md,
+/// "Vertices").
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,

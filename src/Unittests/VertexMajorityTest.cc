@@ -1,0 +1,86 @@
+// The position rules of mergedVertexPositions() that issue 22 added: a vertex whose own
+// darts are interior stays interior although a removed dart inherited by it lies on the
+// boundary, and a position held by most of a vertex's surviving darts is its only
+// preferred candidate.
+
+#include <HexEx/Mesh/TetMesh.hh>
+#include <HexEx/Postprocessing/VertexMerging.hh>
+
+#include <gtest/gtest.h>
+
+using namespace HexEx;
+
+namespace {
+
+/// One tet spanning the unit cube's corner (only its size matters: the tolerance).
+TetMesh unitTet() {
+    TetMesh m;
+    const VertexHandle a = m.add_vertex(Vec3d(0, 0, 0)), b = m.add_vertex(Vec3d(1, 0, 0)),
+                       c = m.add_vertex(Vec3d(0, 1, 0)), d = m.add_vertex(Vec3d(0, 0, 1));
+    m.add_cell({a, b, c, d});
+    m.build_adjacency();
+    return m;
+}
+
+/// Placement of one class: @p counts[k] surviving darts at @p points[k] (interior h-vertices).
+DartPlacement interiorDarts(const std::vector<Vec3d>& points, const std::vector<int>& counts) {
+    DartPlacement p;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        p.position.push_back(points[k]);
+        p.boundary_hf.push_back({-1, -1, -1});
+        for (int i = 0; i < counts[k]; ++i) p.point.push_back(static_cast<int>(k));
+    }
+    return p;
+}
+
+} // namespace
+
+// 20 darts at one preimage, 4 at a fold copy: the majority is the only preferred candidate,
+// whatever the order of the positions.
+TEST(VertexMajority, MostDartsMakeTheOnlyPreferredCandidate) {
+    const TetMesh mesh = unitTet();
+    const Vec3d proper(0.2, 0.2, 0.2), copy(0.1, 0.1, 0.1);
+    for (bool swapped : {false, true}) {
+        const DartPlacement p = swapped ? interiorDarts({copy, proper}, {4, 20}) : interiorDarts({proper, copy}, {20, 4});
+        const std::vector<int> label(p.point.size(), 0);
+        VertexCandidates cand;
+        const std::vector<Vec3d> pos = mergedVertexPositions(mesh, label, 1, p, 1, &cand);
+        ASSERT_EQ(pos.size(), 1u);
+        EXPECT_EQ(pos[0], proper);
+        ASSERT_EQ(cand.vertex.size(), 1u);
+        EXPECT_EQ(cand.preferred[0], 1);
+        ASSERT_EQ(cand.offset.size(), 2u);
+        EXPECT_EQ(cand.offset[1] - cand.offset[0], 2);
+        EXPECT_EQ(cand.position[0], proper);
+        EXPECT_EQ(cand.position[1], copy);
+    }
+    // No majority (12 against 12): both are preferred, as before.
+    const DartPlacement even = interiorDarts({proper, copy}, {12, 12});
+    VertexCandidates cand;
+    mergedVertexPositions(mesh, std::vector<int>(even.point.size(), 0), 1, even, 1, &cand);
+    ASSERT_EQ(cand.vertex.size(), 1u);
+    EXPECT_EQ(cand.preferred[0], 2);
+}
+
+// A removed dart on the boundary (its heir is this vertex) does not make an interior vertex
+// a boundary vertex: its position is one more candidate, rated like the surviving darts'
+// one (both preferred; the hexes decide). As a boundary vertex, only the boundary position
+// would have been preferred.
+TEST(VertexMajority, InheritedBoundaryDartDoesNotPullAnInteriorVertex) {
+    const TetMesh mesh = unitTet();
+    const Vec3d own(0.2, 0.2, 0.2), onBoundary(0, 0.3, 0.3);
+    DartPlacement p = interiorDarts({own}, {10});
+    p.position.push_back(onBoundary);
+    p.boundary_hf.push_back({0, -1, -1});  // a boundary halfface of the tet
+    p.extra_dart.push_back(0);
+    p.extra_point.push_back(1);
+    p.extra_flipped.push_back(0);
+    VertexCandidates cand;
+    const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(10, 0), 1, p, 1, &cand);
+    ASSERT_EQ(pos.size(), 1u);
+    ASSERT_EQ(cand.vertex.size(), 1u);
+    EXPECT_EQ(cand.preferred[0], 2);
+    ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
+    EXPECT_TRUE((cand.position[0] == own && cand.position[1] == onBoundary) ||
+                (cand.position[0] == onBoundary && cand.position[1] == own));
+}
