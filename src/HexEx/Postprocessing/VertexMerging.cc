@@ -54,6 +54,27 @@ void moveToFront(std::vector<Vec3d>& v, const Vec3d& x, double tol) {
     else std::rotate(v.begin(), it, it + 1);
 }
 
+/// Distance of @p x to the triangle @p a, @p b, @p c (closest point by regions).
+double triangleDistance(const Vec3d& x, const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+    const Vec3d ab = b - a, ac = c - a, ax = x - a;
+    const double d1 = ab | ax, d2 = ac | ax;
+    if (d1 <= 0 && d2 <= 0) return ax.norm();
+    const Vec3d bx = x - b;
+    const double d3 = ab | bx, d4 = ac | bx;
+    if (d3 >= 0 && d4 <= d3) return bx.norm();
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0 && d1 >= 0 && d3 <= 0) return (x - (a + ab * (d1 / (d1 - d3)))).norm();
+    const Vec3d cx = x - c;
+    const double d5 = ab | cx, d6 = ac | cx;
+    if (d6 >= 0 && d5 <= d6) return cx.norm();
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0 && d2 >= 0 && d6 <= 0) return (x - (a + ac * (d2 / (d2 - d6)))).norm();
+    const double va = d3 * d6 - d5 * d4;
+    if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) return (x - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))))).norm();
+    const double den = 1.0 / (va + vb + vc);
+    return (x - (a + ab * (vb * den) + ac * (vc * den))).norm();
+}
+
 /// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
@@ -101,6 +122,22 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     }
     const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
 
+    // Positions of the tet mesh's boundary vertices, sorted by x (for the majority rule of
+    // boundary classes; only maps with annihilated darts have extras and need them).
+    std::vector<Vec3d> boundaryVertices;
+    if (!darts.extra_dart.empty()) {
+        for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
+            if (mesh.is_boundary(VertexHandle(static_cast<int>(v)))) boundaryVertices.push_back(mesh.position(VertexHandle(static_cast<int>(v))));
+        std::sort(boundaryVertices.begin(), boundaryVertices.end(), [](const Vec3d& a, const Vec3d& b) { return a[0] < b[0]; });
+    }
+    auto atBoundaryVertex = [&](const Vec3d& x) {
+        auto it = std::lower_bound(boundaryVertices.begin(), boundaryVertices.end(), x[0] - tol,
+                                   [](const Vec3d& a, double val) { return a[0] < val; });
+        for (; it != boundaryVertices.end() && (*it)[0] <= x[0] + tol; ++it)
+            if ((*it - x).norm() <= tol) return true;
+        return false;
+    };
+
     std::vector<Vec3d> out(nc);
     // Classes are independent: parallel chunks, each with its own scratch buffers and its
     // own list of ambiguous classes (concatenated in chunk order: ascending classes).
@@ -140,7 +177,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             // only the darts of the few hex corners the fold covers that survived the
             // annihilation, the proper preimage those of all the others (issue 22: 19-80
             // darts against 2-10). Such a majority is the only preferred candidate.
-            Vec3d major;
+            Vec3d major(0, 0, 0);
             const bool hasMajor = majorityPosition(all, tol, major);
             for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
                 const auto q = static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]);
@@ -220,15 +257,27 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 for (const Vec3d& q : dist) known = known || (p - q).norm() <= tol;
                 if (!known && residualOf(p) <= resTol) dist.push_back(p);
             }
-            if (hasMajor) {
-                bool known = false;
-                for (const Vec3d& q : dist) known = known || (major - q).norm() <= tol;
-                if (!known) dist.push_back(major);
-            }
             std::vector<Vec3d> extra;
             for (const Vec3d& p : flippedExtras(dist))
                 if (residualOf(p) <= resTol) extra.push_back(p);
-            if (dist.size() == 1 && extra.empty()) {
+            // On a smooth part of the boundary a fold copy and the proper preimage both lie on
+            // the surface up to its curvature, and the planes cannot tell them apart: the
+            // darts decide. A majority that lies clearly off the planes (its distance to them
+            // more than a quarter of its distance to the plane rule's choice: a copy inside
+            // the volume, or on one side of a sharp edge) is not taken, nor one that is not on
+            // one of those boundary faces themselves (a plane goes on past the face's edges)
+            // or at a boundary vertex of the tet mesh.
+            auto onBoundaryFace = [&](const Vec3d& x) {
+                for (int hf : planes) {
+                    const auto v = mesh.halfface_vertices(HalfFaceHandle(hf));
+                    if (triangleDistance(x, mesh.position(v[0]), mesh.position(v[1]), mesh.position(v[2])) <= 1e3 * tol) return true;
+                }
+                return false;
+            };
+            auto takeMajor = [&](const Vec3d& choice) {
+                return hasMajor && std::sqrt(residualOf(major)) <= 0.25 * (major - choice).norm() + tol && (onBoundaryFace(major) || atBoundaryVertex(major));
+            };
+            if (dist.size() == 1 && extra.empty() && !(hasMajor && (major - dist[0]).norm() > tol && takeMajor(dist[0]))) {
                 out[l] = dist[0];
                 continue;
             }
@@ -249,12 +298,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             for (std::size_t k = 0; k < dist.size(); ++k)
                 if (k != best && residual[k] > resTol) ordered.push_back(dist[k]);
             ordered.insert(ordered.end(), extra.begin(), extra.end());
-            // On a smooth part of the boundary a fold copy and the proper preimage both lie on
-            // the surface up to its curvature, and the planes cannot tell them apart: the
-            // darts decide. A majority that lies clearly off the planes (its distance to them
-            // more than a quarter of its distance to the plane rule's choice: a copy inside
-            // the volume, or on one side of a sharp edge) is not taken.
-            if (hasMajor && std::sqrt(residualOf(major)) <= 0.25 * (major - dist[best]).norm() + tol) {
+            if (takeMajor(dist[best])) {
                 moveToFront(ordered, major, tol);
                 preferred = 1;
             }

@@ -57,8 +57,8 @@ struct VertexCandidates {
 /// dart's boundary h-vertex is then just one more candidate). A position held by more than
 /// half of the class's surviving darts is its only preferred candidate (first), for
 /// boundary classes only if its distance to the boundary planes is at most a quarter of
-/// its distance to the plane rule's choice (issue 22; Documentation/algorithm.md,
-/// "Vertices").
+/// its distance to the plane rule's choice and it lies on one of those boundary faces or
+/// at a boundary vertex of @p mesh (issue 22; Documentation/algorithm.md, "Vertices").
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
