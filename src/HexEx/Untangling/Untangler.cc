@@ -161,6 +161,8 @@ public:
     /// Exponent p of the corner energies in the sum (1: the paper's energy).
     void setPower(double p) { power_ = p; }
     const std::vector<int>& elements() const { return elems_; }
+    /// True if vertex @p v is a variable of this problem.
+    bool isFree(int v) const { return slot_[static_cast<std::size_t>(v)] >= 0; }
     int variables() const { return n_vars_; }
 
     /// Projects boundary vertices onto their curve/surface and resets bases (q = 0).
@@ -344,40 +346,44 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, doub
         eps = dmin < mu ? 2.0 * std::sqrt(mu * (mu - dmin)) : 1e-10;
         eps = std::max(eps, 1e-12);
     }
-    const int quality_iterations = opt.quality_iterations;
-    if (pb.invertedElements() == 0 && quality_iterations > 0 && pb.work() < budget) {
-        // Quality: L-BFGS on the sum of the corner energies to the power quality_power (the
-        // worst corners dominate) with eps so small that the energy is the barrier, in rounds
-        // of 5 iterations; the round with the largest worst scaled Jacobian and no inverted
-        // hex is kept (the energy is not the scaled Jacobian, so it can also go down).
-        std::vector<Vec3d> best = pb.positions();
-        double best_sj = pb.minScaledJacobian();
-        pb.setPower(opt.quality_power);
-        const double eps_q = 1e-8;
-        LbfgsOptions lq;
-        lq.relative_decrease = 1e-6;
-        for (int done = 0; done < quality_iterations;) {
-            lq.max_iterations = std::min(5, quality_iterations - done);
-            q.setZero(pb.variables());
-            auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& gr) { return pb.energy(x, eps_q, &gr, nullptr); };
-            const LbfgsResult r = minimizeLbfgs(f, q, lq);
-            rep.quality_iterations += r.iterations;
-            done += std::max(r.iterations, 1);
-            pb.energy(q, eps_q, nullptr, nullptr);
-            pb.rebase();
-            if (pb.invertedElements() > 0) break;
-            const double sj = pb.minScaledJacobian();
-            if (sj > best_sj) {
-                best_sj = sj;
-                best = pb.positions();
-            }
-            if (r.iterations < lq.max_iterations) break;  // converged
-        }
-        pb.setPower(1);
-        pb.restorePositions(best);
-    }
     budget -= pb.work();
     return pb.invertedElements() == 0;
+}
+
+/// Quality rounds on an untangled problem @p pb: L-BFGS on the sum of the corner energies to
+/// the power quality_power (the worst corners dominate) with eps so small that the energy is
+/// the barrier, 5 iterations a round, quality_iterations in all; the round with the largest
+/// worst scaled Jacobian of the elements and no inverted hex is kept (the energy is not the
+/// scaled Jacobian, so a round can also lower it).
+void improveQuality(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, double& budget) {
+    if (pb.freeVertices() == 0 || pb.invertedElements() > 0) return;
+    std::vector<Vec3d> best = pb.positions();
+    double best_sj = pb.minScaledJacobian();
+    pb.setPower(opt.quality_power);
+    const double eps_q = 1e-8;
+    LbfgsOptions lq;
+    lq.relative_decrease = 1e-6;
+    Eigen::VectorXd q;
+    for (int done = 0; done < opt.quality_iterations && pb.work() < budget;) {
+        lq.max_iterations = std::min(5, opt.quality_iterations - done);
+        q.setZero(pb.variables());
+        auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& gr) { return pb.energy(x, eps_q, &gr, nullptr); };
+        const LbfgsResult r = minimizeLbfgs(f, q, lq);
+        rep.quality_iterations += r.iterations;
+        done += std::max(r.iterations, 1);
+        pb.energy(q, eps_q, nullptr, nullptr);
+        pb.rebase();
+        if (pb.invertedElements() > 0) break;
+        const double sj = pb.minScaledJacobian();
+        if (sj > best_sj) {
+            best_sj = sj;
+            best = pb.positions();
+        }
+        if (r.iterations < lq.max_iterations) break;  // converged
+    }
+    pb.setPower(1);
+    pb.restorePositions(best);
+    budget -= pb.work();
 }
 
 } // namespace
@@ -515,7 +521,26 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
         ++rep.attempts;
         rep.rings = whole ? -1 : rings;
         rep.free_vertices = static_cast<long>(pb.freeVertices());
-        if (pb.freeVertices() > 0) minimise(pb, options, rep, budget);
+        if (pb.freeVertices() > 0 && minimise(pb, options, rep, budget) && options.quality_iterations > 0) {
+            // Quality: only the free vertices of the hexes whose scaled Jacobian is below
+            // quality_threshold move (far fewer than the whole neighbourhood, usually).
+            std::vector<char> low(nv, 0);
+            std::vector<int> low_vertices;
+            for (const int e : pb.elements()) {
+                std::array<Vec3d, 8> p;
+                for (std::size_t k = 0; k < 8; ++k)
+                    p[k] = mesh.vertices[static_cast<std::size_t>(mesh.hexes[static_cast<std::size_t>(e)][k])];
+                if (hexScaledJacobian(p) >= options.quality_threshold) continue;
+                for (const int v : mesh.hexes[static_cast<std::size_t>(e)])
+                    if (!low[static_cast<std::size_t>(v)] && pb.isFree(v)) {
+                        low[static_cast<std::size_t>(v)] = 1;
+                        low_vertices.push_back(v);
+                    }
+            }
+            std::sort(low_vertices.begin(), low_vertices.end());
+            Problem pq(mesh, options, proj.get(), kind, low_vertices, vh, h);
+            improveQuality(pq, options, rep, budget);
+        }
         inverted.clear();
         for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
             if (minCornerDet(mesh.vertices, mesh.hexes[c]) <= 0) inverted.push_back(static_cast<int>(c));

@@ -44,9 +44,11 @@ struct UntangleOptions {
     int max_outer_iterations = 60; ///< regularisation steps (eps updates) per attempt
     int max_lbfgs_iterations = 300;///< L-BFGS iterations per regularisation step
     /// After a neighbourhood is untangled: L-BFGS iterations at most on the corner energies
-    /// to the power quality_power (raises the worst scaled Jacobian; undone if it does not). 0: off.
+    /// to the power quality_power, moving the vertices of its hexes with a scaled Jacobian
+    /// below quality_threshold (raises the worst scaled Jacobian; undone if it does not). 0: off.
     int quality_iterations = 10;
     double quality_power = 4;      ///< see quality_iterations
+    double quality_threshold = 0.3;///< the quality iterations move the vertices of hexes with a scaled Jacobian below this
     double feature_angle_deg = 40; ///< surface edges with a larger normal angle are feature curves
     double theta = 1.0 / 128;      ///< weight of the volume term g in the energy (shape term f: 1 - theta)
     /// If hexes stay inverted with vertices on feature curves or corners, let those vertices
