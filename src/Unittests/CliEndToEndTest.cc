@@ -465,3 +465,20 @@ TEST_F(CliEndToEndTest, UntangleAFoldedCylinderInExtractAndAlone) {
     r = run({"validate", path("alone.vtu"), "--json"});
     EXPECT_EQ(r.status, 0) << r.out << r.err;
 }
+
+TEST_F(CliEndToEndTest, UntangleReleasesFeatureVerticesUnlessKept) {
+    // The bundled cut-out of S1 x2: 3 inverted hexes on a feature curve of the boundary.
+    const std::string fold = std::string(HEXEX_SOURCE_DIR) + "/src/Unittests/data/untangle/s1x2_feature_fold.vtk";
+    RunResult r = run({"untangle", fold, "-o", path("fold.vtk"), "--quality-iterations", "0"});
+    ASSERT_EQ(r.status, 0) << r.out << r.err;
+    EXPECT_NE(r.out.find("untangle: inverted hexes 3 -> 0 of 276"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("vertices on feature curves/corners released onto the surface"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("(+0 for quality)"), std::string::npos) << r.out;
+    r = run({"untangle", fold, "-o", path("kept.vtk"), "--keep-features"});
+    EXPECT_EQ(r.status, 3) << r.out << r.err;
+    EXPECT_NE(r.err.find("3 hexes remain inverted; 3 of them have vertices held on feature curves or corners"),
+              std::string::npos)
+        << r.err;
+    r = run({"untangle", fold, "-o", path("x.vtk"), "--quality-iterations", "-1"});
+    EXPECT_EQ(r.status, 2) << r.out << r.err;
+}
