@@ -288,6 +288,17 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
                 // the line as the dart there would, to the next grid point, in this tet first.
                 // Annihilation would have joined this dart to the one found that way.
                 if (++passed > maxPassed) return kUnconnected;
+                if (cancelled == 1) {
+                    // A run of points along the line that this tet owns entirely and that are
+                    // cancelled: none has a dart in any tet, and at each the walk would go on
+                    // the same way; jump to the last of them (a needle's walk passes
+                    // thousands of such points in one large tet).
+                    const Vec3i u = dirVec(dirNeg(target.d[0]));
+                    for (Vec3i next = target.z + u; set.cancelledPoint(t, next) == 1; next += u) {
+                        if (++passed > maxPassed) return kUnconnected;
+                        target.z = next;
+                    }
+                }
                 start = Desc{target.z, {dirNeg(target.d[0]), target.d[1], target.d[2]}};
                 target = alphaStar(0, start);
                 --step;
