@@ -307,7 +307,7 @@ bool minimise(Problem& pb, const UntangleOptions& opt, UntangleReport& rep, doub
     if (eps < 1e-6) eps = 1e-6;
     LbfgsOptions lo;
     lo.max_iterations = opt.max_lbfgs_iterations;
-    lo.relative_decrease = 1e-5;
+    lo.relative_decrease = 3e-4;
     int steps_without_progress = 0;
     long fewest_inverted = std::numeric_limits<long>::max();
     double best_dmin = -std::numeric_limits<double>::infinity();
