@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,8 +16,10 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 using namespace HexEx;
@@ -106,19 +109,44 @@ TEST(HexExFileTest, MissingFile) {
         readHexExFile("/nonexistent/dir/missing.hexex");
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        const std::string msg = e.what();
-        EXPECT_NE(msg.find("/nonexistent/dir/missing.hexex"), std::string::npos) << msg;
-        EXPECT_NE(msg.find("cannot open file"), std::string::npos) << msg;
+        EXPECT_STREQ(e.what(), "/nonexistent/dir/missing.hexex: cannot open file: No such file or directory");
     }
 }
 
 TEST(HexExFileTest, DirectoryIsNotAFile) {
+    const std::string dir = std::filesystem::temp_directory_path().string();
     try {
-        readHexExFile(std::filesystem::temp_directory_path().string());
+        readHexExFile(dir);
         FAIL() << "no exception";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot open file"), std::string::npos) << e.what();
+        EXPECT_EQ(std::string(e.what()), dir + ": cannot open file: is a directory");
     }
+}
+
+// Files are memory-mapped; an empty file (which cannot be mapped) and a named pipe (not a
+// regular file) are read into memory instead, with the same results and errors.
+TEST(HexExFileTest, EmptyFileAndNamedPipeAreReadWithoutMapping) {
+    const auto dir = std::filesystem::temp_directory_path();
+    const std::string empty = (dir / ("hexex_empty_" + std::to_string(::getpid()) + ".hexex")).string();
+    { std::ofstream(empty, std::ios::binary); }
+    try {
+        readHexExFile(empty);
+        ADD_FAILURE() << "no exception";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()), empty + ":1: unexpected end of file: expected vertex count");
+    }
+    std::filesystem::remove(empty);
+
+    const std::string fifo = (dir / ("hexex_fifo_" + std::to_string(::getpid()) + ".hexex")).string();
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+    const std::string text = join(validLines());
+    std::thread writer([&] { std::ofstream(fifo, std::ios::binary) << text; });
+    const ParametrizedTetMesh fromPipe = readHexExFile(fifo);
+    writer.join();
+    std::filesystem::remove(fifo);
+    const ParametrizedTetMesh fromText = readHexExBuffer(text, "test.hexex");
+    EXPECT_EQ(fromPipe.mesh.n_cells(), 2u);
+    EXPECT_EQ(fromPipe.params, fromText.params);
 }
 
 TEST(HexExFileTest, EmptyFile) { expectError("", 1, "unexpected end of file: expected vertex count"); }

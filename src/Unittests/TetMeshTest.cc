@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <map>
 #include <set>
 #include <stdexcept>
 
@@ -248,9 +250,105 @@ TEST(TetMesh, ThreeTetsOnOneFaceThrow) {
         m.build_adjacency();
         FAIL() << "expected InputError";
     } catch (const InputError& e) {
-        EXPECT_NE(std::string(e.what()).find("non-manifold"), std::string::npos) << e.what();
+        EXPECT_STREQ(e.what(), "non-manifold mesh: face (0, 2, 1) of tet 0 is shared by 3 tets");
     }
     EXPECT_FALSE(m.has_adjacency());
+}
+
+TEST(TetMesh, AdjacencyMatchesABruteForceReferenceOnAnyThreadCount) {
+    // A cube mesh large enough for the parallel paths (>= 20,000 vertices, >= 50,000 tets),
+    // its vertices and tets shuffled so that no order is inherited from the generator.
+    const TetMesh cube = generateCube(28, 1).mesh;
+    const std::size_t nv = cube.n_vertices(), nc = cube.n_cells();
+    ASSERT_GE(nv, 20000u);
+    ASSERT_GE(nc, 50000u);
+    std::vector<int> vperm(nv), cperm(nc);
+    for (std::size_t i = 0; i < nv; ++i) vperm[i] = int(i);
+    for (std::size_t i = 0; i < nc; ++i) cperm[i] = int(i);
+    std::uint64_t seed = 12345;
+    auto next = [&](std::size_t bound) {
+        seed = seed * 6364136223846793005ULL + 1442695040888963407ULL;
+        return std::size_t(seed >> 33) % bound;
+    };
+    for (std::size_t i = nv - 1; i > 0; --i) std::swap(vperm[i], vperm[next(i + 1)]);
+    for (std::size_t i = nc - 1; i > 0; --i) std::swap(cperm[i], cperm[next(i + 1)]);
+    std::vector<Vec3d> pts(nv);
+    for (std::size_t v = 0; v < nv; ++v) pts[std::size_t(vperm[v])] = cube.position(VertexHandle(int(v)));
+    std::vector<std::array<int, 4>> tets(nc);
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int i = 0; i < 4; ++i)
+            tets[std::size_t(cperm[c])][std::size_t(i)] = vperm[cube.cell_vertex(CellHandle(int(c)), i).uidx()];
+
+    // Reference opposites: halffaces keyed by their sorted vertices.
+    std::map<std::array<int, 3>, std::vector<int>> byFace;
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int i = 0; i < 4; ++i) {
+            std::array<int, 3> key;
+            for (int k = 0; k < 3; ++k) key[std::size_t(k)] = tets[c][std::size_t(TetMesh::kFaceCorners[i][k])];
+            std::sort(key.begin(), key.end());
+            byFace[key].push_back(int(4 * c) + i);
+        }
+    std::vector<int> refOpposite(4 * nc, -1);
+    for (const auto& f : byFace) {
+        ASSERT_LE(f.second.size(), 2u);
+        if (f.second.size() == 2) {
+            refOpposite[std::size_t(f.second[0])] = f.second[1];
+            refOpposite[std::size_t(f.second[1])] = f.second[0];
+        }
+    }
+
+    std::vector<TetMesh> meshes;
+    for (int threads = 1; threads <= 3; ++threads) {
+        meshes.push_back(makeMesh(pts, tets));
+        meshes.back().build_adjacency(threads);
+    }
+    const TetMesh& m = meshes[0];
+    for (std::size_t hf = 0; hf < 4 * nc; ++hf)
+        ASSERT_EQ(m.opposite_halfface(HalfFaceHandle(int(hf))).idx(), refOpposite[hf]) << "halfface " << hf;
+    // Every tet edge slot names the edge with its two corners; the ring of an edge holds
+    // exactly the tets that contain it and starts where the documented rule says: the
+    // last tet (in tet order) with a boundary face through the edge, else the first tet.
+    std::map<int, std::vector<int>> tetsOfEdge;
+    std::map<int, int> startOfEdge;
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int k = 0; k < 6; ++k) {
+            const EdgeHandle e = m.cell_edge(CellHandle(int(c)), k);
+            const auto ev = m.edge_vertices(e);
+            const int a = TetMesh::kEdgeCorners[k][0], b = TetMesh::kEdgeCorners[k][1];
+            const int x = tets[c][std::size_t(a)], y = tets[c][std::size_t(b)];
+            ASSERT_EQ(ev[0].idx(), std::min(x, y));
+            ASSERT_EQ(ev[1].idx(), std::max(x, y));
+            tetsOfEdge[e.idx()].push_back(int(c));
+            for (int j = 0; j < 4; ++j)
+                if (j != a && j != b && refOpposite[4 * c + std::size_t(j)] < 0) startOfEdge[e.idx()] = int(c);
+            startOfEdge.emplace(e.idx(), int(c));
+        }
+    ASSERT_EQ(tetsOfEdge.size(), m.n_edges());
+    for (const auto& [e, cells] : tetsOfEdge) {
+        const auto ring = m.edge_cells(EdgeHandle(e));
+        std::vector<int> got(ring.first, ring.second);
+        ASSERT_EQ(got.front(), startOfEdge.at(e)) << "edge " << e;
+        std::sort(got.begin(), got.end());
+        ASSERT_EQ(got, cells) << "edge " << e;
+    }
+    // The same arrays for any thread count.
+    for (std::size_t t = 1; t < meshes.size(); ++t) {
+        const TetMesh& o = meshes[t];
+        ASSERT_EQ(o.n_faces(), m.n_faces());
+        ASSERT_EQ(o.n_edges(), m.n_edges());
+        for (std::size_t hf = 0; hf < 4 * nc; ++hf) {
+            ASSERT_EQ(o.opposite_halfface(HalfFaceHandle(int(hf))), m.opposite_halfface(HalfFaceHandle(int(hf))));
+            ASSERT_EQ(o.face(HalfFaceHandle(int(hf))), m.face(HalfFaceHandle(int(hf))));
+        }
+        for (std::size_t c = 0; c < nc; ++c)
+            for (int k = 0; k < 6; ++k) ASSERT_EQ(o.cell_edge(CellHandle(int(c)), k), m.cell_edge(CellHandle(int(c)), k));
+        for (std::size_t e = 0; e < m.n_edges(); ++e) {
+            const auto a = m.edge_cells(EdgeHandle(int(e))), b = o.edge_cells(EdgeHandle(int(e)));
+            ASSERT_TRUE(std::equal(a.first, a.second, b.first, b.second)) << "edge " << e << ", " << t + 1 << " threads";
+            ASSERT_EQ(o.is_boundary(EdgeHandle(int(e))), m.is_boundary(EdgeHandle(int(e))));
+        }
+        for (std::size_t v = 0; v < nv; ++v) ASSERT_EQ(o.is_boundary(VertexHandle(int(v))), m.is_boundary(VertexHandle(int(v))));
+    }
 }
 
 TEST(TetMesh, ManifoldPairAndAdjacencyInvalidation) {

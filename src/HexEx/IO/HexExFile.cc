@@ -2,6 +2,7 @@
 /// Implementation of the `.hexex` reader (in-memory tokenizer with std::from_chars) and writer.
 
 #include "HexExFile.hh"
+#include "FileBytes.hh"
 #include "ReaderSupport.hh"
 #include "TextParsing.hh"
 
@@ -93,15 +94,24 @@ private:
 const char* const kAxisName[3] = {"x", "y", "z"};
 const char* const kParamName[3] = {"u", "v", "w"};
 
-/// Appends "tet K (line L), ..." for up to five tets of @p list.
-std::string listTets(const std::vector<std::size_t>& list, const std::vector<int>& lines) {
-    std::string s;
-    const std::size_t n = std::min<std::size_t>(list.size(), 5);
-    for (std::size_t i = 0; i < n; ++i) {
-        if (i) s += ", ";
-        s += "tet " + std::to_string(list[i]) + " (line " + std::to_string(lines[list[i]]) + ")";
+/// Tets of one orientation: how many, and the first five (all an error message names).
+struct TetList {
+    std::size_t count = 0;          ///< number of such tets
+    std::vector<std::size_t> first;  ///< the first (at most five) of them
+    /// Counts tet @p c.
+    void add(std::size_t c) {
+        if (count++ < 5) first.push_back(c);
     }
-    if (list.size() > n) s += " and " + std::to_string(list.size() - n) + " more";
+};
+
+/// "tet K (line L), ..." for the first five tets of @p list, then "and N more".
+std::string listTets(const TetList& list, const std::vector<int>& lines) {
+    std::string s;
+    for (std::size_t i = 0; i < list.first.size(); ++i) {
+        if (i) s += ", ";
+        s += "tet " + std::to_string(list.first[i]) + " (line " + std::to_string(lines[list.first[i]]) + ")";
+    }
+    if (list.count > list.first.size()) s += " and " + std::to_string(list.count - list.first.size()) + " more";
     return s;
 }
 
@@ -115,7 +125,7 @@ constexpr int kTetTokens = 16;
 /// or non-finite number, an index out of range, a repeated vertex): the caller then runs
 /// the sequential parser, which reports the exact error.
 bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, long long nv, long long nc,
-                       std::vector<std::array<int, 4>>& cells, CornerParams& params, std::vector<int>& lines,
+                       std::vector<std::array<VertexHandle, 4>>& cells, CornerParams& params, std::vector<int>& lines,
                        int threads) {
     const std::size_t n = text.size();
     const int k = 4 * threads;  // more chunks than threads: lines are not all equally long
@@ -189,7 +199,7 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
                     long long idx = 0;
                     good = detail::parseIndex(tok, nv, idx);
                     auto& cv = cells[c];
-                    cv[static_cast<std::size_t>(f)] = static_cast<int>(idx);
+                    cv[static_cast<std::size_t>(f)] = VertexHandle(static_cast<int>(idx));
                     if (f == 0) lines[c] = line;
                     // A repeated vertex (the sequential parser names it) once the tet's
                     // indices are complete; a tet cut by a chunk boundary is checked afterwards.
@@ -248,7 +258,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     const long long nc = in.count("tet count", kMaxTets);
     if (nc == 0) in.fail(in.line(), "mesh has no tets (tet count is 0)");
     const std::size_t ncReserve = static_cast<std::size_t>(std::min<long long>(nc, in.remaining() / 31 + 1));
-    std::vector<std::array<int, 4>> cells;
+    std::vector<std::array<VertexHandle, 4>> cells;
     CornerParams params;
     std::vector<int> lines;  // line of each tet's first token
     in.setNote("file declares " + std::to_string(nc) + " tets");
@@ -268,7 +278,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
     lines.reserve(ncReserve);
     for (long long c = parsed ? nc : 0; c < nc; ++c) {
         const auto tetDesc = [&] { return "tet " + std::to_string(c); };
-        std::array<int, 4> cv;
+        std::array<VertexHandle, 4> cv;
         for (int i = 0; i < 4; ++i) {
             const auto desc = [&] { return "vertex index " + std::to_string(i) + " of " + tetDesc(); };
             if (i == 0 && in.more()) lines.push_back(static_cast<int>(in.line()));
@@ -276,7 +286,7 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
             if (idx < 0 || idx >= nv)
                 in.fail(in.line(), "vertex index " + std::to_string(idx) + " of tet " + std::to_string(c) +
                                        " out of range [0, " + std::to_string(nv) + ")");
-            cv[i] = static_cast<int>(idx);
+            cv[i] = VertexHandle(static_cast<int>(idx));
             for (int j = 0; j < i; ++j)
                 if (cv[j] == cv[i])
                     in.fail(in.line(), "tet " + std::to_string(c) + " repeats vertex " + std::to_string(idx));
@@ -301,17 +311,18 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
                        for (std::size_t c = b; c < e; ++c) {
                            const auto& cv = cells[c];
                            sign[c] = static_cast<signed char>(
-                               orient3d(positions[cv[0]], positions[cv[1]], positions[cv[2]], positions[cv[3]]));
+                               orient3d(positions[cv[0].uidx()], positions[cv[1].uidx()], positions[cv[2].uidx()],
+                                        positions[cv[3].uidx()]));
                        }
                    });
-    std::vector<std::size_t> negative, positive;
+    TetList negative, positive;
     for (std::size_t c = 0; c < cells.size(); ++c) {
         if (sign[c] == 0) in.fail(lines[c], "tet " + std::to_string(c) + " is degenerate in 3D (zero volume)");
-        (sign[c] < 0 ? negative : positive).push_back(c);
+        (sign[c] < 0 ? negative : positive).add(c);
     }
     std::vector<std::string> warnings;
     bool reoriented = false;
-    if (positive.empty()) {
+    if (positive.count == 0) {
         for (std::size_t c = 0; c < cells.size(); ++c) {  // swap corners 2 and 3 (and their parameters)
             std::swap(cells[c][2], cells[c][3]);
             std::swap(params[c][2], params[c][3]);
@@ -319,32 +330,29 @@ ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& na
         reoriented = true;
         warnings.push_back(name + ": mesh is mirrored: all " + std::to_string(cells.size()) +
                            " tets were negatively oriented and have been reoriented");
-    } else if (!negative.empty()) {
+    } else if (negative.count > 0) {
         const std::string total = std::to_string(cells.size());
-        if (negative.size() <= positive.size())
-            in.fail(lines[negative.front()],
-                    "inconsistent tet orientation: " + std::to_string(negative.size()) + " of " + total +
+        if (negative.count <= positive.count)
+            in.fail(lines[negative.first.front()],
+                    "inconsistent tet orientation: " + std::to_string(negative.count) + " of " + total +
                         " tets are inverted in 3D (negatively oriented): " + listTets(negative, lines));
-        in.fail(lines[positive.front()],
-                "inconsistent tet orientation: " + std::to_string(positive.size()) + " of " + total +
+        in.fail(lines[positive.first.front()],
+                "inconsistent tet orientation: " + std::to_string(positive.count) + " of " + total +
                     " tets are positively oriented while the others are inverted in 3D: " +
                     listTets(positive, lines));
     }
 
-    // Assemble the mesh.
-    ParametrizedTetMesh pm;
-    pm.mesh.reserve(positions.size(), cells.size());
-    for (const auto& p : positions) pm.mesh.add_vertex(p);
+    // Assemble the mesh (the parsed arrays become the mesh's own).
     std::vector<char> used(positions.size(), 0);
-    for (const auto& cv : cells) {
-        pm.mesh.add_cell({VertexHandle(cv[0]), VertexHandle(cv[1]), VertexHandle(cv[2]), VertexHandle(cv[3])});
-        for (int v : cv) used[static_cast<std::size_t>(v)] = 1;
-    }
-    pm.params = std::move(params);
+    for (const auto& cv : cells)
+        for (const VertexHandle v : cv) used[v.uidx()] = 1;
     const auto nUnused = std::count(used.begin(), used.end(), 0);
     if (nUnused > 0)
         warnings.push_back(name + ": " + std::to_string(nUnused) + " of " + std::to_string(positions.size()) +
                            " vertices are not used by any tet");
+    ParametrizedTetMesh pm;
+    pm.mesh.assign(std::move(positions), std::move(cells));
+    pm.params = std::move(params);
 
     detail::finishTetMesh(pm, name, nThreads);
 
@@ -360,7 +368,8 @@ ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, R
 }
 
 ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report) {
-    return readHexExBuffer(detail::readWholeFile(path), path, report);
+    const detail::FileBytes bytes(path);
+    return readHexExBuffer(bytes.view(), path, report);
 }
 
 void writeHexExStream(std::ostream& out, const ParametrizedTetMesh& pm) {

@@ -26,6 +26,16 @@ CellHandle TetMesh::add_cell(const std::array<VertexHandle, 4>& v) {
     return CellHandle(static_cast<int>(cells_.size()) - 1);
 }
 
+void TetMesh::assign(std::vector<Vec3d>&& positions, std::vector<std::array<VertexHandle, 4>>&& cells) {
+    positions_ = std::move(positions);
+    cells_ = std::move(cells);
+    adjacency_built_ = false;
+    vprops_.resize(positions_.size());
+    cprops_.resize(cells_.size());
+    hfprops_.resize(4 * cells_.size());
+    ccprops_.resize(4 * cells_.size());
+}
+
 void TetMesh::reserve(std::size_t nv, std::size_t nc) {
     positions_.reserve(nv);
     cells_.reserve(nc);
@@ -71,63 +81,66 @@ void TetMesh::build_adjacency(int threads) {
             for (auto v : cells_[c]) vc_idx_[fill[v.uidx()]++] = static_cast<int>(c);
     }
 
-    // Opposite halffaces. Each shared face is found once, from the tet with the smaller
-    // index: halfface (c, i) searches the star of its least-used vertex for a tet c2 > c
-    // with the same three vertices (tets in parallel, each writing only its own slots),
-    // then the matches are linked both ways.
-    std::vector<int> up(4 * nc, -1);
-    const int chunks = nc < 50000 ? 1 : resolveThreadCount(threads);
-    parallelChunks(nc, chunks, [&](int, std::size_t cb, std::size_t ce) {
-        for (std::size_t c = cb; c < ce; ++c)
-            for (int i = 0; i < 4; ++i) {
-                VertexHandle fv[3];
-                for (int k = 0; k < 3; ++k) fv[k] = cells_[c][kFaceCorners[i][k]];
-                int best = 0;
-                for (int k = 1; k < 3; ++k)
-                    if (vc_off_[fv[k].uidx() + 1] - vc_off_[fv[k].uidx()] <
-                        vc_off_[fv[best].uidx() + 1] - vc_off_[fv[best].uidx()])
-                        best = k;
-                int found = -1, n_found = 0;
-                // The star is sorted and holds c itself: only the tets after c are searched.
-                const int* star = vc_idx_.data();
-                const int o0 = static_cast<int>(std::upper_bound(star + vc_off_[fv[best].uidx()],
-                                                                 star + vc_off_[fv[best].uidx() + 1], static_cast<int>(c)) -
-                                                star);
-                for (int o = o0; o < vc_off_[fv[best].uidx() + 1]; ++o) {
-                    const int c2 = vc_idx_[o];
-                    const auto& cv = cells_[static_cast<std::size_t>(c2)];
-                    int mask = 0;
-                    for (int k = 0; k < 3; ++k)
-                        for (int j = 0; j < 4; ++j)
-                            if (cv[j] == fv[k]) mask |= 1 << j;
-                    // Three of the four corners match: the fourth (missing bit) is the opposite corner.
-                    static constexpr int kMissing[16] = {-1, -1, -1, -1, -1, -1, -1, 3, -1, -1, -1, 2, -1, 1, 0, -1};
-                    if (kMissing[mask] >= 0) {
-                        ++n_found;
-                        found = 4 * c2 + kMissing[mask];
-                    }
-                }
-                if (n_found > 1) {
-                    std::ostringstream os;
-                    os << "non-manifold mesh: face (" << fv[0] << ", " << fv[1] << ", " << fv[2] << ") of tet " << c
-                       << " is shared by " << (n_found + 1) << " tets";
-                    throw InputError(os.str());
-                }
-                up[4 * c + static_cast<std::size_t>(i)] = found;
-            }
-    });
+    // Opposite halffaces. Every face is matched within the bucket of its smallest vertex
+    // v: the halffaces of the tets around v whose smallest vertex is v, keyed by their
+    // other two vertices and sorted; equal keys are the two sides of one face. A halfface
+    // lies in exactly one bucket, so the vertices run in parallel and each writes only the
+    // slots of its own bucket. A key held by three or more halffaces is a non-manifold
+    // face; the one whose first tet and face come first is reported (for any thread count).
     opposite_.assign(4 * nc, -1);  // -1: boundary
-    for (std::size_t hf = 0; hf < 4 * nc; ++hf) {
-        const int found = up[hf];
-        if (found < 0) continue;
-        if (opposite_[hf] >= 0 || opposite_[static_cast<std::size_t>(found)] >= 0) {
-            std::ostringstream os;
-            os << "non-manifold mesh: tet " << hf / 4 << " repeats a face of tet " << found / 4;
-            throw InputError(os.str());
+    const int vchunks = nv < 20000 ? 1 : resolveThreadCount(threads);
+    std::vector<std::array<long long, 2>> badFace(static_cast<std::size_t>(std::max(1, vchunks)), {-1, 0});
+    parallelChunks(nv, vchunks, [&](int chunk, std::size_t vb, std::size_t ve) {
+        struct Side {
+            unsigned long long key;  // the other two vertices, smaller one in the high half
+            int hf;
+        };
+        std::vector<Side> bucket;
+        long long firstBad = -1, firstBadCount = 0;
+        for (std::size_t v = vb; v < ve; ++v) {
+            bucket.clear();
+            for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o) {
+                const int c = vc_idx_[o];
+                const auto& cv = cells_[static_cast<std::size_t>(c)];
+                for (int i = 0; i < 4; ++i) {
+                    if (cv[i].uidx() == v) continue;  // the face opposite v does not contain it
+                    int a = cv[kFaceCorners[i][0]].idx(), b = cv[kFaceCorners[i][1]].idx(), d = cv[kFaceCorners[i][2]].idx();
+                    if (a == static_cast<int>(v)) a = d;
+                    else if (b == static_cast<int>(v)) b = d;
+                    if (a < static_cast<int>(v) || b < static_cast<int>(v)) continue;  // another vertex's bucket
+                    if (b < a) std::swap(a, b);
+                    bucket.push_back({(static_cast<unsigned long long>(a) << 32) | static_cast<unsigned>(b), 4 * c + i});
+                }
+            }
+            std::sort(bucket.begin(), bucket.end(),
+                      [](const Side& x, const Side& y) { return x.key < y.key || (x.key == y.key && x.hf < y.hf); });
+            for (std::size_t k = 0; k < bucket.size();) {
+                std::size_t e = k + 1;
+                while (e < bucket.size() && bucket[e].key == bucket[k].key) ++e;
+                if (e - k == 2) {
+                    opposite_[static_cast<std::size_t>(bucket[k].hf)] = bucket[k + 1].hf;
+                    opposite_[static_cast<std::size_t>(bucket[k + 1].hf)] = bucket[k].hf;
+                } else if (e - k > 2 && (firstBad < 0 || bucket[k].hf < firstBad)) {
+                    firstBad = bucket[k].hf;
+                    firstBadCount = static_cast<long long>(e - k);
+                }
+                k = e;
+            }
         }
-        opposite_[hf] = found;
-        opposite_[static_cast<std::size_t>(found)] = static_cast<int>(hf);
+        badFace[static_cast<std::size_t>(chunk)] = {firstBad, firstBadCount};
+    });
+    std::array<long long, 2> bad = {-1, 0};
+    for (const auto& b : badFace)
+        if (b[0] >= 0 && (bad[0] < 0 || b[0] < bad[0])) bad = b;
+    if (bad[0] >= 0) {
+        const std::size_t c = static_cast<std::size_t>(bad[0] / 4);
+        const int i = static_cast<int>(bad[0] % 4);
+        std::ostringstream os;
+        os << "non-manifold mesh: face (" << cells_[c][kFaceCorners[i][0]] << ", " << cells_[c][kFaceCorners[i][1]] << ", "
+           << cells_[c][kFaceCorners[i][2]] << ") of tet " << c << " is shared by " << bad[1] << " tets";
+        throw InputError(os.str());
     }
+    const int chunks = nc < 50000 ? 1 : resolveThreadCount(threads);
 
     // Faces.
     // A halfface opens a new face unless its opposite comes first; faces are numbered in
@@ -170,6 +183,11 @@ void TetMesh::build_adjacency(int threads) {
 
     // Edges, grouped by smaller endpoint and sorted by the larger one: per vertex the
     // larger neighbours are counted, then (after a prefix sum) written, both in parallel.
+    // The second pass also does, for the edges of its vertex v (smaller endpoint), what
+    // needs the edge numbers: the tets' edge slots, the number of tets per edge and the
+    // start tet of every edge's walk below. The tets of an edge are all in the star of v,
+    // visited in tet order, so the start rule (the last boundary face met in tet order,
+    // else the first tet) does not depend on the thread count.
     auto largerNeighbours = [&](std::size_t v, std::vector<int>& nbrs) {
         nbrs.clear();
         for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
@@ -178,7 +196,6 @@ void TetMesh::build_adjacency(int threads) {
         std::sort(nbrs.begin(), nbrs.end());
         nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
     };
-    const int vchunks = nv < 20000 ? 1 : resolveThreadCount(threads);
     ve_off_.assign(nv + 1, 0);
     parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
         std::vector<int> nbrs;
@@ -191,47 +208,45 @@ void TetMesh::build_adjacency(int threads) {
     const std::size_t ne = static_cast<std::size_t>(ve_off_[nv]);
     edges_.resize(ne);
     ve_idx_.resize(ne);
+    cell_edges_.resize(6 * nc);
+    ec_off_.assign(ne + 1, 0);
+    std::vector<int> start(ne, -1);     // a cell of the edge, preferring one at the boundary
+    std::vector<int> start_hf(ne, -1);  // the halfface of start through which the walk must NOT leave
     parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
         std::vector<int> nbrs;
         for (std::size_t v = b; v < e; ++v) {
             largerNeighbours(v, nbrs);
+            const int first = ve_off_[v];
             for (std::size_t k = 0; k < nbrs.size(); ++k) {
-                const std::size_t id = static_cast<std::size_t>(ve_off_[v]) + k;
+                const std::size_t id = static_cast<std::size_t>(first) + k;
                 ve_idx_[id] = static_cast<int>(id);
                 edges_[id] = {VertexHandle(static_cast<int>(v)), VertexHandle(nbrs[k])};
             }
+            for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o) {
+                const std::size_t c = static_cast<std::size_t>(vc_idx_[o]);
+                const auto& cv = cells_[c];
+                for (int k = 0; k < 6; ++k) {
+                    const int a = kEdgeCorners[k][0], bb = kEdgeCorners[k][1];
+                    const int x = cv[a].idx(), y = cv[bb].idx();
+                    if (std::min(x, y) != static_cast<int>(v)) continue;  // another vertex's edge
+                    const int w = std::max(x, y);
+                    const int id = first + static_cast<int>(std::lower_bound(nbrs.begin(), nbrs.end(), w) - nbrs.begin());
+                    cell_edges_[6 * c + static_cast<std::size_t>(k)] = id;
+                    ++ec_off_[static_cast<std::size_t>(id) + 1];
+                    for (int j = 0; j < 4; ++j)
+                        if (j != a && j != bb && opposite_[4 * c + static_cast<std::size_t>(j)] < 0) {
+                            start[static_cast<std::size_t>(id)] = static_cast<int>(c);
+                            start_hf[static_cast<std::size_t>(id)] = static_cast<int>(4 * c) + j;
+                        }
+                    if (start[static_cast<std::size_t>(id)] < 0) start[static_cast<std::size_t>(id)] = static_cast<int>(c);
+                }
+            }
         }
-    });
-    cell_edges_.resize(6 * nc);
-    parallelChunks(nc, chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t c = b; c < e; ++c)
-            for (int k = 0; k < 6; ++k)
-                cell_edges_[6 * c + static_cast<std::size_t>(k)] =
-                    find_edge(cells_[c][kEdgeCorners[k][0]], cells_[c][kEdgeCorners[k][1]]).idx();
     });
 
     // Edge -> cells in cyclic order: walk across the faces that contain the edge.
-    ec_off_.assign(ne + 1, 0);
-    for (std::size_t c = 0; c < nc; ++c)
-        for (int k = 0; k < 6; ++k) ++ec_off_[cell_edges_[6 * c + k] + 1];
     for (std::size_t e = 0; e < ne; ++e) ec_off_[e + 1] += ec_off_[e];
-    ec_idx_.assign(ec_off_[ne], -1);
-    std::vector<int> start(ne, -1);     // a cell of the edge, preferring one at the boundary
-    std::vector<int> start_hf(ne, -1);  // the halfface of start through which the walk must NOT leave
-    for (std::size_t c = 0; c < nc; ++c)
-        for (int k = 0; k < 6; ++k) {
-            const int e = cell_edges_[6 * c + k];
-            const int a = kEdgeCorners[k][0], b = kEdgeCorners[k][1];
-            int others[2], n = 0;
-            for (int j = 0; j < 4; ++j)
-                if (j != a && j != b) others[n++] = j;
-            for (int s = 0; s < 2; ++s)
-                if (opposite_[4 * c + others[s]] < 0) {
-                    start[e] = static_cast<int>(c);
-                    start_hf[e] = static_cast<int>(4 * c + others[s]);
-                }
-            if (start[e] < 0) start[e] = static_cast<int>(c);
-        }
+    ec_idx_.assign(static_cast<std::size_t>(ec_off_[ne]), -1);
     boundary_edge_.assign(ne, 0);
     // Every edge fills only its own slots: edges in parallel.
     parallelChunks(ne, ne < 20000 ? 1 : resolveThreadCount(threads), [&](int, std::size_t eb, std::size_t ee) {

@@ -30,6 +30,10 @@ public:
     VertexHandle add_vertex(const Vec3d& p);
     /// Adds a tet with corners @p v (indices must be valid vertices). Invalidates adjacency.
     CellHandle add_cell(const std::array<VertexHandle, 4>& v);
+    /// Replaces all vertices and cells at once (what a reader does after parsing: no copy and
+    /// no per-element growth of the property arrays). Every corner index must be a valid
+    /// vertex. Invalidates adjacency.
+    void assign(std::vector<Vec3d>&& positions, std::vector<std::array<VertexHandle, 4>>&& cells);
     /// Reserve room for @p nv vertices and @p nc cells.
     void reserve(std::size_t nv, std::size_t nc);
 
