@@ -3,7 +3,7 @@
 /// files that cannot be mapped.
 
 #include "FileBytes.hh"
-#include "ReaderSupport.hh"
+#include "ReaderSupport.hh"  // readWholeFile() where mmap is not available
 
 #include "../Core/Error.hh"
 
@@ -48,9 +48,24 @@ FileBytes::FileBytes(const std::string& path) {
             return;
         }
     }
+    // Pipes, empty files, mmap refused: read from the descriptor already open (opening a
+    // pipe a second time would wait for a writer that has already gone).
+    char buf[1 << 16];
+    for (;;) {
+        const ssize_t n = ::read(fd, buf, sizeof buf);
+        if (n > 0) {
+            text_.append(buf, static_cast<std::size_t>(n));
+        } else if (n == 0) {
+            break;
+        } else if (errno != EINTR) {
+            ::close(fd);
+            throw InputError(path + ": read error");
+        }
+    }
     ::close(fd);
+#else
+    text_ = readWholeFile(path);
 #endif
-    text_ = readWholeFile(path);  // pipes, empty files, mmap refused
 }
 
 FileBytes::~FileBytes() { release(); }
