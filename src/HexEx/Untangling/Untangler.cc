@@ -602,18 +602,14 @@ UntangleReport untangleHexMesh(HexMesh& mesh, const UntangleOptions& options, co
             on_fixed_boundary += any_free && !poly && !feature && fixed;
         }
         rep.message = std::to_string(inverted.size()) + " hexes remain inverted";
-        if (stuck > 0)
-            rep.message += "; " + std::to_string(stuck) + " of them have no vertex that may move (all on a fixed "
-                           "boundary, feature corners or polyhedra), so the boundary itself forces the inversion";
-        if (at_polyhedra > 0)
-            rep.message += "; " + std::to_string(at_polyhedra) + " of them share vertices with non-hex cells "
-                           "(polyhedra), whose vertices do not move";
-        if (on_features > 0)
-            rep.message += "; " + std::to_string(on_features) + " of them have vertices held on feature curves or "
-                           "corners (features were not released)";
-        if (on_fixed_boundary > 0)
-            rep.message += "; " + std::to_string(on_fixed_boundary) + " of them have vertices on the fixed boundary, "
-                           "which may not admit a foldover-free placement";
+        const auto cause = [&](long count, const char* what) {
+            if (count > 0) rep.message += "; " + std::to_string(count) + " of them " + what;
+        };
+        cause(stuck, "have no vertex that may move (all on a fixed boundary, feature corners or polyhedra), so the "
+                     "boundary itself forces the inversion");
+        cause(at_polyhedra, "share vertices with non-hex cells (polyhedra), whose vertices do not move");
+        cause(on_features, "have vertices held on feature curves or corners (features were not released)");
+        cause(on_fixed_boundary, "have vertices on the fixed boundary, which may not admit a foldover-free placement");
         if (stuck + at_polyhedra + on_features + on_fixed_boundary < static_cast<long>(inverted.size()))
             rep.message += "; for " + std::to_string(static_cast<long>(inverted.size()) - stuck - at_polyhedra - on_features - on_fixed_boundary) +
                            " of them the minimisation found no foldover-free placement within its limits (" +
