@@ -126,8 +126,8 @@ TEST(ValidatorHonesty, PigAtSixTenthsIsValidAndTheSourceMesh) {
 // report that agrees with the written mesh. Pig 0.7 seed 1 needs both vertex rules of issue
 // 22's second round (an inherited boundary dart no longer pulls an interior vertex onto
 // another vertex's position; the majority of a vertex's darts beats a fold copy), cfpc16 0.8
-// seed 2 the second (it had 17 vertices on fold copies and 8 inverted hexes). Skipped
-// without ../shared.
+// seed 2 the second (it had 17 vertices on fold copies and 8 inverted hexes), pig 0.8 seeds 1
+// and 3 the majority of placed points (where the darts have none, or the wrong one). Skipped without ../shared.
 TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
     const HexMesh pig = sharedHexMesh("sss19_pig_in"), cf = sharedHexMesh("cfpc16_hollow8");
     if (pig.hexes.empty() || cf.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes not available (or no xz)";
@@ -138,7 +138,7 @@ TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
         double a;
         unsigned seed;
     } cases[] = {{&pig, "pig", 0.7, 1}, {&pig, "pig", 0.7, 2}, {&cf, "cfpc16", 0.6, 2}, {&cf, "cfpc16", 0.7, 3},
-                 {&cf, "cfpc16", 0.8, 2}};
+                 {&cf, "cfpc16", 0.8, 2}, {&pig, "pig", 0.8, 1}, {&pig, "pig", 0.8, 3}};
     for (const auto& k : cases) {
         const std::string what = std::string(k.name) + " a=" + std::to_string(k.a) + " seed=" + std::to_string(k.seed);
         const FoldedCase c = runFolded(*k.src, k.a, k.seed);
@@ -150,7 +150,7 @@ TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
 // The full sweep: both meshes, a = 0.6, 0.7, 0.8, seeds 1-4 (about 2 minutes). Prints one
 // line per case; Documentation/algorithm.md (#algorithm_from_hex) lists the cases that
 // still fail and why. The report must agree with the written mesh on every case; at least
-// 17 of the 24 cases give the source mesh back (the issue's goal is all 24).
+// 19 of the 24 cases give the source mesh back (the issue's goal is all 24).
 TEST(SharedHexMeshes, DISABLED_FullSweep) {
     int ok = 0, total = 0;
     for (const char* name : {"sss19_pig_in", "cfpc16_hollow8"}) {
@@ -171,5 +171,5 @@ TEST(SharedHexMeshes, DISABLED_FullSweep) {
     }
     std::cout << ok << " of " << total << " cases give the source mesh back\n";
     EXPECT_EQ(total, 24);
-    EXPECT_GE(ok, 17);
+    EXPECT_GE(ok, 19);
 }

@@ -1,7 +1,8 @@
 // The position rules of mergedVertexPositions() that issue 22 added: a vertex whose own
 // darts are interior stays interior although a removed dart inherited by it lies on the
 // boundary, and a position held by most of a vertex's surviving darts is its only
-// preferred candidate.
+// preferred candidate (for interior vertices, the position with most of its placed points
+// first).
 
 #include <HexEx/Mesh/TetMesh.hh>
 #include <HexEx/Postprocessing/VertexMerging.hh>
@@ -83,4 +84,49 @@ TEST(VertexMajority, InheritedBoundaryDartDoesNotPullAnInteriorVertex) {
     ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
     EXPECT_TRUE((cand.position[0] == own && cand.position[1] == onBoundary) ||
                 (cand.position[0] == onBoundary && cand.position[1] == own));
+}
+
+// No majority of darts (10, 8 and 6 at three positions), but one position is seen from 5
+// tets (placed points, here of removed regular darts inherited by the vertex) and the others
+// from one each: that position is the only preferred candidate.
+TEST(VertexMajority, MostPlacedPointsDecideWithoutAMajorityOfDarts) {
+    const TetMesh mesh = unitTet();
+    const Vec3d proper(0.2, 0.2, 0.2), copyA(0.1, 0.1, 0.1), copyB(0.3, 0.1, 0.1);
+    DartPlacement p = interiorDarts({copyA, proper, copyB}, {10, 8, 6});
+    for (int k = 0; k < 4; ++k) {  // four more tets see the proper preimage
+        p.position.push_back(proper);
+        p.boundary_hf.push_back({-1, -1, -1});
+        p.extra_dart.push_back(0);
+        p.extra_point.push_back(static_cast<int>(p.position.size()) - 1);
+        p.extra_flipped.push_back(0);
+    }
+    VertexCandidates cand;
+    const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+    EXPECT_EQ(pos[0], proper);
+    ASSERT_EQ(cand.vertex.size(), 1u);
+    EXPECT_EQ(cand.preferred[0], 1);
+    EXPECT_EQ(cand.offset[1] - cand.offset[0], 3);
+    EXPECT_EQ(cand.position[0], proper);
+}
+
+// The darts favour a fold copy (15 against 9), but the proper preimage is seen from 6 tets
+// (5 of them through removed darts) and the copy from one: the placed points decide.
+TEST(VertexMajority, PlacedPointsComeBeforeTheDartsForInteriorVertices) {
+    const TetMesh mesh = unitTet();
+    const Vec3d proper(0.2, 0.2, 0.2), copy(0.1, 0.1, 0.1);
+    DartPlacement p = interiorDarts({copy, proper}, {15, 9});
+    for (int k = 0; k < 5; ++k) {
+        p.position.push_back(proper);
+        p.boundary_hf.push_back({-1, -1, -1});
+        p.extra_dart.push_back(0);
+        p.extra_point.push_back(static_cast<int>(p.position.size()) - 1);
+        p.extra_flipped.push_back(0);
+    }
+    VertexCandidates cand;
+    const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+    EXPECT_EQ(pos[0], proper);
+    ASSERT_EQ(cand.vertex.size(), 1u);
+    EXPECT_EQ(cand.preferred[0], 1);
+    EXPECT_EQ(cand.position[0], proper);
+    EXPECT_EQ(cand.position[1], copy);
 }

@@ -148,6 +148,8 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         std::vector<Vec3d> all, bnd;
         std::vector<int> planes;
         std::vector<Vec3d> flippedPts;  // positions of annihilated anti darts of the class
+        std::vector<int> support;       // placed points of the class (surviving and removed regular darts)
+        std::vector<Vec3d> supportPts;  // their positions
         std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
             all.clear();
@@ -179,6 +181,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             // darts against 2-10). Such a majority is the only preferred candidate.
             Vec3d major(0, 0, 0);
             const bool hasMajor = majorityPosition(all, tol, major);
+            bool supportMajor = false;
             for (int k = xoff[l]; k < xoff[l + 1]; ++k) {
                 const auto q = static_cast<std::size_t>(xidx[static_cast<std::size_t>(k)]);
                 if (xflip[static_cast<std::size_t>(k)]) flippedPts.push_back(darts.position[q]);
@@ -199,12 +202,36 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             };
             if (bnd.empty()) {
                 auto dist = distinctPositions(all, tol);
-                if (hasMajor) moveToFront(dist, major, tol);
+                if (dist.size() > 1) {
+                    // The position with more than half of the class's placed points (one per
+                    // tet and grid point, of surviving and of removed regular darts) comes
+                    // first, else the majority of the surviving darts. A fold copy lies inside
+                    // one tet of the fold; a proper preimage at a vertex of the tet mesh is seen
+                    // from all the tets around it, whose darts the annihilation removed with
+                    // the fold (issue 22: 14-34 removed darts' placed points at the source
+                    // position against 1 at each fold copy, even where the fold copy held
+                    // more surviving darts, 15 against 9).
+                    support.clear();
+                    for (int k = off[l]; k < off[l + 1]; ++k) support.push_back(darts.point[static_cast<std::size_t>(idx[static_cast<std::size_t>(k)])]);
+                    for (int k = xoff[l]; k < xoff[l + 1]; ++k)
+                        if (!xflip[static_cast<std::size_t>(k)]) support.push_back(xidx[static_cast<std::size_t>(k)]);
+                    std::sort(support.begin(), support.end());
+                    support.erase(std::unique(support.begin(), support.end()), support.end());
+                    supportPts.clear();
+                    for (int q : support) supportPts.push_back(darts.position[static_cast<std::size_t>(q)]);
+                    Vec3d most(0, 0, 0);
+                    if (majorityPosition(supportPts, tol, most)) {
+                        moveToFront(dist, most, tol);
+                        supportMajor = true;
+                    } else if (hasMajor) {
+                        moveToFront(dist, major, tol);
+                    }
+                }
                 out[l] = dist[0];
                 const auto extra = flippedExtras(dist);
                 if (dist.size() > 1 || !extra.empty()) {
                     cand.vertex.push_back(static_cast<int>(l));
-                    cand.preferred.push_back(hasMajor ? 1 : static_cast<int>(dist.size()));
+                    cand.preferred.push_back(hasMajor || supportMajor ? 1 : static_cast<int>(dist.size()));
                     cand.offset.push_back(static_cast<int>(cand.position.size()));
                     cand.position.insert(cand.position.end(), dist.begin(), dist.end());
                     cand.position.insert(cand.position.end(), extra.begin(), extra.end());

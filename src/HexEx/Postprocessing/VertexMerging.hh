@@ -58,7 +58,10 @@ struct VertexCandidates {
 /// half of the class's surviving darts is its only preferred candidate (first), for
 /// boundary classes only if its distance to the boundary planes is at most a quarter of
 /// its distance to the plane rule's choice and it lies on one of those boundary faces or
-/// at a boundary vertex of @p mesh (issue 22; Documentation/algorithm.md, "Vertices").
+/// at a boundary vertex of @p mesh. For interior classes, the position with more than half
+/// of the class's placed points (surviving and removed regular darts, one per tet and grid
+/// point) comes before the majority of darts (issue 22; Documentation/algorithm.md,
+/// "Vertices").
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
