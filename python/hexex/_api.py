@@ -101,7 +101,7 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     report = json.loads(report)
     if untangle:
         pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, _boundary_triangles(tets), False,
-                                                  threads, 1, 40.0)
+                                                  threads, 1, 40.0, False, 10)
         report["untangle"] = u
         report["quality"] = {"min_scaled_jacobian": u["min_scaled_jacobian_after"],
                              "mean_scaled_jacobian": u["mean_scaled_jacobian_after"],
@@ -117,7 +117,8 @@ def _boundary_triangles(tets: np.ndarray) -> np.ndarray:
 
 
 def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
-             rings: int = 1, feature_angle: float = 40.0) -> UntangleResult:
+             rings: int = 1, feature_angle: float = 40.0, keep_features: bool = False,
+             quality_iterations: int = 10) -> UntangleResult:
     """Moves the vertices of a hex mesh so that every hex has positive Jacobians at its 8
     corners (regularised elliptic energy of Garanzha et al. 2021, minimised with L-BFGS;
     see Documentation/algorithm.md). Only vertices near inverted hexes move; a mesh without
@@ -135,6 +136,11 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
             and then to the whole mesh if needed).
         feature_angle: surface edges sharper than this (degrees) are feature curves;
             vertices on them move along them, feature corners stay fixed.
+        keep_features: never let vertices leave feature curves and corners (``hexex untangle
+            --keep-features``). By default, the feature vertices of hexes that stay inverted
+            while they are held are released onto the surface (``report["released_feature_vertices"]``).
+        quality_iterations: L-BFGS iterations that raise the worst scaled Jacobian of an
+            untangled neighbourhood (``--quality-iterations``; 0 = off).
 
     Returns:
         UntangleResult: ``points``, ``hexes``, ``polyhedra`` and ``report`` (dict);
@@ -147,6 +153,7 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
     threads = _check_int(threads, "threads", 0)
     rings = _check_int(rings, "rings", 0)
     feature_angle = _check_float(feature_angle, "feature_angle")
+    quality_iterations = _check_int(quality_iterations, "quality_iterations", 0, maximum=1000000)
     surface_points = surface_triangles = None
     if surface is not None:
         if fixed_boundary:
@@ -156,7 +163,8 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
         surface_points = as_float_array(surface[0], "surface points", (None, 3))
         surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
     pts, hx, poly, report = _core.untangle(points, hexes, polyhedra, surface_points, surface_triangles,
-                                           bool(fixed_boundary), threads, rings, feature_angle)
+                                           bool(fixed_boundary), threads, rings, feature_angle, bool(keep_features),
+                                           quality_iterations)
     return UntangleResult(pts, hx, poly, report)
 
 

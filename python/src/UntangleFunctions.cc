@@ -48,7 +48,8 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
 /// Untangles a copy of the mesh; returns (points, hexes, polyhedra, report dict).
 nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
                    const std::optional<DoubleArray>& surface_points, const std::optional<Int32Array>& surface_triangles,
-                   bool fixed_boundary, int threads, int rings, double feature_angle) {
+                   bool fixed_boundary, int threads, int rings, double feature_angle, bool keep_features,
+                   int quality_iterations) {
     HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
     HexEx::TriangleSurface surface;
     const bool has_surface = surface_points.has_value() && surface_triangles.has_value();
@@ -72,6 +73,8 @@ nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb:
     opt.threads = threads;
     opt.rings = rings;
     opt.feature_angle_deg = feature_angle;
+    opt.release_features = !keep_features;
+    opt.quality_iterations = quality_iterations;
     HexEx::UntangleReport r;
     {
         nb::gil_scoped_release release;
@@ -86,7 +89,8 @@ nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb:
 void bindUntangleFunctions(nb::module_& m) {
     m.def("untangle", &untangle, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
           nb::arg("surface_points").none(), nb::arg("surface_triangles").none(), nb::arg("fixed_boundary"),
-          nb::arg("threads"), nb::arg("rings"), nb::arg("feature_angle"),
+          nb::arg("threads"), nb::arg("rings"), nb::arg("feature_angle"), nb::arg("keep_features"),
+          nb::arg("quality_iterations"),
           "Untangles a hex mesh (HexEx::untangleHexMesh); returns (points, hexes, polyhedra, report dict).");
 }
 

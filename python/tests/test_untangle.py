@@ -1,5 +1,7 @@
 """hexex.untangle and extract(..., untangle=True): inverted hexes go to 0, valid meshes stay."""
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -61,3 +63,35 @@ def test_untangle_bad_arguments():
         hexex.untangle(points, hexes, surface=(points, np.zeros((1, 3), np.int32)), fixed_boundary=True)
     with pytest.raises(ValueError, match="surface triangle 0 references point 9"):
         hexex.untangle(points, hexes, surface=(points, np.array([[0, 1, 9]], np.int32)))
+
+
+FEATURE_FOLD = (Path(__file__).resolve().parents[2] / "src" / "Unittests" / "data" / "untangle"
+                / "s1x2_feature_fold.vtk")
+
+
+def test_untangle_releases_feature_vertices_unless_kept():
+    # A 276-hex cut-out of the S1 x2 output: 3 hexes whose inversion the feature curves hold.
+    mesh = hexex.read_hex_mesh(FEATURE_FOLD)
+    assert mesh.hexes.shape == (276, 8)
+    r = hexex.untangle(mesh.points, mesh.hexes, threads=2)
+    assert r.report["inverted_before"] == 3
+    assert r.report["inverted_after"] == 0, r.report["message"]
+    assert 0 < r.report["released_feature_vertices"] <= 24
+    kept = hexex.untangle(mesh.points, mesh.hexes, threads=2, keep_features=True)
+    assert kept.report["inverted_after"] == 3
+    assert kept.report["released_feature_vertices"] == 0
+    assert "3 of them have vertices held on feature curves or corners" in kept.report["message"]
+
+
+def test_untangle_quality_iterations():
+    # The feature fold untangles to a worst scaled Jacobian near 0; the quality iterations
+    # (default 10) raise it, quality_iterations=0 leaves it.
+    mesh = hexex.read_hex_mesh(FEATURE_FOLD)
+    plain = hexex.untangle(mesh.points, mesh.hexes, threads=2, quality_iterations=0)
+    better = hexex.untangle(mesh.points, mesh.hexes, threads=2)
+    assert plain.report["inverted_after"] == 0 and better.report["inverted_after"] == 0
+    assert plain.report["quality_iterations"] == 0
+    assert better.report["quality_iterations"] == 10
+    assert better.report["min_scaled_jacobian_after"] > plain.report["min_scaled_jacobian_after"] > 0
+    with pytest.raises(ValueError, match="quality_iterations must be >= 0"):
+        hexex.untangle(mesh.points, mesh.hexes, quality_iterations=-1)
