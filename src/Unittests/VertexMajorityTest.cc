@@ -34,6 +34,18 @@ DartPlacement interiorDarts(const std::vector<Vec3d>& points, const std::vector<
     return p;
 }
 
+/// Adds @p count placed points at @p at, each seen through a removed regular dart the
+/// vertex inherited (as from that many more tets).
+void addInheritedPlacedPoints(DartPlacement& p, const Vec3d& at, int count) {
+    for (int k = 0; k < count; ++k) {
+        p.position.push_back(at);
+        p.boundary_hf.push_back({-1, -1, -1});
+        p.extra_dart.push_back(0);
+        p.extra_point.push_back(static_cast<int>(p.position.size()) - 1);
+        p.extra_flipped.push_back(0);
+    }
+}
+
 } // namespace
 
 // 20 darts at one preimage, 4 at a fold copy: the majority is the only preferred candidate,
@@ -93,13 +105,7 @@ TEST(VertexMajority, MostPlacedPointsDecideWithoutAMajorityOfDarts) {
     const TetMesh mesh = unitTet();
     const Vec3d proper(0.2, 0.2, 0.2), copyA(0.1, 0.1, 0.1), copyB(0.3, 0.1, 0.1);
     DartPlacement p = interiorDarts({copyA, proper, copyB}, {10, 8, 6});
-    for (int k = 0; k < 4; ++k) {  // four more tets see the proper preimage
-        p.position.push_back(proper);
-        p.boundary_hf.push_back({-1, -1, -1});
-        p.extra_dart.push_back(0);
-        p.extra_point.push_back(static_cast<int>(p.position.size()) - 1);
-        p.extra_flipped.push_back(0);
-    }
+    addInheritedPlacedPoints(p, proper, 4);  // four more tets see the proper preimage
     VertexCandidates cand;
     const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
     EXPECT_EQ(pos[0], proper);
@@ -115,13 +121,7 @@ TEST(VertexMajority, PlacedPointsComeBeforeTheDartsForInteriorVertices) {
     const TetMesh mesh = unitTet();
     const Vec3d proper(0.2, 0.2, 0.2), copy(0.1, 0.1, 0.1);
     DartPlacement p = interiorDarts({copy, proper}, {15, 9});
-    for (int k = 0; k < 5; ++k) {
-        p.position.push_back(proper);
-        p.boundary_hf.push_back({-1, -1, -1});
-        p.extra_dart.push_back(0);
-        p.extra_point.push_back(static_cast<int>(p.position.size()) - 1);
-        p.extra_flipped.push_back(0);
-    }
+    addInheritedPlacedPoints(p, proper, 5);
     VertexCandidates cand;
     const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
     EXPECT_EQ(pos[0], proper);
