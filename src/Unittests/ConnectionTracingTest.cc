@@ -2,6 +2,8 @@
 /// Tests of traceConnections(): the shared alpha_0 walks (one per tet, grid point and d1)
 /// give exactly the links and counters of tracing every dart alone, for any thread count.
 
+#include "SharedData.hh"
+
 #include <HexEx/Extraction/ConnectionTracing.hh>
 #include <HexEx/Extraction/DartExtraction.hh>
 #include <HexEx/Generators/Generators.hh>
@@ -74,18 +76,6 @@ SharedVsAlone compareSharing(ParametrizedTetMesh pm, bool implicit_cells = false
     return out;
 }
 
-/// Decompresses an .xz file from ../shared/data, or returns "" if it is not there.
-std::string readSharedXz(const std::string& name) {
-    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/../shared/data/" + name;
-    if (FILE* f = std::fopen(path.c_str(), "rb")) std::fclose(f);
-    else return {};
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(("xz -dc '" + path + "' 2>/dev/null").c_str(), "r"), pclose);
-    if (!p) return {};
-    std::string text;
-    char buf[1 << 15];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p.get())) > 0;) text.append(buf, n);
-    return text;
-}
 
 } // namespace
 
@@ -127,7 +117,7 @@ TEST(ConnectionTracing, SharedWalksMatchOnNoisyAndImplicitCubes) {
 
 // A real map with transitions, singularities, flipped and degenerate tets (if available).
 TEST(ConnectionTracing, SharedWalksMatchOnS1) {
-    const std::string text = readSharedXz("S1_polycube_scale1.hexex.xz");
+    const std::string text = HexExTest::readSharedXz("S1_polycube_scale1.hexex.xz");
     if (text.empty()) GTEST_SKIP() << "../shared/data/S1_polycube_scale1.hexex.xz not available (or no xz)";
     const SharedVsAlone r = compareSharing(readHexExBuffer(text, "S1_polycube_scale1.hexex"));
     EXPECT_GT(r.flipped, 0);

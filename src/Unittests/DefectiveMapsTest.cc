@@ -1,5 +1,7 @@
 // Robust extraction of defective maps: flipped and degenerate tets (paper 4.4 and 5).
 
+#include "SharedData.hh"
+
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/Generators/Perturbation.hh>
 #include <HexEx/HexEx.hh>
@@ -111,23 +113,8 @@ TEST(DefectiveMaps, AnnihilationOfASingleFold) {
     EXPECT_TRUE(r.valid_all_hex) << r.validation.summary();
 }
 
-namespace {
-/// Decompresses an .xz data file from ../shared/data into memory, or returns "".
-std::string readXz(const std::string& name) {
-    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/../shared/data/" + name;
-    if (!std::fopen(path.c_str(), "rb")) return {};
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(("xz -dc '" + path + "' 2>/dev/null").c_str(), "r"), pclose);
-    if (!p) return {};
-    std::string out;
-    char buf[1 << 16];
-    std::size_t n;
-    while ((n = std::fread(buf, 1, sizeof buf, p.get())) > 0) out.append(buf, n);
-    return out;
-}
-} // namespace
-
 TEST(DefectiveMaps, S1PolycubeScale1) {
-    const std::string text = readXz("S1_polycube_scale1.hexex.xz");
+    const std::string text = HexExTest::readSharedXz("S1_polycube_scale1.hexex.xz");
     if (text.empty()) GTEST_SKIP() << "../shared/data/S1_polycube_scale1.hexex.xz not available (or no xz)";
     auto pm = readHexExBuffer(text, "S1_polycube_scale1.hexex");
     HexMesh hm;

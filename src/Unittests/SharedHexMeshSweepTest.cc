@@ -4,6 +4,7 @@
 //   unittests --gtest_also_run_disabled_tests --gtest_filter='SharedHexMeshes.DISABLED_*'
 
 #include "FromHexChecks.hh"
+#include "SharedData.hh"
 #include "TestMeshChecks.hh"
 
 #include <HexEx/Generators/Generators.hh>
@@ -27,14 +28,7 @@ namespace {
 
 /// Reads ../shared/data/hexmeshes/NAME.vtk.xz, or returns an empty mesh if it (or xz) is missing.
 HexMesh sharedHexMesh(const std::string& name) {
-    const std::string path = std::string(HEXEX_SOURCE_DIR) + "/../shared/data/hexmeshes/" + name + ".vtk.xz";
-    if (FILE* f = std::fopen(path.c_str(), "rb")) std::fclose(f);
-    else return {};
-    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(("xz -dc '" + path + "' 2>/dev/null").c_str(), "r"), pclose);
-    if (!p) return {};
-    std::string text;
-    char buf[1 << 15];
-    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, p.get())) > 0;) text.append(buf, n);
+    const std::string text = HexExTest::readSharedXz("hexmeshes/" + name + ".vtk.xz");
     if (text.empty()) return {};
     return readHexMeshBuffer(text, HexMeshFormat::Vtk, name);
 }

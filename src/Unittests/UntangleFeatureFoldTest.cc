@@ -6,19 +6,18 @@
 /// and the message names the feature curves. The bundled cut-out always runs; the whole map
 /// (extraction plus untangling on the tet mesh's boundary) runs when ../shared is present.
 
+#include "SharedData.hh"
+
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexMeshReaders.hh>
-#include <HexEx/IO/TetMeshInput.hh>
+#include <HexEx/IO/HexExFile.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/SurfaceProjection.hh>
 #include <HexEx/Untangling/Untangler.hh>
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
 #include <string>
-#include <unistd.h>
 
 using namespace HexEx;
 
@@ -80,19 +79,9 @@ TEST(UntangleFeatureFold, KeptFeaturesAreReportedAsTheCause) {
 }
 
 TEST(UntangleFeatureFold, WholeS1Scale2MapWithItsTetBoundary) {
-    namespace fs = std::filesystem;
-    const fs::path src = fs::path(HEXEX_SOURCE_DIR) / "../shared/data/S1_polycube_scale2.hexex.xz";
-    std::error_code ec;
-    if (!fs::is_regular_file(src, ec)) GTEST_SKIP() << src << " not found";
-    const fs::path dst = fs::temp_directory_path() / ("hexex_s1x2_" + std::to_string(::getpid()) + ".hexex");
-    const std::string cmd = "xz -dc '" + src.string() + "' > '" + dst.string() + "' 2>/dev/null";
-    if (std::system(cmd.c_str()) != 0) {
-        fs::remove(dst, ec);
-        GTEST_SKIP() << "xz failed";
-    }
-    ParametrizedTetMesh map = readParametrizedTetMesh(dst.string());
-    fs::remove(dst, ec);
-    map.mesh.build_adjacency();
+    const std::string text = HexExTest::readSharedXz("S1_polycube_scale2.hexex.xz");
+    if (text.empty()) GTEST_SKIP() << HexExTest::sharedDataPath("S1_polycube_scale2.hexex.xz") << " not found (or xz failed)";
+    const ParametrizedTetMesh map = readHexExBuffer(text, "S1_polycube_scale2.hexex");
     HexMesh hm;
     ExtractionOptions eo;
     eo.threads = 2;

@@ -1,11 +1,13 @@
 /// @file UntanglePublishedMeshesTest.cc
 /// untangleHexMesh() on folded maps of the shared published hex meshes
-/// (`/work/shared/data/hexmeshes/*.vtk.xz`, or $HEXEX_HEXMESH_DIR): `from-hex` maps with face
+/// (`../shared/data/hexmeshes/*.vtk.xz`, or $HEXEX_HEXMESH_DIR): `from-hex` maps with face
 /// and cell centres moved by 0.8 grid units give inverted hexes; after untangling none
 /// remain except next to non-hex cells (whose vertices do not move). Skipped when the data
 /// or the `xz` program is absent. (cfpc16_hollow8 seed 1 used to give 8 -> 1 next to non-hex
 /// cells, then 11 -> 0; since the vertex placement on heavy folds changed, the hollow8 maps
 /// extract without inverted hexes and the pig maps of seeds 1 and 5 give 1 and 4.)
+
+#include "SharedData.hh"
 
 #include <HexEx/Generators/MapFromHexMesh.hh>
 #include <HexEx/HexEx.hh>
@@ -16,28 +18,22 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
-#include <filesystem>
 #include <set>
 #include <string>
-#include <unistd.h>
 
 using namespace HexEx;
 
 namespace {
 
-/// The published mesh @p name unpacked into a temporary directory; empty mesh if unavailable.
+/// The published mesh @p name (../shared/data/hexmeshes, or $HEXEX_HEXMESH_DIR); empty mesh
+/// if unavailable.
 HexMesh publishedMesh(const std::string& name) {
-    namespace fs = std::filesystem;
     const char* env = std::getenv("HEXEX_HEXMESH_DIR");
-    const fs::path src = fs::path(env ? env : "/work/shared/data/hexmeshes") / (name + ".vtk.xz");
-    std::error_code ec;
-    if (!fs::is_regular_file(src, ec)) return {};
-    const fs::path dst = fs::temp_directory_path() / ("hexex_untangle_" + std::to_string(::getpid()) + "_" + name + ".vtk");
-    const std::string cmd = "xz -dc '" + src.string() + "' > '" + dst.string() + "' 2>/dev/null";
-    HexMesh m;
-    if (std::system(cmd.c_str()) == 0) m = readHexMesh(dst.string());
-    fs::remove(dst, ec);
-    return m;
+    const std::string file = name + ".vtk.xz";
+    const std::string text = env ? HexExTest::readXzFile(std::string(env) + "/" + file)
+                                 : HexExTest::readSharedXz("hexmeshes/" + file);
+    if (text.empty()) return {};
+    return readHexMeshBuffer(text, HexMeshFormat::Vtk, name);
 }
 
 } // namespace
