@@ -35,6 +35,11 @@ struct ExtractionOptions {
     /// one chart (their darts would all annihilate) get no darts, and the tracing walks
     /// through them. Not used with #arcs. Off: every dart is extracted and annihilated.
     bool cheap_folds = true;
+    /// Where the annihilation (with #merge) left broken hex cells, put the fold clusters next
+    /// to them back and annihilate them again in other orders, keeping the order with the
+    /// fewest broken cells (AnnihilationRetry; Documentation/algorithm.md). Maps without a
+    /// broken cell are not affected. Off: the first pass's result is kept.
+    bool annihilation_retries = true;
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
     double max_hexes = 4e7;
@@ -97,6 +102,8 @@ struct ExtractionReport {
         long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
         long implicit_cells = 0;     ///< hexes built from the grid inside one tet, without darts
         long cancelled_fold_points = 0;  ///< (tet, grid point) occurrences of cancelled fold points (no darts; ExtractionOptions::cheap_folds)
+        int annihilation_order = 0;      ///< order of the annihilation kept: 0 the first pass, k > 0 the k-th retry (ExtractionOptions::annihilation_retries)
+        long broken_cells_after_annihilation = 0; ///< hex cells the annihilation left broken, after the retries
     } darts;  ///< dart statistics
     /// Edge arcs and face patches (only with ExtractionOptions::arcs).
     struct Arcs {

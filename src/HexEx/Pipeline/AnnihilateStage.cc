@@ -23,7 +23,8 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
                 const Dart& B = ds[static_cast<std::size_t>(b)];
                 return A.tet == B.tet && samePoint(A.z, B.z);
             };
-        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace);
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, in.retry);
+        out.stats = as;
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;
     } else {

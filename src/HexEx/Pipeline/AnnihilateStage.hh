@@ -6,6 +6,7 @@
 
 #include "../Extraction/ConnectionTracing.hh"
 #include "../GMap/GMap.hh"
+#include "../Postprocessing/DartAnnihilation.hh"
 
 #include <string>
 #include <utility>
@@ -23,6 +24,7 @@ struct AnnihilateInput {
     /// previous one, with the same heir, are then left out of AnnihilateOutput::heir.
     const DartSet* darts = nullptr;
     int threads = 1;                                   ///< worker threads for the numbering
+    AnnihilationRetry retry;                           ///< local retries of clusters left with broken hex cells
 };
 
 /// Output of annihilateStage().
@@ -32,6 +34,7 @@ struct AnnihilateOutput {
     int n_alive = 0;               ///< survivors
     long pairs = 0;                ///< annihilated regular/anti pairs
     long remaining_anti = 0;       ///< anti darts left
+    AnnihilationStats stats;       ///< all counters of annihilateDarts() (with merge)
     /// (removed dart, surviving dart that inherits its h-vertex) pairs, ascending (see
     /// annihilateDarts(); one per grid point and heir if AnnihilateInput::darts is given);
     /// empty without merge.

@@ -91,7 +91,9 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.connect = clock.lap();
 
     enter("postprocess");
-    AnnihilateOutput survivors = annihilateStage({&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads});
+    AnnihilateInput annihilateIn{&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads, {}};
+    annihilateIn.retry.enabled = opt.annihilation_retries && !implicit;
+    AnnihilateOutput survivors = annihilateStage(annihilateIn);
     addToReport(survivors, rep);
     ImplicitCells cells;
     if (implicit)

@@ -25,6 +25,8 @@ void addToReport(const ConnectOutput& out, ExtractionReport& rep) { rep.darts.as
 void addToReport(const AnnihilateOutput& out, ExtractionReport& rep) {
     rep.darts.annihilated_pairs = out.pairs;
     rep.darts.remaining_anti = out.remaining_anti;
+    rep.darts.annihilation_order = out.stats.reordered;
+    rep.darts.broken_cells_after_annihilation = out.stats.broken_cells_after;
 }
 
 void addToReport(const MapOutput& out, ExtractionReport& rep) {

@@ -1,6 +1,7 @@
 #include "DartAnnihilation.hh"
 
 #include "../Core/UnionFind.hh"
+#include "LocalHexCheck.hh"
 
 #include <algorithm>
 #include <cstdint>
@@ -9,127 +10,290 @@
 
 namespace HexEx {
 
-AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
-                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs,
-                                  const std::function<bool(int, int)>& same_place) {
-    AnnihilationStats st;
-    const long n = static_cast<long>(alpha.size());
-    // Per dart: kQueued (on the work list) and kTouched (joined some vertex group).
-    constexpr std::uint8_t kQueued = 1, kTouched = 2;
-    std::vector<std::uint8_t> flag(static_cast<std::size_t>(n), 0);
+namespace {
+
+// Per-dart flag bits.
+constexpr std::uint8_t kQueued = 1;     // on the work list
+constexpr std::uint8_t kTouched = 2;    // joined some vertex group (heirs)
+constexpr std::uint8_t kSaved = 4;      // links changed at least once; the originals are saved
+constexpr std::uint8_t kInCell = 8;     // scratch of countDefectiveHexCells()
+constexpr std::uint8_t kCellDone = 16;  // scratch of countDefectiveHexCells()
+
+/// A fixed 64-bit mix (splitmix64's finalizer): the alternative orders of the retries.
+std::uint64_t mix(std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+    return x ^ (x >> 31);
+}
+
+/// The annihilation's state: links, survivors, the saved original links of changed darts
+/// and the vertex groups of the heirs.
+class Annihilator {
+public:
+    Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
+                bool retries)
+        : keepInitial_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
+          flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {}
+
+    /// The first pass: every anti dart in ascending order, then the re-queued ones.
+    void runAll() {
+        if (keepInitial_ && initialAlive_.empty()) initialAlive_ = alive_;
+        for (long d = 0; d < n_; ++d)
+            if (alive_[idx(d)] && sign_[idx(d)] < 0) F(d) |= kQueued;
+        run(nullptr);
+    }
+
+    /// If the first pass left broken cells, annihilates again in other orders (see AnnihilationRetry).
+    void retry(const AnnihilationRetry& opt, AnnihilationStats& st);
+
+    /// Fills @p heirs (see annihilateDarts()).
+    void collectHeirs(std::vector<std::pair<int, int>>& heirs, const std::function<bool(int, int)>& same_place);
+
+    long pairs = 0;  ///< pairs removed so far
+
+private:
+    const bool keepInitial_;
+
+    static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
+    std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
+    std::uint8_t& F(long d) { return flag_[idx(d)]; }
+    bool isAnti(long d) const { return sign_[idx(d)] < 0; }
+
+    /// Called before @p d's links change or it is removed: saves its original links.
+    void touch(long d) {
+        if (!(F(d) & kSaved)) {
+            F(d) |= kSaved;
+            saved_.emplace_back(static_cast<int>(d), A(d));
+        }
+    }
+
+    int idOf(long d) {
+        if (sameVertex_.parent.empty()) sameVertex_ = UnionFind(idx(n_));
+        F(d) |= kTouched;
+        return static_cast<int>(d);
+    }
+
+    /// Processes the work list: @p order (nullptr: a scan of all darts) and then the darts
+    /// queued on the way.
+    void run(const std::vector<int>* order);
+
+    /// Removes @p anti with a regular partner, if it has one.
+    void step(long anti, std::deque<long>& requeued);
+
+    /// Puts every dart back to its original links, alive and ungrouped (before a retry).
+    void restoreAll() {
+        for (const auto& e : saved_) A(e.first) = e.second;
+        for (long d = 0; d < n_; ++d) {
+            alive_[idx(d)] = initialAlive_[idx(d)];
+            F(d) &= static_cast<std::uint8_t>(~(kQueued | kTouched));
+        }
+        for (std::size_t d = 0; d < sameVertex_.parent.size(); ++d) sameVertex_.parent[d] = static_cast<int>(d);
+        pairs = 0;
+    }
+
+    /// Alive darts whose links were changed (the cells a run can have broken are theirs).
+    std::vector<int> changedDarts() const {
+        std::vector<int> c;
+        for (const auto& e : saved_)
+            if (alive_[idx(e.first)]) c.push_back(e.first);
+        std::sort(c.begin(), c.end());
+        return c;
+    }
+
+    /// Broken cells among the cells of the alive darts in @p c.
+    long brokenCells(const std::vector<int>& c) { return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone); }
+
+    /// The alive anti darts in the alternative order @p k (1: descending, else by a fixed hash).
+    std::vector<int> antiOrder(int k) const {
+        std::vector<int> o;
+        for (long d = 0; d < n_; ++d)
+            if (alive_[idx(d)] && sign_[idx(d)] < 0) o.push_back(static_cast<int>(d));
+        if (k == 1) std::reverse(o.begin(), o.end());
+        if (k >= 2) {
+            const std::uint64_t salt = mix(static_cast<std::uint64_t>(k));
+            std::vector<std::pair<std::uint64_t, int>> keyed(o.size());
+            for (std::size_t i = 0; i < o.size(); ++i) keyed[i] = {mix(static_cast<std::uint64_t>(o[i]) ^ salt), o[i]};
+            std::sort(keyed.begin(), keyed.end());
+            for (std::size_t i = 0; i < o.size(); ++i) o[i] = keyed[i].second;
+        }
+        return o;
+    }
+
+    std::vector<std::array<int, 4>>& alpha_;
+    const std::vector<signed char>& sign_;
+    std::vector<char>& alive_;
+    const bool wantHeirs_;
+    const long n_;
+    std::vector<std::uint8_t> flag_;
     // Union-find over all darts, allocated when the first pair annihilates (maps without
     // folds pay nothing). Dense ids cost 4 bytes per dart; a hash map of the touched darts
     // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
-    UnionFind sameVertex(0);
-    auto idOf = [&](long d) {
-        if (sameVertex.parent.empty()) sameVertex = UnionFind(static_cast<std::size_t>(n));
-        flag[static_cast<std::size_t>(d)] |= kTouched;
-        return static_cast<int>(d);
-    };
-    // The work list is every anti dart in ascending order, followed by the darts queued
-    // again on the way (first in, first out). The first part is a scan, not a stored list.
-    for (long d = 0; d < n; ++d)
-        if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) flag[static_cast<std::size_t>(d)] |= kQueued;
+    UnionFind sameVertex_;
+    std::vector<std::pair<int, std::array<int, 4>>> saved_;  // (dart, original links), in order of first change
+    std::vector<char> initialAlive_;                         // alive before the first pass (kept for retries)
+};
+
+void Annihilator::step(long anti, std::deque<long>& requeued) {
+    long reg = -1;
+    for (int i = 0; i < 4 && reg < 0; ++i) {
+        const long r = A(anti)[i];
+        if (r >= 0 && r != anti && alive_[idx(r)] && sign_[idx(r)] > 0) reg = r;
+    }
+    if (reg < 0) return;
+    touch(reg);
+    touch(anti);
+    if (wantHeirs_) {
+        // The pair's h-vertices merge (paper 4.4.2: a pair linked by alpha_0 joins the
+        // vertices of its two darts), and each dart stays with the darts around its
+        // h-vertex (alpha_1..alpha_3 partners).
+        sameVertex_.unite(idOf(reg), idOf(anti));
+        for (int j = 1; j < 4; ++j)
+            for (const long self : {reg, anti}) {
+                const long x = A(self)[j];
+                if (x >= 0 && x != reg && x != anti) sameVertex_.unite(idOf(self), idOf(x));
+            }
+    }
+    for (int j = 0; j < 4; ++j) {
+        const long x = A(reg)[j], y = A(anti)[j];
+        if (x == anti) continue;
+        // x takes y as partner and vice versa; a partner that is one of the removed pair
+        // (a free link) turns into a free link of the survivor.
+        const bool xs = x >= 0 && x != reg, ys = y >= 0 && y != anti;
+        if (xs) touch(x);
+        if (ys) touch(y);
+        if (xs) A(x)[j] = static_cast<int>(ys ? y : (y < 0 ? -1 : x));
+        if (ys) A(y)[j] = static_cast<int>(xs ? x : (x < 0 ? -1 : y));
+    }
+    alive_[idx(reg)] = alive_[idx(anti)] = 0;
+    ++pairs;
+    // The neighbours may now be regular/anti pairs themselves.
+    for (int j = 0; j < 4; ++j)
+        for (long nb : {A(reg)[j], A(anti)[j]}) {
+            if (nb < 0 || !alive_[idx(nb)]) continue;
+            for (int k = 0; k < 4; ++k) {
+                const long m = A(nb)[k];
+                const long cand = isAnti(nb) ? nb : m;
+                if (cand >= 0 && alive_[idx(cand)] && isAnti(cand) && !(F(cand) & kQueued)) {
+                    requeued.push_back(cand);
+                    F(cand) |= kQueued;
+                }
+            }
+        }
+}
+
+void Annihilator::run(const std::vector<int>* order) {
     std::deque<long> requeued;
     long scan = 0;
+    const long end = order ? static_cast<long>(order->size()) : n_;
     auto next = [&]() -> long {
-        for (; scan < n; ++scan)
-            if (flag[static_cast<std::size_t>(scan)] & kQueued && sign[static_cast<std::size_t>(scan)] < 0) return scan++;
+        for (; scan < end; ++scan) {
+            const long d = order ? (*order)[idx(scan)] : scan;
+            if ((F(d) & kQueued) && isAnti(d)) {
+                ++scan;
+                return d;
+            }
+        }
         if (requeued.empty()) return -1;
         const long d = requeued.front();
         requeued.pop_front();
         return d;
     };
-    auto A = [&](long d) -> std::array<int, 4>& { return alpha[static_cast<std::size_t>(d)]; };
     for (long anti = next(); anti >= 0; anti = next()) {
-        flag[static_cast<std::size_t>(anti)] &= static_cast<std::uint8_t>(~kQueued);
-        if (!alive[static_cast<std::size_t>(anti)]) continue;
-        long reg = -1;
-        for (int i = 0; i < 4 && reg < 0; ++i) {
-            const long r = A(anti)[i];
-            if (r >= 0 && r != anti && alive[static_cast<std::size_t>(r)] && sign[static_cast<std::size_t>(r)] > 0) reg = r;
-        }
-        if (reg < 0) continue;
-        if (heirs) {
-            // The pair's h-vertices merge (paper 4.4.2: a pair linked by alpha_0 joins the
-            // vertices of its two darts), and each dart stays with the darts around its
-            // h-vertex (alpha_1..alpha_3 partners).
-            sameVertex.unite(idOf(reg), idOf(anti));
-            for (int j = 1; j < 4; ++j)
-                for (const long self : {reg, anti}) {
-                    const long x = A(self)[j];
-                    if (x >= 0 && x != reg && x != anti) sameVertex.unite(idOf(self), idOf(x));
-                }
-        }
-        for (int j = 0; j < 4; ++j) {
-            const long x = A(reg)[j], y = A(anti)[j];
-            if (x == anti) continue;
-            // x takes y as partner and vice versa; a partner that is one of the removed pair
-            // (a free link) turns into a free link of the survivor.
-            const bool xs = x >= 0 && x != reg, ys = y >= 0 && y != anti;
-            if (xs) A(x)[j] = static_cast<int>(ys ? y : (y < 0 ? -1 : x));
-            if (ys) A(y)[j] = static_cast<int>(xs ? x : (x < 0 ? -1 : y));
-        }
-        alive[static_cast<std::size_t>(reg)] = alive[static_cast<std::size_t>(anti)] = 0;
-        ++st.pairs;
-        // The neighbours may now be regular/anti pairs themselves.
-        for (int j = 0; j < 4; ++j)
-            for (long nb : {A(reg)[j], A(anti)[j]}) {
-                if (nb < 0 || !alive[static_cast<std::size_t>(nb)]) continue;
-                for (int k = 0; k < 4; ++k) {
-                    const long m = A(nb)[k];
-                    const long cand = sign[static_cast<std::size_t>(nb)] < 0 ? nb : m;
-                    if (cand >= 0 && alive[static_cast<std::size_t>(cand)] && sign[static_cast<std::size_t>(cand)] < 0 &&
-                        !(flag[static_cast<std::size_t>(cand)] & kQueued)) {
-                        requeued.push_back(cand);
-                        flag[static_cast<std::size_t>(cand)] |= kQueued;
-                    }
-                }
-            }
+        F(anti) &= static_cast<std::uint8_t>(~kQueued);
+        if (!alive_[idx(anti)]) continue;
+        step(anti, requeued);
     }
-    for (long d = 0; d < n; ++d)
-        if (alive[static_cast<std::size_t>(d)] && sign[static_cast<std::size_t>(d)] < 0) ++st.remaining_anti;
-    if (heirs && !sameVertex.parent.empty()) {
-        // Smallest surviving dart per group, kept in the union-find's own array: after full
-        // compression every dart points at its root (the group's smallest dart, see
-        // UnionFind::unite()), and a root with an heir holds -2 - heir.
-        std::vector<int>& parent = sameVertex.parent;
-        for (long d = 0; d < n; ++d) parent[static_cast<std::size_t>(d)] = sameVertex.find(static_cast<int>(d));
-        auto rootOf = [&](std::size_t d) { return parent[d] < 0 ? d : static_cast<std::size_t>(parent[d]); };
-        for (std::size_t d = 0; d < flag.size(); ++d) {
-            if (!(flag[d] & kTouched) || !alive[d]) continue;
-            const std::size_t r = rootOf(d);
-            if (parent[r] >= 0) parent[r] = -2 - static_cast<int>(d);  // darts ascend: the first is the smallest
+}
+
+void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
+    const long best0 = brokenCells(changedDarts());
+    st.broken_cells_before = st.broken_cells_after = best0;
+    if (best0 == 0) return;
+    const long firstPairs = pairs;
+    const long budget = static_cast<long>(opt.work_factor * static_cast<double>(firstPairs)) + 100000;
+    long best = best0, work = 0;
+    int bestOrder = 0, lastRun = 0;
+    for (int k = 1; k <= opt.orders && best > 0 && work + firstPairs <= budget; ++k) {
+        ++st.retry_runs;
+        restoreAll();
+        std::vector<int> order = antiOrder(k);
+        for (int d : order) F(d) |= kQueued;
+        run(&order);
+        work += pairs;
+        lastRun = k;
+        const long now = brokenCells(changedDarts());
+        if (now < best) {
+            best = now;
+            bestOrder = k;
         }
-        auto heirOf = [&](std::size_t d) {
-            const int p = parent[rootOf(d)];
-            return p < 0 ? -2 - p : -1;
-        };
-        // (removed dart, heir) in dart order; a dart at the same place as the previous
-        // entry with the same heir adds no candidate and is left out.
-        auto wanted = [&](std::size_t d, int h, int lastDart, int lastHeir) {
-            return !(lastDart >= 0 && h == lastHeir && same_place && same_place(lastDart, static_cast<int>(d)));
-        };
-        std::size_t count = 0;
-        for (int pass = 0; pass < 2; ++pass) {  // count, then fill (exact reserve)
-            if (pass == 1) {
-                heirs->clear();
-                heirs->reserve(count);
-            }
-            int lastDart = -1, lastHeir = -1;
-            for (std::size_t d = 0; d < flag.size(); ++d) {
-                if (!(flag[d] & kTouched) || alive[d]) continue;
-                const int h = heirOf(d);
-                if (h < 0 || !wanted(d, h, lastDart, lastHeir)) continue;
-                lastDart = static_cast<int>(d);
-                lastHeir = h;
-                if (pass == 0) ++count;
-                else heirs->emplace_back(static_cast<int>(d), h);
-            }
-        }
-    } else if (heirs) {
-        heirs->clear();
     }
+    if (lastRun != bestOrder) {
+        restoreAll();
+        if (bestOrder == 0) {
+            runAll();
+        } else {
+            std::vector<int> order = antiOrder(bestOrder);
+            for (int d : order) F(d) |= kQueued;
+            run(&order);
+        }
+    }
+    st.reordered = bestOrder;
+    st.broken_cells_after = best;
+}
+
+void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const std::function<bool(int, int)>& same_place) {
+    heirs.clear();
+    if (sameVertex_.parent.empty()) return;
+    // Smallest surviving dart per group, kept in the union-find's own array: after full
+    // compression every dart points at its root (the group's smallest dart, see
+    // UnionFind::unite()), and a root with an heir holds -2 - heir.
+    std::vector<int>& parent = sameVertex_.parent;
+    for (long d = 0; d < n_; ++d) parent[idx(d)] = sameVertex_.find(static_cast<int>(d));
+    auto rootOf = [&](std::size_t d) { return parent[d] < 0 ? d : static_cast<std::size_t>(parent[d]); };
+    for (std::size_t d = 0; d < flag_.size(); ++d) {
+        if (!(flag_[d] & kTouched) || !alive_[d]) continue;
+        const std::size_t r = rootOf(d);
+        if (parent[r] >= 0) parent[r] = -2 - static_cast<int>(d);  // darts ascend: the first is the smallest
+    }
+    auto heirOf = [&](std::size_t d) {
+        const int p = parent[rootOf(d)];
+        return p < 0 ? -2 - p : -1;
+    };
+    // (removed dart, heir) in dart order; a dart at the same place as the previous
+    // entry with the same heir adds no candidate and is left out.
+    auto wanted = [&](std::size_t d, int h, int lastDart, int lastHeir) {
+        return !(lastDart >= 0 && h == lastHeir && same_place && same_place(lastDart, static_cast<int>(d)));
+    };
+    std::size_t count = 0;
+    for (int pass = 0; pass < 2; ++pass) {  // count, then fill (exact reserve)
+        if (pass == 1) heirs.reserve(count);
+        int lastDart = -1, lastHeir = -1;
+        for (std::size_t d = 0; d < flag_.size(); ++d) {
+            if (!(flag_[d] & kTouched) || alive_[d]) continue;
+            const int h = heirOf(d);
+            if (h < 0 || !wanted(d, h, lastDart, lastHeir)) continue;
+            lastDart = static_cast<int>(d);
+            lastHeir = h;
+            if (pass == 0) ++count;
+            else heirs.emplace_back(static_cast<int>(d), h);
+        }
+    }
+}
+
+} // namespace
+
+AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
+                                  std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs,
+                                  const std::function<bool(int, int)>& same_place, const AnnihilationRetry& retry) {
+    AnnihilationStats st;
+    Annihilator an(alpha, sign, alive, heirs != nullptr, retry.enabled);
+    an.runAll();
+    if (retry.enabled && an.pairs > 0) an.retry(retry, st);
+    st.pairs = an.pairs;
+    for (std::size_t d = 0; d < alpha.size(); ++d)
+        if (alive[d] && sign[d] < 0) ++st.remaining_anti;
+    if (heirs) an.collectHeirs(*heirs, same_place);
     return st;
 }
 
