@@ -49,7 +49,8 @@ def _check_float(value, name: str) -> float:
 
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
-            rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False) -> ExtractionResult:
+            rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False,
+            annihilation_retries: bool = True) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
     Args:
@@ -72,6 +73,11 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
         cheap_folds: skip grid points where a fold layer exactly cancels a proper layer
             (their darts would all annihilate); False extracts and annihilates them like
             all others (``hexex extract --full-annihilation``).
+        annihilation_retries: where the annihilation leaves broken hex cells (heavy folds
+            over several layers), run it again in other fixed orders and keep the one with
+            the fewest (report keys ``darts.annihilation_order``,
+            ``darts.broken_cells_after_annihilation``); False keeps the first order
+            (``hexex extract --no-annihilation-retries``).
         untangle: afterwards move vertices so that no hex is inverted (see
             :func:`untangle`), boundary vertices on the boundary of the input tet mesh
             (``hexex extract --untangle``). The report then has the key ``untangle`` (the
@@ -97,7 +103,7 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
         rotations = as_index_array(rotations, "rotations", (tets.shape[0], 4), dtypes=(np.int32,))
     max_memory = _check_int(max_memory, "max_memory", 0, maximum=2**64 - 1)
     pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
-                                                  max_memory, bool(cheap_folds))
+                                                  max_memory, bool(cheap_folds), bool(annihilation_retries))
     report = json.loads(report)
     if untangle:
         pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, _boundary_triangles(tets), False,

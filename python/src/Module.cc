@@ -34,7 +34,7 @@ double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>
 /// report JSON). The GIL is released from the conversion to the end of the extraction.
 nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const DoubleArray& params, int threads,
                   double epsilon, bool merge, const std::optional<Int32Array>& rotations, std::uint64_t max_memory,
-                  bool cheap_folds) {
+                  bool cheap_folds, bool annihilation_retries) {
     if (threads < 0) throw std::invalid_argument("threads must be >= 0 (0 = all hardware threads), got " + std::to_string(threads));
     if (!(epsilon >= 0 && epsilon < 0.5)) throw std::invalid_argument("epsilon must be in [0, 0.5), got " + HexEx::jsonNumber(epsilon));
     const TetIndices tetIdx = tetIndices(tets);
@@ -60,6 +60,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
             opt.merge = merge;
             opt.max_memory = max_memory;
             opt.cheap_folds = cheap_folds;
+            opt.annihilation_retries = annihilation_retries;
             if (rotations) opt.given_rotations = &given;
             rep = HexEx::extractHexMesh(pm, hm, opt);
         }
@@ -92,6 +93,7 @@ NB_MODULE(_core, m) {
     m.def("version", &HexEx::version, "Library version string (x.y.z).");
     m.def("extract", &HexExPython::extract, nb::arg("points"), nb::arg("tets"), nb::arg("params"), nb::arg("threads"),
           nb::arg("epsilon"), nb::arg("merge"), nb::arg("rotations").none(), nb::arg("max_memory"), nb::arg("cheap_folds"),
+          nb::arg("annihilation_retries"),
           "Extracts the hex mesh of checked arrays; returns (points, hexes, polyhedra, report_json).");
     HexExPython::bindMapFunctions(m);
     HexExPython::bindHexMeshFunctions(m);

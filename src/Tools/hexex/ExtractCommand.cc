@@ -49,6 +49,8 @@ const char* kExtractUsage =
     "  --no-merge              keep regular/anti dart pairs (skip annihilation and vertex merging)\n"
     "  --full-annihilation     extract and annihilate the darts of fold points that cancel out\n"
     "                          instead of skipping them (slower; may pick other fold copies)\n"
+    "  --no-annihilation-retries  keep the first annihilation order even where it leaves broken\n"
+    "                          hex cells (by default other orders are tried there)\n"
     "  --max-memory SIZE       memory budget, e.g. 2G, 500M (default: half of the available memory);\n"
     "                          maps that would need more are refused at once with the likely cause\n"
     "  --singularities S.vtk   write the singular edges of the input as legacy VTK lines\n"
@@ -211,6 +213,7 @@ int runExtract(const Args& args) {
         {"--epsilon", true, ""},    {"--no-merge", false, ""},     {"--quiet", false, "-q"},
         {"--singularities", true, ""}, {"--param-mesh", true, ""}, {"--surface", true, ""},
         {"--encoding", true, ""},         {"--max-memory", true, ""},      {"--full-annihilation", false, ""},
+        {"--no-annihilation-retries", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
@@ -248,6 +251,7 @@ int runExtract(const Args& args) {
         opt.epsilon = pa.getDouble("--epsilon", opt.epsilon, 0, 0.49);
         opt.merge = !pa.has("--no-merge");
         opt.cheap_folds = !pa.has("--full-annihilation");
+        opt.annihilation_retries = !pa.has("--no-annihilation-retries");
         if (pa.has("--max-memory")) {
             try {
                 opt.max_memory = HexEx::parseByteSize(pa.get("--max-memory"));
