@@ -132,7 +132,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("remaining_anti", d.remaining_anti);
             w.num("asymmetric_links", d.asymmetric_links);
             w.num("cancelled_fold_points", d.cancelled_fold_points);
-            w.num("annihilation_order", d.annihilation_order);
+            w.num("annihilation_order", static_cast<long>(d.annihilation_order));
             w.num("broken_cells_after_annihilation", d.broken_cells_after_annihilation);
         }));
         if (r.arcs.edges > 0 || r.arcs.faces > 0) {
