@@ -33,14 +33,17 @@ class Annihilator {
 public:
     Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
                 bool retries)
-        : keepInitial_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
+        : keepAntis_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
           flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {}
 
     /// The first pass: every anti dart in ascending order, then the re-queued ones.
     void runAll() {
-        if (keepInitial_ && initialAlive_.empty()) initialAlive_ = alive_;
         for (long d = 0; d < n_; ++d)
-            if (alive_[idx(d)] && sign_[idx(d)] < 0) F(d) |= kQueued;
+            if (alive_[idx(d)] && sign_[idx(d)] < 0) {
+                F(d) |= kQueued;
+                if (keepAntis_) antis_.push_back(static_cast<int>(d));
+            }
+        keepAntis_ = false;
         run(nullptr);
     }
 
@@ -53,7 +56,7 @@ public:
     long pairs = 0;  ///< pairs removed so far
 
 private:
-    const bool keepInitial_;
+    bool keepAntis_;
 
     static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
     std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
@@ -82,13 +85,16 @@ private:
     void step(long anti, std::deque<long>& requeued);
 
     /// Puts every dart back to its original links, alive and ungrouped (before a retry).
+    /// Only touched darts changed: every removed dart and every dart that joined a vertex
+    /// group was touched, and each was alive then.
     void restoreAll() {
-        for (const auto& e : saved_) A(e.first) = e.second;
-        for (long d = 0; d < n_; ++d) {
-            alive_[idx(d)] = initialAlive_[idx(d)];
+        for (const auto& e : saved_) {
+            const long d = e.first;
+            A(d) = e.second;
+            alive_[idx(d)] = 1;
             F(d) &= static_cast<std::uint8_t>(~(kQueued | kTouched));
+            if (!sameVertex_.parent.empty()) sameVertex_.parent[idx(d)] = e.first;
         }
-        for (std::size_t d = 0; d < sameVertex_.parent.size(); ++d) sameVertex_.parent[d] = static_cast<int>(d);
         pairs = 0;
     }
 
@@ -104,11 +110,10 @@ private:
     /// Broken cells among the cells of the alive darts in @p c.
     long brokenCells(const std::vector<int>& c) { return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone); }
 
-    /// The alive anti darts in the alternative order @p k (1: descending, else by a fixed hash).
+    /// The anti darts alive before the first pass in the alternative order @p k (1:
+    /// descending, else by a fixed hash).
     std::vector<int> antiOrder(int k) const {
-        std::vector<int> o;
-        for (long d = 0; d < n_; ++d)
-            if (alive_[idx(d)] && sign_[idx(d)] < 0) o.push_back(static_cast<int>(d));
+        std::vector<int> o = antis_;
         if (k == 1) std::reverse(o.begin(), o.end());
         if (k >= 2) {
             const std::uint64_t salt = mix(static_cast<std::uint64_t>(k));
@@ -131,7 +136,7 @@ private:
     // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
     UnionFind sameVertex_;
     std::vector<std::pair<int, std::array<int, 4>>> saved_;  // (dart, original links), in order of first change
-    std::vector<char> initialAlive_;                         // alive before the first pass (kept for retries)
+    std::vector<int> antis_;                                 // anti darts alive before the first pass (for retries)
 };
 
 void Annihilator::step(long anti, std::deque<long>& requeued) {
@@ -210,17 +215,14 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
     const long best0 = brokenCells(changedDarts());
     st.broken_cells_before = st.broken_cells_after = best0;
     if (best0 == 0) return;
-    const long firstPairs = pairs;
-    const long budget = static_cast<long>(opt.work_factor * static_cast<double>(firstPairs)) + 100000;
-    long best = best0, work = 0;
+    long best = best0;
     int bestOrder = 0, lastRun = 0;
-    for (int k = 1; k <= opt.orders && best > 0 && work + firstPairs <= budget; ++k) {
+    for (int k = 1; k <= opt.orders && best > 0 && k - bestOrder <= opt.patience; ++k) {
         ++st.retry_runs;
         restoreAll();
         std::vector<int> order = antiOrder(k);
         for (int d : order) F(d) |= kQueued;
         run(&order);
-        work += pairs;
         lastRun = k;
         const long now = brokenCells(changedDarts());
         if (now < best) {

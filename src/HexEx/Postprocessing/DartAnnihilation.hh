@@ -21,23 +21,23 @@ struct AnnihilationStats {
     int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 descending, k > 1 hashed
 };
 
-/// Local retries of the annihilation (annihilateDarts()), for 3D hex maps.
+/// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.
 ///
 /// Where fold layers overlap several regular layers or a singular edge, which regular dart
 /// an anti dart cancels with depends on the processing order, and some orders leave broken
 /// hex cells (measured on the shared hex meshes folded by 0.6-0.8 grid units: two cells
-/// merged into one polyhedron, a cell glued to itself). The annihilation works in
-/// independent *clusters*: sets of darts joined by their original links that a run removes or
-/// re-links. After the first pass (ascending order), the cells around every changed dart are
-/// checked (countDefectiveHexCells()); each cluster next to a broken cell is put back to its
-/// original links and annihilated again in other orders (reversed, then orders given by a
-/// fixed hash of the dart index), keeping the first order that leaves no broken cell there,
-/// else the one with the fewest (ties: the earlier order). A run that would change a dart of
-/// another cluster is abandoned. Deterministic; maps without a broken cell are unchanged.
+/// merged into one polyhedron, a cell glued to itself). After the first pass (ascending
+/// order), the cells around every dart the pass re-linked are checked
+/// (countDefectiveHexCells()). If one is broken, every touched dart is put back to its
+/// original links and the whole annihilation runs again in other fixed orders (descending,
+/// then orders given by a fixed hash of the dart index), until one leaves no broken cell;
+/// otherwise the order with the fewest is kept (ties: the earlier order). Each retry
+/// costs time in proportion to the darts the first pass touched, not to the whole map.
+/// Deterministic; maps whose first pass leaves no broken cell are not affected.
 struct AnnihilationRetry {
     bool enabled = false;     ///< check and retry at all
-    int orders = 16;          ///< other orders tried per cluster
-    double work_factor = 8.0; ///< retries stop after this many times the first pass's pairs (plus 100000)
+    int orders = 16;          ///< other orders tried at most
+    int patience = 6;         ///< stop after this many orders in a row that leave no fewer broken cells than the best
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the
@@ -52,8 +52,8 @@ struct AnnihilationRetry {
 /// dart of such a group gets the group's smallest surviving dart. The positions of removed
 /// darts are then candidates for their heir's vertex (VertexMerging.hh): those of regular
 /// darts like the vertex's own, those of anti darts (in the flipped part) only as a last
-/// resort. @p retry turns on the local retries of clusters left with broken hex cells
-/// (AnnihilationRetry). With @p same_place (true if two darts, the first the smaller, sit at the same
+/// resort. @p retry turns on the retries in other orders where the first pass leaves broken
+/// hex cells (AnnihilationRetry). With @p same_place (true if two darts, the first the smaller, sit at the same
 /// grid point of the same tet), an entry at the same place and with the same heir as the
 /// entry before it is left out: it would add the same candidate again.
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
