@@ -5,6 +5,7 @@
 #include <HexEx/GMap/GMapValidator.hh>
 #include <HexEx/Postprocessing/DartAnnihilation.hh>
 #include <HexEx/Postprocessing/FaceConnectionRepair.hh>
+#include <HexEx/Postprocessing/LocalHexCheck.hh>
 
 #include <gtest/gtest.h>
 
@@ -257,6 +258,45 @@ TEST(DartAnnihilation, AntiDartWithoutRegularNeighbourRemains) {
     const auto st = annihilateDarts(a, sign, alive);
     EXPECT_EQ(st.pairs, 0);
     EXPECT_EQ(st.remaining_anti, 2);
+}
+
+// The per-cell check the annihilation retries use (LocalHexCheck.hh): two separate hexes are
+// fine; crossing an alpha_1 link between them makes one broken cell of 96 darts; an alpha_3
+// link inside one cell (a cell glued to itself) and a link to a removed dart are broken too.
+TEST(LocalHexCheck, FindsMergedAndSelfGluedCells) {
+    const auto hex = makeHex().links();
+    std::vector<std::array<int, 4>> a(hex.begin(), hex.end());
+    for (const auto& l : hex) a.push_back({l[0] + 48, l[1] + 48, l[2] + 48, l[3] + 48});
+    for (int d = 0; d < 96; ++d) a[d][3] = d;  // boundary
+    std::vector<char> alive(96, 1);
+    std::vector<std::uint8_t> mark(96, 0);
+    std::vector<int> all(96);
+    std::iota(all.begin(), all.end(), 0);
+    std::vector<int> bad;
+    EXPECT_EQ(countDefectiveHexCells(a, alive, all, mark, 1, 2, &bad), 0);
+    EXPECT_TRUE(bad.empty());
+    EXPECT_EQ(std::count(mark.begin(), mark.end(), 0), 96);  // scratch bits cleared
+    {
+        auto b = a;
+        const int d = 0, d1 = b[0][1], e = 48, e1 = b[48][1];
+        b[d][1] = e1, b[e1][1] = d, b[e][1] = d1, b[d1][1] = e;  // crossed alpha_1
+        EXPECT_EQ(countDefectiveHexCells(b, alive, {0, 50, 90}, mark, 1, 2, &bad), 1);
+        EXPECT_EQ(bad.size(), 96u);
+        EXPECT_EQ(std::count(mark.begin(), mark.end(), 0), 96);
+    }
+    {
+        auto b = a;
+        b[0][3] = 20, b[20][3] = 0;  // glued to itself
+        EXPECT_EQ(countDefectiveHexCells(b, alive, {5, 60}, mark, 1, 2), 1);
+        b[0][3] = 60, b[60][3] = 0;  // a link to the other cell, but not over a whole face (eq2)
+        b[20][3] = 20;
+        EXPECT_EQ(countDefectiveHexCells(b, alive, {5, 60}, mark, 1, 2), 2);
+    }
+    {
+        auto dead = alive;
+        dead[7] = 0;  // its partners now point at a removed dart
+        EXPECT_EQ(countDefectiveHexCells(a, dead, {0, 48}, mark, 1, 2), 1);
+    }
 }
 
 TEST(UnionFind, ClassesAndSmallestRoot) {

@@ -147,10 +147,34 @@ TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
     }
 }
 
-// The full sweep: both meshes, a = 0.6, 0.7, 0.8, seeds 1-4 (about 2 minutes). Prints one
-// line per case; Documentation/algorithm.md (#algorithm_from_hex) lists the cases that
-// still fail and why. The report must agree with the written mesh on every case; at least
-// 19 of the 24 cases give the source mesh back (the goal is all 24).
+// The annihilation's retries in other orders (AnnihilationRetry): on cfpc16 at 0.6, seed 1
+// the first order glues a cell to itself (3 polyhedra; the relinking cannot repair it),
+// another order gives the source mesh; on the pig at 0.7, seed 4 the first order crosses
+// alpha_1/alpha_2 links (two cells merged into a polyhedron). The kept order, and so the
+// mesh, is the same for any thread count.
+TEST(SharedHexMeshes, AnnihilationRetriesGiveTheSourceMeshWhereTheFirstOrderBreaksCells) {
+    const HexMesh pig = sharedHexMesh("sss19_pig_in"), cf = sharedHexMesh("cfpc16_hollow8");
+    if (pig.hexes.empty() || cf.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes not available (or no xz)";
+    const FoldedCase first = runFolded(cf, 0.6, 1, 2, false);
+    EXPECT_EQ(first.out.polyhedra.size(), 3u);
+    EXPECT_FALSE(first.report.valid_all_hex);
+    EXPECT_EQ(first.report.darts.annihilation_order, 0);
+    const FoldedCase retried = runFolded(cf, 0.6, 1, 2, true);
+    expectSourceMeshBack(retried, "cfpc16 a=0.6 seed=1");
+    EXPECT_GT(retried.report.darts.annihilation_order, 0);
+    EXPECT_EQ(retried.report.darts.broken_cells_after_annihilation, 0);
+    const FoldedCase one = runFolded(pig, 0.7, 4, 1), two = runFolded(pig, 0.7, 4, 2);
+    expectSourceMeshBack(one, "pig a=0.7 seed=4 threads=1");
+    EXPECT_GT(one.report.darts.annihilation_order, 0);
+    EXPECT_EQ(one.report.darts.annihilation_order, two.report.darts.annihilation_order);
+    EXPECT_EQ(one.out.hexes, two.out.hexes);
+    EXPECT_EQ(one.out.vertices, two.out.vertices);
+}
+
+// The full sweep: both meshes, a = 0.6, 0.7, 0.8, seeds 1-4 (about 40 s). Prints one
+// line per case; Documentation/algorithm.md (#algorithm_from_hex) has the figures. The
+// report must agree with the written mesh on every case, and all 24 cases give the source
+// mesh back (19 before the annihilation's retries).
 TEST(SharedHexMeshes, DISABLED_FullSweep) {
     int ok = 0, total = 0;
     for (const char* name : {"sss19_pig_in", "cfpc16_hollow8"}) {
@@ -171,5 +195,5 @@ TEST(SharedHexMeshes, DISABLED_FullSweep) {
     }
     std::cout << ok << " of " << total << " cases give the source mesh back\n";
     EXPECT_EQ(total, 24);
-    EXPECT_GE(ok, 19);
+    EXPECT_EQ(ok, 24);
 }
