@@ -110,3 +110,20 @@ def test_needle_fold_is_skipped_with_the_same_mesh(repo_root):
     assert cheap.report["darts"]["cancelled_fold_points"] > 0
     assert full.report["darts"]["cancelled_fold_points"] == 0
     assert cheap.report["darts"]["extracted"] < full.report["darts"]["extracted"] // 4
+
+
+def test_annihilation_retries_option_and_report_keys(repo_root):
+    # A fold over one layer (the needle above): the first annihilation order leaves no
+    # broken cell, so the retries change nothing and the report says order 0.
+    m = hexex.read_map(repo_root / "Examples" / "data" / "sphere.hexex")
+    params = m.params.copy()
+    params[m.tets == 40, 1] += 3.0
+    on = extract_checked((m.points, m.tets, params))
+    off = extract_checked((m.points, m.tets, params), annihilation_retries=False)
+    assert on.valid_all_hex and off.valid_all_hex
+    np.testing.assert_array_equal(on.points, off.points)
+    np.testing.assert_array_equal(on.hexes, off.hexes)
+    assert on.report["darts"]["annihilated_pairs"] > 0
+    for r in (on, off):
+        assert r.report["darts"]["annihilation_order"] == 0
+        assert r.report["darts"]["broken_cells_after_annihilation"] == 0
