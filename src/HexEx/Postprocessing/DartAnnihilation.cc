@@ -1,5 +1,6 @@
 #include "DartAnnihilation.hh"
 
+#include "../Core/Prefetch.hh"
 #include "../Core/UnionFind.hh"
 #include "LocalHexCheck.hh"
 
@@ -193,6 +194,21 @@ void Annihilator::run(const std::vector<int>* order) {
     const long end = order ? static_cast<long>(order->size()) : n_;
     auto next = [&]() -> long {
         for (; scan < end; ++scan) {
+            if (order) {
+                // A retry visits the darts in hashed order: fetch the links of the darts a
+                // few steps ahead, and then those of their partners, before they are needed.
+                if (scan + 16 < end) {
+                    const long f = (*order)[idx(scan + 16)];
+                    prefetch(&A(f));
+                    prefetch(&F(f));
+                }
+                if (scan + 8 < end)
+                    for (int p : A((*order)[idx(scan + 8)]))
+                        if (p >= 0) {
+                            prefetch(&A(p));
+                            prefetch(&alive_[idx(p)]);
+                        }
+            }
             const long d = order ? (*order)[idx(scan)] : scan;
             if ((F(d) & kQueued) && isAnti(d)) {
                 ++scan;
