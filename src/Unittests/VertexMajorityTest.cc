@@ -2,7 +2,8 @@
 // darts are interior stays interior although a removed dart inherited by it lies on the
 // boundary, and a position held by most of a vertex's surviving darts is its only
 // preferred candidate (for interior vertices, the position with most of its placed points
-// first).
+// first), and a boundary vertex of the tet mesh among the candidates of a boundary vertex
+// is its only preferred candidate.
 
 #include <HexEx/Mesh/TetMesh.hh>
 #include <HexEx/Postprocessing/VertexMerging.hh>
@@ -129,4 +130,40 @@ TEST(VertexMajority, PlacedPointsComeBeforeTheDartsForInteriorVertices) {
     EXPECT_EQ(cand.preferred[0], 1);
     EXPECT_EQ(cand.position[0], proper);
     EXPECT_EQ(cand.position[1], copy);
+}
+
+// A boundary vertex whose only boundary h-vertex is a fold copy inside a boundary face
+// (8 darts on the face z = 0), with 8 darts at a corner of the tet mesh off that plane and
+// 8 at a copy inside the tet (cfpc16_hollow8 at a = 0.7, seed 8): the plane rule alone
+// keeps the copy on the face and lists no other candidate. The corner maps exactly onto
+// the grid point, so it is the only preferred candidate, the face copy the next.
+TEST(VertexMajority, TetMeshBoundaryVertexBeatsAFoldCopyOnABoundaryFace) {
+    const TetMesh mesh = unitTet();
+    int bottom = -1;  // the boundary halfface in the plane z = 0
+    for (std::size_t hf = 0; hf < mesh.n_halffaces(); ++hf) {
+        const auto v = mesh.halfface_vertices(HalfFaceHandle(static_cast<int>(hf)));
+        if (mesh.position(v[0])[2] == 0 && mesh.position(v[1])[2] == 0 && mesh.position(v[2])[2] == 0) bottom = static_cast<int>(hf);
+    }
+    ASSERT_GE(bottom, 0);
+    const Vec3d onFace(0.3, 0.3, 0), corner(0, 0, 1), inside(0.2, 0.2, 0.2);
+    for (bool withCorner : {true, false}) {
+        DartPlacement p = interiorDarts({onFace, withCorner ? corner : Vec3d(0.1, 0.1, 0.6), inside}, {8, 8, 8});
+        p.boundary_hf[0] = {bottom, -1, -1};
+        addInheritedPlacedPoints(p, inside, 1);
+        VertexCandidates cand;
+        const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+        ASSERT_EQ(pos.size(), 1u);
+        if (!withCorner) {
+            // No candidate at a vertex of the tet mesh: the plane rule's only boundary candidate.
+            EXPECT_EQ(pos[0], onFace);
+            EXPECT_TRUE(cand.vertex.empty());
+            continue;
+        }
+        EXPECT_EQ(pos[0], corner);
+        ASSERT_EQ(cand.vertex.size(), 1u);
+        EXPECT_EQ(cand.preferred[0], 1);
+        ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
+        EXPECT_EQ(cand.position[0], corner);
+        EXPECT_EQ(cand.position[1], onFace);
+    }
 }

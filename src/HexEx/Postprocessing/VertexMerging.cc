@@ -304,7 +304,22 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             auto takeMajor = [&](const Vec3d& choice) {
                 return hasMajor && std::sqrt(residualOf(major)) <= 0.25 * (major - choice).norm() + tol && (onBoundaryFace(major) || atBoundaryVertex(major));
             };
-            if (dist.size() == 1 && extra.empty() && !(hasMajor && (major - dist[0]).norm() > tol && takeMajor(dist[0]))) {
+            // A candidate at a boundary vertex of the tet mesh: that vertex maps exactly onto
+            // the grid point. A fold copy lies inside a tet or on a boundary face, at a point
+            // no vertex of the mesh maps to; on a curved boundary the planes of the copy's
+            // face can rate it above the proper preimage (issue 22). If exactly one of the
+            // surviving and removed regular darts' positions is such a vertex, it is the only
+            // preferred candidate.
+            Vec3d atVertex(0, 0, 0);
+            int nAtVertex = 0;
+            for (const Vec3d& p : allDist)
+                if (atBoundaryVertex(p)) {
+                    atVertex = p;
+                    ++nAtVertex;
+                }
+            const bool hasVertex = nAtVertex == 1;
+            if (dist.size() == 1 && extra.empty() && !(hasMajor && (major - dist[0]).norm() > tol && takeMajor(dist[0])) &&
+                !(hasVertex && (atVertex - dist[0]).norm() > tol)) {
                 out[l] = dist[0];
                 continue;
             }
@@ -327,6 +342,10 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             ordered.insert(ordered.end(), extra.begin(), extra.end());
             if (takeMajor(dist[best])) {
                 moveToFront(ordered, major, tol);
+                preferred = 1;
+            }
+            if (hasVertex && (ordered[0] - atVertex).norm() > tol) {
+                moveToFront(ordered, atVertex, tol);
                 preferred = 1;
             }
             out[l] = ordered[0];

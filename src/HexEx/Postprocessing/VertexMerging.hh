@@ -58,7 +58,10 @@ struct VertexCandidates {
 /// half of the class's surviving darts is its only preferred candidate (first), for
 /// boundary classes only if its distance to the boundary planes is at most a quarter of
 /// its distance to the plane rule's choice and it lies on one of those boundary faces or
-/// at a boundary vertex of @p mesh. For interior classes, the position with more than half
+/// at a boundary vertex of @p mesh. A boundary class one of whose candidates (positions of
+/// surviving and removed regular darts) lies at a boundary vertex of @p mesh, and only one,
+/// has that candidate as its only preferred one (first; it maps exactly onto the grid point,
+/// a fold copy does not). For interior classes, the position with more than half
 /// of the class's placed points (surviving and removed regular darts, one per tet and grid
 /// point) comes before the majority of darts (issue 22; Documentation/algorithm.md,
 /// "Vertices").
