@@ -34,7 +34,7 @@ class Annihilator {
 public:
     Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
                 bool retries)
-        : keepAntis_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
+        : keepAntis_(retries), saveOriginals_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
           flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {}
 
     /// The first pass: every anti dart in ascending order, then the re-queued ones.
@@ -58,6 +58,7 @@ public:
 
 private:
     bool keepAntis_;
+    const bool saveOriginals_;  // only the retries need the original links (not the 2D extractor)
 
     static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
     std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
@@ -66,7 +67,7 @@ private:
 
     /// Called before @p d's links change or it is removed: saves its original links.
     void touch(long d) {
-        if (!(F(d) & kSaved)) {
+        if (saveOriginals_ && !(F(d) & kSaved)) {
             F(d) |= kSaved;
             saved_.emplace_back(static_cast<int>(d), A(d));
         }
