@@ -131,7 +131,9 @@ TEST(ValidatorHonesty, PigAtSixTenthsIsValidAndTheSourceMesh) {
 // and 3 the majority of placed points (where the darts have none, or the wrong one);
 // cfpc16 0.7 seed 8 and pig 0.6 seed 7 the boundary vertex of the tet mesh among a boundary
 // vertex's candidates (each had one boundary vertex on a fold copy in a boundary face, the
-// cfpc16 one inverting a hex). Skipped without ../shared.
+// cfpc16 one inverting a hex), pig 0.8 seeds 12 and 18 the vertex of the tet mesh among an
+// interior vertex's candidates (each had two interior vertices on fold copies and one
+// inverted hex). Skipped without ../shared.
 TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
     const HexMesh pig = sharedHexMesh("sss19_pig_in"), cf = sharedHexMesh("cfpc16_hollow8");
     if (pig.hexes.empty() || cf.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes not available (or no xz)";
@@ -143,7 +145,7 @@ TEST(SharedHexMeshes, SampledFoldsGiveTheSourceMesh) {
         unsigned seed;
     } cases[] = {{&pig, "pig", 0.7, 1}, {&pig, "pig", 0.7, 2}, {&cf, "cfpc16", 0.6, 2}, {&cf, "cfpc16", 0.7, 3},
                  {&cf, "cfpc16", 0.8, 2}, {&pig, "pig", 0.8, 1}, {&pig, "pig", 0.8, 3}, {&cf, "cfpc16", 0.7, 8},
-                 {&pig, "pig", 0.6, 7}};
+                 {&pig, "pig", 0.6, 7}, {&pig, "pig", 0.8, 12}, {&pig, "pig", 0.8, 18}};
     for (const auto& k : cases) {
         const std::string what = std::string(k.name) + " a=" + std::to_string(k.a) + " seed=" + std::to_string(k.seed);
         const FoldedCase c = runFolded(*k.src, k.a, k.seed);

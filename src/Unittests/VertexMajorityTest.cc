@@ -3,7 +3,8 @@
 // boundary, and a position held by most of a vertex's surviving darts is its only
 // preferred candidate (for interior vertices, the position with most of its placed points
 // first), and a boundary vertex of the tet mesh among the candidates of a boundary vertex
-// is its only preferred candidate.
+// (any vertex of the tet mesh among those of an interior vertex) is its only preferred
+// candidate.
 
 #include <HexEx/Mesh/TetMesh.hh>
 #include <HexEx/Postprocessing/VertexMerging.hh>
@@ -20,6 +21,20 @@ TetMesh unitTet() {
     const VertexHandle a = m.add_vertex(Vec3d(0, 0, 0)), b = m.add_vertex(Vec3d(1, 0, 0)),
                        c = m.add_vertex(Vec3d(0, 1, 0)), d = m.add_vertex(Vec3d(0, 0, 1));
     m.add_cell({a, b, c, d});
+    m.build_adjacency();
+    return m;
+}
+
+/// The same tet split into four at an interior vertex (0.25, 0.25, 0.25).
+TetMesh splitTet() {
+    TetMesh m;
+    const VertexHandle a = m.add_vertex(Vec3d(0, 0, 0)), b = m.add_vertex(Vec3d(1, 0, 0)),
+                       c = m.add_vertex(Vec3d(0, 1, 0)), d = m.add_vertex(Vec3d(0, 0, 1)),
+                       e = m.add_vertex(Vec3d(0.25, 0.25, 0.25));
+    m.add_cell({e, b, c, d});
+    m.add_cell({a, e, c, d});
+    m.add_cell({a, b, e, d});
+    m.add_cell({a, b, c, e});
     m.build_adjacency();
     return m;
 }
@@ -165,5 +180,45 @@ TEST(VertexMajority, TetMeshBoundaryVertexBeatsAFoldCopyOnABoundaryFace) {
         ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
         EXPECT_EQ(cand.position[0], corner);
         EXPECT_EQ(cand.position[1], onFace);
+    }
+}
+
+// An interior vertex with both majorities at a fold copy inside a tet (18 of 24 darts, 7 of
+// 9 placed points) and the rest at an interior vertex of the tet mesh (pig at a = 0.8,
+// seed 18): the tet-mesh vertex maps exactly onto the grid point, so it is the only
+// preferred candidate. With two candidates at vertices of the tet mesh the rule says
+// nothing and the majority stays first; without annihilated darts (no inherited placed
+// point) it is not applied either.
+TEST(VertexMajority, TetMeshVertexBeatsTheMajoritiesOfAnInteriorVertex) {
+    const TetMesh mesh = splitTet();
+    const Vec3d vertex(0.25, 0.25, 0.25), copy(0.3, 0.2, 0.1), corner(0, 0, 0);
+    {
+        DartPlacement p = interiorDarts({copy, vertex}, {18, 6});
+        addInheritedPlacedPoints(p, copy, 6);
+        addInheritedPlacedPoints(p, vertex, 1);
+        VertexCandidates cand;
+        const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+        ASSERT_EQ(pos.size(), 1u);
+        EXPECT_EQ(pos[0], vertex);
+        ASSERT_EQ(cand.vertex.size(), 1u);
+        EXPECT_EQ(cand.preferred[0], 1);
+        ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
+        EXPECT_EQ(cand.position[0], vertex);
+        EXPECT_EQ(cand.position[1], copy);
+    }
+    {
+        DartPlacement p = interiorDarts({copy, vertex, corner}, {18, 3, 3});
+        addInheritedPlacedPoints(p, copy, 6);
+        VertexCandidates cand;
+        const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+        EXPECT_EQ(pos[0], copy);
+        ASSERT_EQ(cand.vertex.size(), 1u);
+        EXPECT_EQ(cand.preferred[0], 1);
+    }
+    {
+        const DartPlacement p = interiorDarts({copy, vertex}, {18, 6});
+        VertexCandidates cand;
+        const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
+        EXPECT_EQ(pos[0], copy);
     }
 }

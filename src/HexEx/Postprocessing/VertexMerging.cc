@@ -122,21 +122,27 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
     }
     const double tol = 1e-9 * std::max(1e-300, (hi - lo).norm());
 
-    // Positions of the tet mesh's boundary vertices, sorted by x (for the majority rule of
-    // boundary classes; only maps with annihilated darts have extras and need them).
-    std::vector<Vec3d> boundaryVertices;
+    // Positions of the tet mesh's vertices, sorted by x, with a boundary flag (for the
+    // majority and vertex rules; only maps with annihilated darts have extras and need them).
+    std::vector<std::pair<Vec3d, bool>> meshVertices;
     if (!darts.extra_dart.empty()) {
-        for (std::size_t v = 0; v < mesh.n_vertices(); ++v)
-            if (mesh.is_boundary(VertexHandle(static_cast<int>(v)))) boundaryVertices.push_back(mesh.position(VertexHandle(static_cast<int>(v))));
-        std::sort(boundaryVertices.begin(), boundaryVertices.end(), [](const Vec3d& a, const Vec3d& b) { return a[0] < b[0]; });
+        meshVertices.reserve(mesh.n_vertices());
+        for (std::size_t v = 0; v < mesh.n_vertices(); ++v) {
+            const VertexHandle vh(static_cast<int>(v));
+            meshVertices.emplace_back(mesh.position(vh), mesh.is_boundary(vh));
+        }
+        std::sort(meshVertices.begin(), meshVertices.end(),
+                  [](const std::pair<Vec3d, bool>& a, const std::pair<Vec3d, bool>& b) { return a.first[0] < b.first[0]; });
     }
-    auto atBoundaryVertex = [&](const Vec3d& x) {
-        auto it = std::lower_bound(boundaryVertices.begin(), boundaryVertices.end(), x[0] - tol,
-                                   [](const Vec3d& a, double val) { return a[0] < val; });
-        for (; it != boundaryVertices.end() && (*it)[0] <= x[0] + tol; ++it)
-            if ((*it - x).norm() <= tol) return true;
+    // Whether @p x is the position of a vertex of the tet mesh (a boundary one if @p boundary).
+    auto atMeshVertex = [&](const Vec3d& x, bool boundary) {
+        auto it = std::lower_bound(meshVertices.begin(), meshVertices.end(), x[0] - tol,
+                                   [](const std::pair<Vec3d, bool>& a, double val) { return a.first[0] < val; });
+        for (; it != meshVertices.end() && it->first[0] <= x[0] + tol; ++it)
+            if ((!boundary || it->second) && (it->first - x).norm() <= tol) return true;
         return false;
     };
+    auto atBoundaryVertex = [&](const Vec3d& x) { return atMeshVertex(x, true); };
 
     std::vector<Vec3d> out(nc);
     // Classes are independent: parallel chunks, each with its own scratch buffers and its
@@ -227,11 +233,31 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                         moveToFront(dist, major, tol);
                     }
                 }
+                // A candidate at a vertex of the tet mesh maps exactly onto the grid point; a
+                // fold copy lies inside a tet, a face or an edge, where no vertex maps to it.
+                // If exactly one candidate is such a vertex, it is the only preferred one, even
+                // against the majorities (issue 22: pig at a = 0.8, seed 18: 18 of 24 darts and
+                // 8 of 12 placed points at a fold copy, whose hex the source position of the
+                // neighbour then inverted).
+                bool atVertexRule = false;
+                if (dist.size() > 1 && !meshVertices.empty()) {
+                    int n = 0;
+                    Vec3d at(0, 0, 0);
+                    for (const Vec3d& p : dist)
+                        if (atMeshVertex(p, false)) {
+                            at = p;
+                            ++n;
+                        }
+                    if (n == 1) {
+                        moveToFront(dist, at, tol);
+                        atVertexRule = true;
+                    }
+                }
                 out[l] = dist[0];
                 const auto extra = flippedExtras(dist);
                 if (dist.size() > 1 || !extra.empty()) {
                     cand.vertex.push_back(static_cast<int>(l));
-                    cand.preferred.push_back(hasMajor || supportMajor ? 1 : static_cast<int>(dist.size()));
+                    cand.preferred.push_back(hasMajor || supportMajor || atVertexRule ? 1 : static_cast<int>(dist.size()));
                     cand.offset.push_back(static_cast<int>(cand.position.size()));
                     cand.position.insert(cand.position.end(), dist.begin(), dist.end());
                     cand.position.insert(cand.position.end(), extra.begin(), extra.end());

@@ -63,8 +63,9 @@ struct VertexCandidates {
 /// has that candidate as its only preferred one (first; it maps exactly onto the grid point,
 /// a fold copy does not). For interior classes, the position with more than half
 /// of the class's placed points (surviving and removed regular darts, one per tet and grid
-/// point) comes before the majority of darts (issue 22; Documentation/algorithm.md,
-/// "Vertices").
+/// point) comes before the majority of darts, and a candidate at a vertex of @p mesh, if
+/// exactly one is and the map has annihilated darts, before both (issue 22;
+/// Documentation/algorithm.md, "Vertices").
 /// @p label gives the class of every dart (-1 for none), @p n_classes their number;
 /// @p threads positions the classes in parallel (the result does not depend on it).
 std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<int>& label, int n_classes,
