@@ -48,6 +48,18 @@ public:
         run(nullptr);
     }
 
+    /// Phase by phase: first only partners linked by alpha_0, then alpha_0..1, alpha_0..2 and
+    /// all four; in each phase every alive anti dart in ascending order, then the re-queued ones.
+    void runPhased() {
+        for (int phase = 0; phase < 4; ++phase) {
+            maxLink_ = phase;
+            for (int d : antis_)
+                if (alive_[idx(d)]) F(d) |= kQueued;
+            run(&antis_);
+        }
+        maxLink_ = 3;
+    }
+
     /// If the first pass left broken cells, annihilates again in other orders (see AnnihilationRetry).
     void retry(const AnnihilationRetry& opt, AnnihilationStats& st);
 
@@ -112,12 +124,12 @@ private:
     /// Broken cells among the cells of the alive darts in @p c.
     long brokenCells(const std::vector<int>& c) { return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone); }
 
-    /// The anti darts alive before the first pass in the alternative order @p k (1:
-    /// descending, else by a fixed hash).
+    /// The anti darts alive before the first pass in the alternative order @p k (2:
+    /// descending, 3 and more: by a fixed hash).
     std::vector<int> antiOrder(int k) const {
         std::vector<int> o = antis_;
-        if (k == 1) std::reverse(o.begin(), o.end());
-        if (k >= 2) {
+        if (k == 2) std::reverse(o.begin(), o.end());
+        if (k >= 3) {
             const std::uint64_t salt = mix(static_cast<std::uint64_t>(k));
             std::vector<std::pair<std::uint64_t, int>> keyed(o.size());
             for (std::size_t i = 0; i < o.size(); ++i) keyed[i] = {mix(static_cast<std::uint64_t>(o[i]) ^ salt), o[i]};
@@ -138,12 +150,13 @@ private:
     // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
     UnionFind sameVertex_;
     std::vector<std::pair<int, std::array<int, 4>>> saved_;  // (dart, original links), in order of first change
+    int maxLink_ = 3;                                        // partners are looked for among alpha_0..alpha_maxLink_
     std::vector<int> antis_;                                 // anti darts alive before the first pass (for retries)
 };
 
 void Annihilator::step(long anti, std::deque<long>& requeued) {
     long reg = -1;
-    for (int i = 0; i < 4 && reg < 0; ++i) {
+    for (int i = 0; i <= maxLink_ && reg < 0; ++i) {
         const long r = A(anti)[i];
         if (r >= 0 && r != anti && alive_[idx(r)] && sign_[idx(r)] > 0) reg = r;
     }
@@ -232,14 +245,24 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
     const long best0 = brokenCells(changedDarts());
     st.broken_cells_before = st.broken_cells_after = best0;
     if (best0 == 0) return;
+    // Variant k: 1 phase by phase (runPhased()), 2 descending, k >= 3 a hashed order.
+    auto runVariant = [&](int k) {
+        restoreAll();
+        if (k == 0) {
+            runAll();
+        } else if (k == 1) {
+            runPhased();
+        } else {
+            std::vector<int> order = antiOrder(k);
+            for (int d : order) F(d) |= kQueued;
+            run(&order);
+        }
+    };
     long best = best0;
     int bestOrder = 0, lastRun = 0;
     for (int k = 1; k <= opt.orders && best > 0 && k - bestOrder <= opt.patience; ++k) {
         ++st.retry_runs;
-        restoreAll();
-        std::vector<int> order = antiOrder(k);
-        for (int d : order) F(d) |= kQueued;
-        run(&order);
+        runVariant(k);
         lastRun = k;
         const long now = brokenCells(changedDarts());
         if (now < best) {
@@ -247,16 +270,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             bestOrder = k;
         }
     }
-    if (lastRun != bestOrder) {
-        restoreAll();
-        if (bestOrder == 0) {
-            runAll();
-        } else {
-            std::vector<int> order = antiOrder(bestOrder);
-            for (int d : order) F(d) |= kQueued;
-            run(&order);
-        }
-    }
+    if (lastRun != bestOrder) runVariant(bestOrder);
     st.reordered = bestOrder;
     st.broken_cells_after = best;
 }
