@@ -102,7 +102,7 @@ struct ExtractionReport {
         long asymmetric_links = 0;   ///< traced links whose partner traced elsewhere (dropped)
         long implicit_cells = 0;     ///< hexes built from the grid inside one tet, without darts
         long cancelled_fold_points = 0;  ///< (tet, grid point) occurrences of cancelled fold points (no darts; ExtractionOptions::cheap_folds)
-        int annihilation_order = 0;      ///< order of the annihilation kept: 0 the first pass, k > 0 the k-th retry (ExtractionOptions::annihilation_retries)
+        int annihilation_order = 0;      ///< order of the annihilation kept: 0 the first pass, 1 phase by phase, 2 descending, k > 2 hashed (ExtractionOptions::annihilation_retries)
         long broken_cells_after_annihilation = 0; ///< hex cells the annihilation left broken, after the retries
     } darts;  ///< dart statistics
     /// Edge arcs and face patches (only with ExtractionOptions::arcs).

@@ -18,7 +18,7 @@ struct AnnihilationStats {
     long broken_cells_before = 0; ///< broken hex cells next to changed darts after the first pass (with retries only)
     long broken_cells_after = 0;  ///< the same for the order kept
     long retry_runs = 0;          ///< runs in other orders
-    int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 descending, k > 1 hashed
+    int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 phase by phase, 2 descending, k > 2 hashed
 };
 
 /// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.
@@ -29,11 +29,13 @@ struct AnnihilationStats {
 /// merged into one polyhedron, a cell glued to itself). After the first pass (ascending
 /// order), the cells around every dart the pass re-linked are checked
 /// (countDefectiveHexCells()). If one is broken, every touched dart is put back to its
-/// original links and the whole annihilation runs again in other fixed orders (descending,
-/// then orders given by a fixed hash of the dart index), until one leaves no broken cell;
-/// otherwise the order with the fewest is kept (ties: the earlier order). Each retry
-/// costs time in proportion to the darts the first pass touched, not to the whole map.
-/// Deterministic; maps whose first pass leaves no broken cell are not affected.
+/// original links and the whole annihilation runs again in other ways: first phase by
+/// phase (only partners linked by alpha_0, then by alpha_0..1, alpha_0..2 and all four; each
+/// phase over every anti dart in ascending order), then in descending order, then in orders
+/// given by a fixed hash of the dart index, until one leaves no broken cell; otherwise the
+/// one with the fewest is kept (ties: the earlier). Each retry costs time in proportion to the
+/// darts the first pass touched, not to the whole map. Deterministic; maps whose first pass
+/// leaves no broken cell are not affected.
 struct AnnihilationRetry {
     bool enabled = false;     ///< check and retry at all
     int orders = 16;          ///< other orders tried at most
