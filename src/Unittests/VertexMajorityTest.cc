@@ -62,6 +62,15 @@ void addInheritedPlacedPoints(DartPlacement& p, const Vec3d& at, int count) {
     }
 }
 
+/// The one ambiguous vertex has two candidates: @p first, its only preferred one, then @p second.
+void expectOnlyPreferredOfTwo(const VertexCandidates& cand, const Vec3d& first, const Vec3d& second) {
+    ASSERT_EQ(cand.vertex.size(), 1u);
+    EXPECT_EQ(cand.preferred[0], 1);
+    ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
+    EXPECT_EQ(cand.position[0], first);
+    EXPECT_EQ(cand.position[1], second);
+}
+
 } // namespace
 
 // 20 darts at one preimage, 4 at a fold copy: the majority is the only preferred candidate,
@@ -141,10 +150,7 @@ TEST(VertexMajority, PlacedPointsComeBeforeTheDartsForInteriorVertices) {
     VertexCandidates cand;
     const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
     EXPECT_EQ(pos[0], proper);
-    ASSERT_EQ(cand.vertex.size(), 1u);
-    EXPECT_EQ(cand.preferred[0], 1);
-    EXPECT_EQ(cand.position[0], proper);
-    EXPECT_EQ(cand.position[1], copy);
+    expectOnlyPreferredOfTwo(cand, proper, copy);
 }
 
 // A boundary vertex whose only boundary h-vertex is a fold copy inside a boundary face
@@ -175,11 +181,7 @@ TEST(VertexMajority, TetMeshBoundaryVertexBeatsAFoldCopyOnABoundaryFace) {
             continue;
         }
         EXPECT_EQ(pos[0], corner);
-        ASSERT_EQ(cand.vertex.size(), 1u);
-        EXPECT_EQ(cand.preferred[0], 1);
-        ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
-        EXPECT_EQ(cand.position[0], corner);
-        EXPECT_EQ(cand.position[1], onFace);
+        expectOnlyPreferredOfTwo(cand, corner, onFace);
     }
 }
 
@@ -200,11 +202,7 @@ TEST(VertexMajority, TetMeshVertexBeatsTheMajoritiesOfAnInteriorVertex) {
         const std::vector<Vec3d> pos = mergedVertexPositions(mesh, std::vector<int>(24, 0), 1, p, 1, &cand);
         ASSERT_EQ(pos.size(), 1u);
         EXPECT_EQ(pos[0], vertex);
-        ASSERT_EQ(cand.vertex.size(), 1u);
-        EXPECT_EQ(cand.preferred[0], 1);
-        ASSERT_EQ(cand.offset[1] - cand.offset[0], 2);
-        EXPECT_EQ(cand.position[0], vertex);
-        EXPECT_EQ(cand.position[1], copy);
+        expectOnlyPreferredOfTwo(cand, vertex, copy);
     }
     {
         DartPlacement p = interiorDarts({copy, vertex, corner}, {18, 3, 3});
