@@ -74,8 +74,8 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             (their darts would all annihilate); False extracts and annihilates them like
             all others (``hexex extract --full-annihilation``).
         annihilation_retries: where the annihilation leaves broken hex cells (heavy folds
-            over several layers), run it again in other fixed orders and keep the one with
-            the fewest (report keys ``darts.annihilation_order``,
+            over several layers), run it again phase by phase or in other fixed orders and
+            keep the run with the fewest (report keys ``darts.annihilation_order``,
             ``darts.broken_cells_after_annihilation``); False keeps the first order
             (``hexex extract --no-annihilation-retries``).
         untangle: afterwards move vertices so that no hex is inverted (see

@@ -35,10 +35,10 @@ struct ExtractionOptions {
     /// one chart (their darts would all annihilate) get no darts, and the tracing walks
     /// through them. Not used with #arcs. Off: every dart is extracted and annihilated.
     bool cheap_folds = true;
-    /// Where the annihilation (with #merge) left broken hex cells, put the fold clusters next
-    /// to them back and annihilate them again in other orders, keeping the order with the
-    /// fewest broken cells (AnnihilationRetry; Documentation/algorithm.md). Maps without a
-    /// broken cell are not affected. Off: the first pass's result is kept.
+    /// Where the annihilation (with #merge) left broken hex cells, put the darts it touched
+    /// back and annihilate again, phase by phase and then in other orders, keeping the run
+    /// with the fewest broken cells (AnnihilationRetry; Documentation/algorithm.md). Maps
+    /// without a broken cell are not affected. Off: the first pass's result is kept.
     bool annihilation_retries = true;
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).
