@@ -34,17 +34,18 @@ class Annihilator {
 public:
     Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
                 bool retries)
-        : keepAntis_(retries), saveOriginals_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
+        : retries_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
           flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {}
 
-    /// The first pass: every anti dart in ascending order, then the re-queued ones.
+    /// The first pass: every anti dart in ascending order, then the re-queued ones. With
+    /// retries, the first call also lists the anti darts (the retries' orders permute them).
     void runAll() {
+        const bool list = retries_ && antis_.empty();
         for (long d = 0; d < n_; ++d)
             if (alive_[idx(d)] && sign_[idx(d)] < 0) {
                 F(d) |= kQueued;
-                if (keepAntis_) antis_.push_back(static_cast<int>(d));
+                if (list) antis_.push_back(static_cast<int>(d));
             }
-        keepAntis_ = false;
         run(nullptr);
     }
 
@@ -53,8 +54,6 @@ public:
     void runPhased() {
         for (int phase = 0; phase < 4; ++phase) {
             maxLink_ = phase;
-            for (int d : antis_)
-                if (alive_[idx(d)]) F(d) |= kQueued;
             run(&antis_);
         }
         maxLink_ = 3;
@@ -69,8 +68,7 @@ public:
     long pairs = 0;  ///< pairs removed so far
 
 private:
-    bool keepAntis_;
-    const bool saveOriginals_;  // only the retries need the original links (not the 2D extractor)
+    const bool retries_;  // only the retries need the original links and the anti darts (not the 2D extractor)
 
     static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
     std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
@@ -79,7 +77,7 @@ private:
 
     /// Called before @p d's links change or it is removed: saves its original links.
     void touch(long d) {
-        if (saveOriginals_ && !(F(d) & kSaved)) {
+        if (retries_ && !(F(d) & kSaved)) {
             F(d) |= kSaved;
             saved_.emplace_back(static_cast<int>(d), A(d));
         }
@@ -91,8 +89,8 @@ private:
         return static_cast<int>(d);
     }
 
-    /// Processes the work list: @p order (nullptr: a scan of all darts) and then the darts
-    /// queued on the way.
+    /// Processes the work list: the alive anti darts of @p order, in that order (nullptr: a
+    /// scan of all darts for the ones already queued), and then the darts queued on the way.
     void run(const std::vector<int>* order);
 
     /// Removes @p anti with a regular partner, if it has one.
@@ -112,12 +110,12 @@ private:
         pairs = 0;
     }
 
-    /// Alive darts whose links were changed (the cells a run can have broken are theirs).
+    /// Alive darts whose links were changed (the cells a run can have broken are theirs), in
+    /// order of their first change (the count of broken cells does not depend on it).
     std::vector<int> changedDarts() const {
         std::vector<int> c;
         for (const auto& e : saved_)
             if (alive_[idx(e.first)]) c.push_back(e.first);
-        std::sort(c.begin(), c.end());
         return c;
     }
 
@@ -206,11 +204,14 @@ void Annihilator::run(const std::vector<int>* order) {
     std::deque<long> requeued;
     long scan = 0;
     const long end = order ? static_cast<long>(order->size()) : n_;
+    if (order)
+        for (int d : *order)
+            if (alive_[idx(d)] && isAnti(d)) F(d) |= kQueued;
     auto next = [&]() -> long {
         for (; scan < end; ++scan) {
             if (order) {
-                // A retry visits the darts in hashed order: fetch the links of the darts a
-                // few steps ahead, and then those of their partners, before they are needed.
+                // Retries in a hashed order visit the darts in random memory order: fetch the
+                // links of the darts a few steps ahead, and then those of their partners.
                 if (scan + 16 < end) {
                     const long f = (*order)[idx(scan + 16)];
                     prefetch(&A(f));
@@ -253,8 +254,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
         } else if (k == 1) {
             runPhased();
         } else {
-            std::vector<int> order = antiOrder(k);
-            for (int d : order) F(d) |= kQueued;
+            const std::vector<int> order = antiOrder(k);
             run(&order);
         }
     };

@@ -143,6 +143,17 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         return false;
     };
     auto atBoundaryVertex = [&](const Vec3d& x) { return atMeshVertex(x, true); };
+    // The one position of @p ps at a vertex of the tet mesh (a boundary one if @p boundary)
+    // into @p at; false if none or several are.
+    auto onlyAtMeshVertex = [&](const std::vector<Vec3d>& ps, bool boundary, Vec3d& at) {
+        int n = 0;
+        for (const Vec3d& p : ps)
+            if (atMeshVertex(p, boundary)) {
+                at = p;
+                ++n;
+            }
+        return n == 1;
+    };
 
     std::vector<Vec3d> out(nc);
     // Classes are independent: parallel chunks, each with its own scratch buffers and its
@@ -239,20 +250,9 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                 // against the majorities (issue 22: pig at a = 0.8, seed 18: 18 of 24 darts and
                 // 8 of 12 placed points at a fold copy, whose hex the source position of the
                 // neighbour then inverted).
-                bool atVertexRule = false;
-                if (dist.size() > 1 && !meshVertices.empty()) {
-                    int n = 0;
-                    Vec3d at(0, 0, 0);
-                    for (const Vec3d& p : dist)
-                        if (atMeshVertex(p, false)) {
-                            at = p;
-                            ++n;
-                        }
-                    if (n == 1) {
-                        moveToFront(dist, at, tol);
-                        atVertexRule = true;
-                    }
-                }
+                Vec3d at(0, 0, 0);
+                const bool atVertexRule = dist.size() > 1 && !meshVertices.empty() && onlyAtMeshVertex(dist, false, at);
+                if (atVertexRule) moveToFront(dist, at, tol);
                 out[l] = dist[0];
                 const auto extra = flippedExtras(dist);
                 if (dist.size() > 1 || !extra.empty()) {
@@ -337,13 +337,7 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             // surviving and removed regular darts' positions is such a vertex, it is the only
             // preferred candidate.
             Vec3d atVertex(0, 0, 0);
-            int nAtVertex = 0;
-            for (const Vec3d& p : allDist)
-                if (atBoundaryVertex(p)) {
-                    atVertex = p;
-                    ++nAtVertex;
-                }
-            const bool hasVertex = nAtVertex == 1;
+            const bool hasVertex = onlyAtMeshVertex(allDist, true, atVertex);
             if (dist.size() == 1 && extra.empty() && !(hasMajor && (major - dist[0]).norm() > tol && takeMajor(dist[0])) &&
                 !(hasVertex && (atVertex - dist[0]).norm() > tol)) {
                 out[l] = dist[0];
