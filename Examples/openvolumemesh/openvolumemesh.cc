@@ -1,70 +1,81 @@
 /// @file openvolumemesh.cc
-/// OpenVolumeMesh in, OpenVolumeMesh out. Without arguments: builds the unit cube from six
-/// tets in a GeometricTetrahedralMeshV3d with the map "parameter = 2 * position" in the
-/// halfface property HexHex::Parametrization (on each halfface the parameter of the
-/// opposite vertex), extracts into a GeometricHexahedralMeshV3d with OpenVolumeMesh's
-/// topology checks on, and checks the 2x2x2 hexes. With IN (.ovm or .ovmb, read by
-/// OpenVolumeMesh) it extracts that mesh instead; with OUT it writes the hex mesh there
-/// with OpenVolumeMesh's .ovmb writer. Exits 0 only if the output is valid all-hex.
+/// OpenVolumeMesh in, OpenVolumeMesh out, in the call of the reference HexEx implementation:
+/// `HexEx::extractHexMesh(tetMesh, parameters, hexMesh)` with the map as a cell property
+/// holding, per cell, the parameter of each of its vertices.
+///
+/// Without arguments: the unit cube split into five tets (four corner tets and the central
+/// one), parameter = 2 * position, gives 2 x 2 x 2 hexes on 27 vertices; the program exits 0
+/// only if it does. With IN (.ovm or .ovmb, read by OpenVolumeMesh, the map in the halfface
+/// property "HexHex::Parametrization" as HexHex writes it) it extracts that mesh through the
+/// HexHex-style overload instead; with OUT it writes the hex mesh there (.ovmb).
 
 #include <HexEx/Adapters/OpenVolumeMesh.hh>
 
 #include <OpenVolumeMesh/IO/IO.hh>
 #include <OpenVolumeMesh/IO/ovmb_write.hh>
 #include <OpenVolumeMesh/Mesh/HexahedralMesh.hh>
-#include <OpenVolumeMesh/Mesh/TetrahedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/TetrahedralGeometryKernel.hh>
 
 #include <iostream>
+#include <map>
 #include <vector>
+
+// The type aliases a user of the reference implementation has in its place.
+using Vec3d = OpenVolumeMesh::Geometry::Vec3d;
+using TetrahedralMesh = OpenVolumeMesh::TetrahedralGeometryKernel<Vec3d, OpenVolumeMesh::TetrahedralMeshTopologyKernel>;
+using HexahedralMesh = OpenVolumeMesh::GeometryKernel<Vec3d, OpenVolumeMesh::HexahedralMeshTopologyKernel>;
 
 namespace {
 
-using OpenVolumeMesh::VertexHandle;
-using Vec3 = OpenVolumeMesh::Geometry::Vec3d;
+/// Adds the tet a b c d to @p mesh, turned to positive volume.
+void addTet(TetrahedralMesh& mesh, std::vector<OpenVolumeMesh::VertexHandle> t) {
+    const Vec3d e1 = mesh.vertex(t[1]) - mesh.vertex(t[0]), e2 = mesh.vertex(t[2]) - mesh.vertex(t[0]),
+                e3 = mesh.vertex(t[3]) - mesh.vertex(t[0]);
+    if (((e1 % e2) | e3) < 0) std::swap(t[1], t[2]);  // (e1 x e2) . e3
+    mesh.add_cell(t, /*topologyCheck=*/true);
+}
 
-/// Fills @p mesh with the unit cube as six tets; each tet a b c d (positive volume) gets the halffaces a b c,
-/// a c d, a d b, b d c (normals into the cell), each holding its opposite corner's parameter.
-void makeCube(OpenVolumeMesh::GeometricTetrahedralMeshV3d& mesh) {
-    for (int i = 0; i < 8; ++i) mesh.add_vertex(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-    auto param = mesh.request_halfface_property<Vec3>(HexEx::kOvmParametrization);
-    mesh.set_persistent(param, true);
-    const int cube[6][4] = {{0, 1, 3, 7}, {0, 5, 1, 7}, {0, 3, 2, 7}, {0, 2, 6, 7}, {0, 4, 5, 7}, {0, 6, 4, 7}};
-    const int faces[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};  // loop + opposite corner
-    for (const auto& t : cube) {
-        std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
-        for (const auto& f : faces) {
-            const std::vector<VertexHandle> loop = {VertexHandle(t[f[0]]), VertexHandle(t[f[1]]), VertexHandle(t[f[2]])};
-            OpenVolumeMesh::HalfFaceHandle hf = mesh.find_halfface(loop);
-            if (!hf.is_valid()) hf = mesh.halfface_handle(mesh.add_face(loop), 0);
-            param[hf] = 2.0 * mesh.vertex(VertexHandle(t[f[3]]));  // seamless map: 2 * position
-            hfs.push_back(hf);
-        }
-        mesh.add_cell(hfs, /*topologyCheck=*/true);
-    }
+/// The unit cube as five tets.
+void makeCube(TetrahedralMesh& mesh) {
+    std::vector<OpenVolumeMesh::VertexHandle> v;
+    for (int i = 0; i < 8; ++i) v.push_back(mesh.add_vertex(Vec3d(i & 1, (i >> 1) & 1, (i >> 2) & 1)));
+    addTet(mesh, {v[1], v[2], v[4], v[7]});  // the central tet
+    addTet(mesh, {v[0], v[1], v[2], v[4]});  // one tet per cube corner of even parity
+    addTet(mesh, {v[3], v[2], v[1], v[7]});
+    addTet(mesh, {v[5], v[1], v[4], v[7]});
+    addTet(mesh, {v[6], v[4], v[2], v[7]});
 }
 
 } // namespace
 
 int main(int argc, char** argv) {
-    OpenVolumeMesh::GeometricTetrahedralMeshV3d tets;
+    TetrahedralMesh tetMesh;
+    HexahedralMesh hexMesh;
+    HexEx::ExtractionReport report;
     if (argc > 1) {
-        if (!OpenVolumeMesh::IO::read_file(argv[1], tets)) {
+        if (!OpenVolumeMesh::IO::read_file(argv[1], tetMesh)) {
             std::cerr << "cannot read " << argv[1] << "\n";
             return 1;
         }
+        auto igm = tetMesh.get_halfface_property<Vec3d>(HexEx::kOvmParametrization);
+        if (!igm) {
+            std::cerr << argv[1] << " has no halfface property " << HexEx::kOvmParametrization << "\n";
+            return 1;
+        }
+        report = HexEx::extractHexMesh(tetMesh, *igm, hexMesh);
     } else {
-        makeCube(tets);
+        makeCube(tetMesh);
+        auto parameters = tetMesh.request_cell_property<std::map<OpenVolumeMesh::VertexHandle, Vec3d>>("Parameters");
+        for (const auto c : tetMesh.cells())
+            for (const auto v : tetMesh.cell_vertices(c)) parameters[c][v] = 2.0 * tetMesh.vertex(v);
+        report = HexEx::extractHexMesh(tetMesh, parameters, hexMesh);
     }
-    OpenVolumeMesh::GeometricHexahedralMeshV3d hexes;
-    HexEx::OvmHexOutput<OpenVolumeMesh::GeometricHexahedralMeshV3d> output(hexes, /*topologyCheck=*/true);
-    const HexEx::ExtractionReport report = HexEx::extractHexMesh(HexEx::OvmTetMesh(tets), output);
-    HexEx::markOvmNonHexCells(output, static_cast<std::size_t>(report.output.hexes));
-    std::cout << "hex mesh: " << hexes.n_cells() << " cells, " << hexes.n_vertices() << " vertices, valid all-hex "
+    std::cout << "hex mesh: " << hexMesh.n_cells() << " cells, " << hexMesh.n_vertices() << " vertices, valid all-hex "
               << report.valid_all_hex << "\n";
-    if (argc > 2 && OpenVolumeMesh::IO::ovmb_write(argv[2], hexes) != OpenVolumeMesh::IO::WriteResult::Ok) {
+    if (argc > 2 && OpenVolumeMesh::IO::ovmb_write(argv[2], hexMesh) != OpenVolumeMesh::IO::WriteResult::Ok) {
         std::cerr << "cannot write " << argv[2] << "\n";
         return 1;
     }
-    if (argc <= 1) return report.valid_all_hex && hexes.n_cells() == 8 && hexes.n_vertices() == 27 ? 0 : 1;
+    if (argc <= 1) return report.valid_all_hex && hexMesh.n_cells() == 8 && hexMesh.n_vertices() == 27 ? 0 : 1;
     return report.valid_all_hex ? 0 : 1;
 }

@@ -20,14 +20,18 @@
 #include "../Core/Error.hh"
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
+#include "OvmBulkTables.hh"
 
 #include <OpenVolumeMesh/Core/Handles.hh>
+#include <OpenVolumeMesh/Core/Properties/PropertyPtr.hh>
+#include <OpenVolumeMesh/Core/TopologyKernel.hh>
 #include <OpenVolumeMesh/Geometry/VectorT.hh>
 #include <OpenVolumeMesh/Mesh/HexahedralMeshTopologyKernel.hh>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <map>
 #include <string>
 #include <type_traits>
@@ -47,6 +51,55 @@ enum class OvmMapStorage {
     /// Cell property of type `std::map<VertexHandle, Vec3d>`: per cell, the parameter of each of its vertices.
     CellVertexMap,
 };
+
+namespace detail {
+
+/// True if @p TetMeshT and @p HexMeshT are OpenVolumeMesh meshes (kernels derived from
+/// TopologyKernel): the condition of the one-call overloads of extractHexMesh() below.
+template <class TetMeshT, class HexMeshT>
+inline constexpr bool isOvmMeshPair = std::is_base_of_v<OpenVolumeMesh::TopologyKernel, TetMeshT> &&
+                                      std::is_base_of_v<OpenVolumeMesh::TopologyKernel, HexMeshT>;
+
+/// Reads the corners of tetrahedral cell @p c of @p mesh in OvmTetMesh's order (before the
+/// global orientation fix) into @p cv and, per corner, the cell's halfface opposite it into
+/// @p opposite. Throws InputError if the cell is not a tetrahedron.
+template <class Mesh>
+void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
+                   std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite);
+
+} // namespace detail
+
+/// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
+/// hexahedral or polyhedral mesh @p hexMesh, the map given as in the reference HexEx
+/// implementation: per cell, a map from each of its vertices to its parameter in the cell's
+/// chart.
+///
+/// The call of the reference implementation's users ports unchanged
+/// (`HexEx::extractHexMesh(tetMesh, parameters, hexMesh)`). The tet mesh is read straight into
+/// the built-in kernel (corner order and orientation as OvmTetMesh reads it), extracted, and
+/// the result written in bulk (see OvmHexOutput; @p hexMesh is cleared first; a hexahedral
+/// kernel skips non-hex cells, which the report still counts). Vertex and cell indices are
+/// the handles' indices: the mesh must not contain deleted entities.
+///
+/// Throws InputError if a cell is not a tetrahedron, lacks the parameter of one of its
+/// vertices, or the input is otherwise unusable (see the built-in extractHexMesh()).
+template <class TetMeshT, class VecT, class HexMeshT,
+          std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
+ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
+                                const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
+                                HexMeshT& hexMesh, const ExtractionOptions& options = {});
+
+/// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
+/// hexahedral or polyhedral mesh @p hexMesh, the map given as in HexHex: the value on a
+/// halfface of a cell is the parameter, in the cell's chart, of the cell's vertex opposite
+/// that halfface (e.g. the property kOvmParametrization of the files HexHex reads and writes).
+///
+/// Otherwise as the overload taking a cell property. Throws InputError if a cell is not a
+/// tetrahedron or the input is otherwise unusable.
+template <class TetMeshT, class VecT, class HexMeshT,
+          std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
+ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
+                                HexMeshT& hexMesh, const ExtractionOptions& options = {});
 
 /// Input view of an OpenVolumeMesh tet mesh (any kernel with `Vec3d` geometry whose cells
 /// are tetrahedra: TetrahedralMeshTopologyKernel or the polyhedral TopologyKernel) with its
@@ -128,38 +181,13 @@ private:
         corners_.resize(nc);
         params_.resize(nc);
         double volume = 0;
+        std::array<OpenVolumeMesh::VertexHandle, 4> cv;
+        std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
         for (std::size_t c = 0; c < nc; ++c) {
-            const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
-            const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs = mesh_->cell(ch).halffaces();
-            const std::string what = "OpenVolumeMesh cell " + std::to_string(c);
-            if (hfs.size() != 4)
-                throw InputError(what + " has " + std::to_string(hfs.size()) + " halffaces, not a tetrahedron");
-            std::array<std::vector<OpenVolumeMesh::VertexHandle>, 4> loops;
-            for (std::size_t k = 0; k < 4; ++k) {
-                loops[k] = mesh_->get_halfface_vertices(hfs[k]);
-                if (loops[k].size() != 3) throw InputError(what + " has a halfface that is not a triangle");
-            }
-            std::array<OpenVolumeMesh::VertexHandle, 4> cv = {loops[0][0], loops[0][1], loops[0][2],
-                                                              OpenVolumeMesh::VertexHandle()};
-            for (const auto& l : loops)
-                for (const auto& v : l)
-                    if (std::find(cv.begin(), cv.end(), v) == cv.end()) {
-                        if (cv[3].is_valid()) throw InputError(what + " spans more than four vertices");
-                        cv[3] = v;
-                    }
-            if (!cv[3].is_valid() || cv[0] == cv[1] || cv[1] == cv[2] || cv[0] == cv[2])
-                throw InputError(what + " spans fewer than four vertices");
-            auto inLoop = [&](std::size_t k, const OpenVolumeMesh::VertexHandle& v) {
-                return std::find(loops[k].begin(), loops[k].end(), v) != loops[k].end();
-            };
-            for (int r = 0; r < 3 && inLoop(3, cv[0]); ++r) std::rotate(cv.begin(), cv.begin() + 1, cv.begin() + 3);
+            detail::ovmTetCorners(*mesh_, c, cv, opposite);
             for (std::size_t i = 0; i < 4; ++i) {
                 corners_[c][i] = static_cast<std::size_t>(cv[i].idx());
-                std::size_t opposite = 4;
-                for (std::size_t k = 0; k < 4; ++k)
-                    if (!inLoop(k, cv[i])) opposite = k;
-                if (opposite == 4) throw InputError(what + ": no halfface opposite vertex " + std::to_string(cv[i].idx()));
-                const OvmVec u = paramOf(hfs[opposite], cv[i]);
+                const OvmVec u = paramOf(opposite[i], cv[i]);
                 params_[c][i] = Vec3d(u[0], u[1], u[2]);
             }
             const Vec3d a = position(corners_[c][0]);
@@ -182,13 +210,19 @@ private:
 
 /// Output into an OpenVolumeMesh mesh with `Vec3d` geometry.
 ///
-/// Into a mesh derived from HexahedralMeshTopologyKernel, hexahedra are added with the
-/// kernel's own `add_cell(vertices)` (its vertex order and face layout), and cells that are
-/// not hexahedra cannot be stored: they are skipped and counted in skippedPolyhedra(). Into
-/// any other kernel (e.g. GeometricPolyhedralMeshV3d) every cell is added from its faces
-/// (shared faces are found and reused), hexahedra with the same face layout as the
-/// hexahedral kernel. With @p topologyCheck, OpenVolumeMesh checks each cell as it is
-/// added (slower); a rejected cell throws InputError. The mesh must outlive this object.
+/// Into a mesh derived from HexahedralMeshTopologyKernel, hexahedra are stored with the
+/// kernel's face layout (halffaces bottom, top, then the side pairs; the layout of the hex
+/// files OpenVolumeMesh writes), and cells that are not hexahedra cannot be stored: they are
+/// skipped and counted in skippedPolyhedra(). Into any other kernel (e.g.
+/// GeometricPolyhedralMeshV3d) every cell is added from its faces, hexahedra with the same
+/// face layout. Shared faces and edges are created once.
+///
+/// By default the output is written in bulk: edges and faces are found in this object's
+/// own hash tables and added without OpenVolumeMesh's checks or searches. With
+/// @p topologyCheck, each cell is instead added through OpenVolumeMesh's own calls
+/// (`add_cell(vertices)` of the hexahedral kernel, `find_halfface()`/`add_face()` otherwise)
+/// with its topology check on (slower); a rejected cell throws InputError. Both give the
+/// same cells with the same oriented halfface loops. The mesh must outlive this object.
 template <class Mesh>
 class OvmHexOutput {
 public:
@@ -211,6 +245,22 @@ public:
         mesh_->clear();
         cells_.clear();
         skipped_ = 0;
+        edges_.clear();
+        faces_.clear();
+        bigFaces_.clear();
+    }
+    /// Makes room for @p nVertices vertices and @p nHexes hexahedra (and their edges and
+    /// faces) in the mesh and in the lookup tables.
+    void reserve(std::size_t nVertices, std::size_t nHexes) {
+        mesh_->reserve_vertices(nVertices);
+        mesh_->reserve_edges(nVertices + 2 * nHexes);
+        mesh_->reserve_faces(3 * nHexes + nHexes / 2);
+        mesh_->reserve_cells(nHexes);
+        cells_.reserve(nHexes);
+        if (!check_) {
+            edges_.reserve(nVertices + 2 * nHexes);
+            faces_.reserve(3 * nHexes + nHexes / 2);
+        }
     }
     /// Adds a vertex and returns its index.
     std::size_t addVertex(const Vec3d& p) {
@@ -218,18 +268,26 @@ public:
     }
     /// Adds a hexahedron (vertex indices in VTK order).
     void addHex(const std::array<std::size_t, 8>& v) {
-        if constexpr (kHexKernel) {
-            // Passed to the hexahedral kernel's add_cell() in this order, a VTK hex gets the
-            // outward halffaces 0 3 2 1, 4 5 6 7, 3 0 4 7, 1 2 6 5, 2 3 7 6, 0 1 5 4 (up to
-            // their start vertex): the layout of the hex files OpenVolumeMesh writes
-            // (checked against sphere_hex.ovmb in the tests), also used for the polyhedral kernel.
+        // The outward halffaces of a VTK hex: bottom, top, then the three pairs of opposite
+        // sides. The hexahedral kernel's add_cell(vertices) builds this layout (up to each
+        // loop's start vertex) from the vertex order kOrder; checked against sphere_hex.ovmb
+        // in the tests.
+        static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {3, 0, 4, 7},
+                                             {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 1, 5, 4}};
+        if (!check_) {
+            hfs_.clear();
+            for (const auto& f : kFaces) {
+                const std::size_t loop[4] = {v[std::size_t(f[0])], v[std::size_t(f[1])], v[std::size_t(f[2])],
+                                             v[std::size_t(f[3])]};
+                hfs_.push_back(bulkHalfface(loop, 4));
+            }
+            finishCell(mesh_->add_cell(hfs_, false));
+        } else if constexpr (kHexKernel) {
             static constexpr int kOrder[8] = {2, 3, 0, 1, 6, 5, 4, 7};
             std::vector<OpenVolumeMesh::VertexHandle> vs(8);
             for (std::size_t i = 0; i < 8; ++i) vs[i] = vh(v[static_cast<std::size_t>(kOrder[i])]);
             finishCell(mesh_->add_cell(vs, check_));
         } else {
-            static constexpr int kFaces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {3, 0, 4, 7},
-                                                 {1, 2, 6, 5}, {2, 3, 7, 6}, {0, 1, 5, 4}};
             std::vector<std::vector<std::size_t>> faces(6, std::vector<std::size_t>(4));
             for (std::size_t f = 0; f < 6; ++f)
                 for (std::size_t i = 0; i < 4; ++i) faces[f][i] = v[static_cast<std::size_t>(kFaces[f][i])];
@@ -241,6 +299,10 @@ public:
         if constexpr (kHexKernel) {
             ++skipped_;
             cells_.push_back(OpenVolumeMesh::CellHandle());
+        } else if (!check_) {
+            hfs_.clear();
+            for (const auto& f : faces) hfs_.push_back(bulkHalfface(f.data(), f.size()));
+            finishCell(mesh_->add_cell(hfs_, false));
         } else {
             std::vector<OpenVolumeMesh::HalfFaceHandle> hfs;
             std::vector<OpenVolumeMesh::VertexHandle> vs;
@@ -262,14 +324,59 @@ private:
     void finishCell(const OpenVolumeMesh::CellHandle& ch) {
         if (!ch.is_valid())
             throw InputError("OpenVolumeMesh rejected output cell " + std::to_string(cells_.size()) +
-                             " (topology check failed)");
+                             (check_ ? " (topology check failed)" : ""));
         cells_.push_back(ch);
+    }
+    /// The halfedge from vertex @p a to @p b, its edge created on first use.
+    OpenVolumeMesh::HalfEdgeHandle bulkHalfedge(std::size_t a, std::size_t b) {
+        const std::size_t lo = std::min(a, b), hi = std::max(a, b);
+        const auto [e, inserted] = edges_.insert((std::uint64_t(lo) << 32) | hi, 0, mesh_->n_edges());
+        OpenVolumeMesh::EdgeHandle eh(static_cast<int>(e));
+        if (inserted) eh = mesh_->add_edge(vh(lo), vh(hi), /*allowDuplicates=*/true);
+        return OpenVolumeMesh::HalfEdgeHandle(2 * eh.idx() + (a == lo ? 0 : 1));
+    }
+    /// The halfface with the vertex loop @p loop (@p n vertices, outward for the cell being
+    /// added), its face created on first use. Faces are keyed by their sorted vertices; the
+    /// successor of the smallest vertex tells the two orientations apart.
+    OpenVolumeMesh::HalfFaceHandle bulkHalfface(const std::size_t* loop, std::size_t n) {
+        std::size_t first = 0;
+        for (std::size_t k = 1; k < n; ++k)
+            if (loop[k] < loop[first]) first = k;
+        const std::uint64_t succ = loop[(first + 1) % n];
+        const std::uint64_t value = (std::uint64_t(mesh_->n_faces()) << 32) | succ;
+        std::pair<std::uint64_t, bool> found;
+        if (n <= 4) {
+            std::uint64_t s[4] = {~std::uint64_t(0) >> 32, ~std::uint64_t(0) >> 32, ~std::uint64_t(0) >> 32,
+                                  ~std::uint64_t(0) >> 32};
+            for (std::size_t k = 0; k < n; ++k) s[k] = loop[k];
+            std::sort(s, s + 4);
+            found = faces_.insert((s[0] << 32) | s[1], (s[2] << 32) | s[3], value);
+        } else {
+            std::vector<std::size_t> key(loop, loop + n);
+            std::sort(key.begin(), key.end());
+            const auto [it, inserted] = bigFaces_.emplace(std::move(key), value);
+            found = {it->second, inserted};
+        }
+        if (!found.second) {
+            const OpenVolumeMesh::FaceHandle fh(static_cast<int>(found.first >> 32));
+            return mesh_->halfface_handle(fh, (found.first & 0xFFFFFFFFu) == succ ? 0 : 1);
+        }
+        hes_.clear();
+        for (std::size_t k = 0; k < n; ++k) hes_.push_back(bulkHalfedge(loop[k], loop[(k + 1) % n]));
+        const OpenVolumeMesh::FaceHandle fh = mesh_->add_face(hes_, false);
+        if (!fh.is_valid()) throw InputError("OpenVolumeMesh rejected a face of output cell " + std::to_string(cells_.size()));
+        return mesh_->halfface_handle(fh, 0);
     }
 
     Mesh* mesh_;
     bool check_;
     std::vector<OpenVolumeMesh::CellHandle> cells_;
     std::size_t skipped_ = 0;
+    detail::OvmKeyTable edges_;                                   // (lo, hi) -> edge index
+    detail::OvmKeyTable faces_;                                   // sorted vertices -> face index, successor
+    std::map<std::vector<std::size_t>, std::uint64_t> bigFaces_;  // faces of more than 4 vertices
+    std::vector<OpenVolumeMesh::HalfFaceHandle> hfs_;             // scratch: halffaces of a cell
+    std::vector<OpenVolumeMesh::HalfEdgeHandle> hes_;             // scratch: halfedges of a face
 };
 
 /// Writes @p values (one per output cell, in the order of OvmHexOutput::cells()) into the
@@ -322,6 +429,10 @@ template <class Mesh>
 struct HexMeshOutputTraits<OvmHexOutput<Mesh>> {
     /// Clears the mesh.
     static void clear(OvmHexOutput<Mesh>& m) { m.clear(); }
+    /// Makes room for @p nVertices vertices and @p nHexes hexahedra.
+    static void reserve(OvmHexOutput<Mesh>& m, std::size_t nVertices, std::size_t nHexes) {
+        m.reserve(nVertices, nHexes);
+    }
     /// Adds a vertex.
     static std::size_t add_vertex(OvmHexOutput<Mesh>& m, const Vec3d& p) { return m.addVertex(p); }
     /// Adds a hexahedron (VTK order).
@@ -333,3 +444,5 @@ struct HexMeshOutputTraits<OvmHexOutput<Mesh>> {
 };
 
 } // namespace HexEx
+
+#include "OpenVolumeMeshT_impl.hh"

@@ -59,6 +59,10 @@ struct TetMeshTraits;
 /// | `static void add_hex(Mesh&, const std::array<std::size_t, 8>& v)` | adds a hexahedron, vertex ids in VTK order |
 /// | `static void add_polyhedron(Mesh&, const std::vector<std::vector<std::size_t>>& faces)` | adds a non-hex cell, one outward-oriented vertex loop per face |
 ///
+/// Optionally, `static void reserve(Mesh&, std::size_t n_vertices, std::size_t n_hexes)`:
+/// called once after clear() with the numbers of vertices and hexahedra about to be added,
+/// so that the kernel can allocate in bulk.
+///
 /// The ids passed to add_hex() and add_polyhedron() are those returned by add_vertex().
 /// VTK order: bottom quad 0-1-2-3 counter-clockwise seen from the top quad 4-5-6-7,
 /// vertex 4 above vertex 0 (see HexMesh). The extractor never drops a cell: cells that are
@@ -103,6 +107,11 @@ struct HexMeshOutputTraits<HexMesh> {
         m.vertices.clear();
         m.hexes.clear();
         m.polyhedra.clear();
+    }
+    /// Reserves room for @p nVertices vertices and @p nHexes hexahedra.
+    static void reserve(HexMesh& m, std::size_t nVertices, std::size_t nHexes) {
+        m.vertices.reserve(nVertices);
+        m.hexes.reserve(nHexes);
     }
     /// Appends a vertex, returns its index.
     static std::size_t add_vertex(HexMesh& m, const Vec3d& p) {
@@ -173,6 +182,15 @@ struct CompleteHexMeshOutputTraits<
                        std::declval<M&>(), std::declval<const std::vector<std::vector<std::size_t>>&>()))>>
     : std::true_type {};
 
+/// True if HexMeshOutputTraits<M> has the optional reserve() (detection fallback).
+template <class M, class = void>
+struct HasOutputReserve : std::false_type {};
+/// True if HexMeshOutputTraits<M> has the optional reserve(M&, n_vertices, n_hexes).
+template <class M>
+struct HasOutputReserve<M, std::void_t<decltype(HexMeshOutputTraits<M>::reserve(std::declval<M&>(), std::size_t(),
+                                                                                 std::size_t()))>>
+    : std::true_type {};
+
 /// A vertex index as text; values that wrapped around from a negative signed index
 /// (above PTRDIFF_MAX) are printed as that negative number.
 inline std::string indexToString(std::size_t v) {
@@ -234,7 +252,8 @@ ParametrizedTetMesh toParametrizedTetMesh(const M& in) {
 }
 
 /// Writes @p hm into any mesh with HexMeshOutputTraits: clears @p out, adds all vertices,
-/// then all hexahedra, then all polyhedra (vertex ids mapped through add_vertex()).
+/// then all hexahedra, then all polyhedra (vertex ids mapped through add_vertex()). Calls the
+/// traits' optional reserve() after clear().
 template <class M>
 void fromHexMesh(const HexMesh& hm, M& out) {
     static_assert(hasHexMeshOutputTraits<M>, "HexEx::HexMeshOutputTraits<M> is not specialized for this mesh type");
@@ -243,6 +262,7 @@ void fromHexMesh(const HexMesh& hm, M& out) {
                   "add_polyhedron) or one has an unusable signature; see MeshTraits.hh");
     using T = HexMeshOutputTraits<M>;
     T::clear(out);
+    if constexpr (detail::HasOutputReserve<M>::value) T::reserve(out, hm.vertices.size(), hm.hexes.size());
     std::vector<std::size_t> id(hm.vertices.size());
     for (std::size_t v = 0; v < hm.vertices.size(); ++v) id[v] = T::add_vertex(out, hm.vertices[v]);
     for (const auto& h : hm.hexes) {

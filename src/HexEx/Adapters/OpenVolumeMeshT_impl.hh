@@ -1,0 +1,148 @@
+#pragma once
+/// @file OpenVolumeMeshT_impl.hh
+/// Template bodies of the OpenVolumeMesh adapter's one-call overloads of extractHexMesh()
+/// (declared in OpenVolumeMesh.hh, which includes this file): the tet mesh is read straight
+/// into the built-in kernel (no per-tet cache, one copy of the parameters), extracted, freed,
+/// and the result written into the user's mesh in bulk.
+
+#include "../Core/Error.hh"
+#include "../Core/Vec.hh"
+#include "../HexExTraits.hh"
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace HexEx {
+namespace detail {
+
+template <class Mesh>
+void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
+                   std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite) {
+    const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
+    const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs = mesh.cell(ch).halffaces();
+    const auto fail = [c](const std::string& why) {
+        throw InputError("OpenVolumeMesh cell " + std::to_string(c) + why);
+    };
+    if (hfs.size() != 4) fail(" has " + std::to_string(hfs.size()) + " halffaces, not a tetrahedron");
+    std::array<std::array<OpenVolumeMesh::VertexHandle, 3>, 4> loops;
+    for (std::size_t k = 0; k < 4; ++k) {
+        // The face's halfedges run along its halfface 0; halfface 1 is the reversed loop.
+        const std::vector<OpenVolumeMesh::HalfEdgeHandle>& hes = mesh.face(hfs[k].face_handle()).halfedges();
+        if (hes.size() != 3) fail(" has a halfface that is not a triangle");
+        for (std::size_t i = 0; i < 3; ++i) loops[k][i] = mesh.from_vertex_handle(hes[i]);
+        if (hfs[k].idx() & 1) std::swap(loops[k][1], loops[k][2]);
+    }
+    cv = {loops[0][0], loops[0][1], loops[0][2], OpenVolumeMesh::VertexHandle()};
+    for (const auto& l : loops)
+        for (const auto& v : l)
+            if (std::find(cv.begin(), cv.end(), v) == cv.end()) {
+                if (cv[3].is_valid()) fail(" spans more than four vertices");
+                cv[3] = v;
+            }
+    if (!cv[3].is_valid() || cv[0] == cv[1] || cv[1] == cv[2] || cv[0] == cv[2]) fail(" spans fewer than four vertices");
+    const auto inLoop = [&](std::size_t k, const OpenVolumeMesh::VertexHandle& v) {
+        return std::find(loops[k].begin(), loops[k].end(), v) != loops[k].end();
+    };
+    for (int r = 0; r < 3 && inLoop(3, cv[0]); ++r) std::rotate(cv.begin(), cv.begin() + 1, cv.begin() + 3);
+    for (std::size_t i = 0; i < 4; ++i) {
+        std::size_t k = 4;
+        for (std::size_t j = 0; j < 4; ++j)
+            if (!inLoop(j, cv[i])) k = j;
+        if (k == 4) fail(": no halfface opposite vertex " + std::to_string(cv[i].idx()));
+        opposite[i] = hfs[k];
+    }
+}
+
+template <class Mesh, class ParamOf>
+ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf, int threads) {
+    if (mesh.needs_garbage_collection())
+        throw InputError("OpenVolumeMesh mesh has deleted entities: call collect_garbage() first");
+    const std::size_t nv = mesh.n_vertices(), nc = mesh.n_cells();
+    constexpr std::size_t kMax = static_cast<std::size_t>(INT_MAX) / 4;
+    if (nv > kMax || nc > kMax)
+        throw InputError("mesh too large: " + std::to_string(nv) + " vertices, " + std::to_string(nc) +
+                         " tets (at most " + std::to_string(kMax) + " each)");
+    ParametrizedTetMesh pm;
+    pm.mesh.reserve(nv, nc);
+    pm.params.resize(nc);
+    for (std::size_t v = 0; v < nv; ++v) {
+        const auto& p = mesh.vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
+        pm.mesh.add_vertex(Vec3d(p[0], p[1], p[2]));
+    }
+    std::array<OpenVolumeMesh::VertexHandle, 4> cv;
+    std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
+    std::array<VertexHandle, 4> h;
+    double volume = 0;
+    for (std::size_t c = 0; c < nc; ++c) {
+        ovmTetCorners(mesh, c, cv, opposite);
+        const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
+        for (std::size_t i = 0; i < 4; ++i) {
+            h[i] = VertexHandle(cv[i].idx());
+            const auto& u = paramOf(opposite[i], ch, cv[i]);
+            pm.params[c][i] = Vec3d(u[0], u[1], u[2]);
+        }
+        const Vec3d a = pm.mesh.position(h[0]);
+        const Vec3d e1 = pm.mesh.position(h[1]) - a, e2 = pm.mesh.position(h[2]) - a, e3 = pm.mesh.position(h[3]) - a;
+        volume += e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+                  e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
+        pm.mesh.add_cell(h);
+    }
+    if (volume < 0)  // stored with outward halffaces: turn every tet the other way
+        for (std::size_t c = 0; c < nc; ++c) {
+            pm.mesh.swap_corners(CellHandle(static_cast<int>(c)), 1, 2);
+            std::swap(pm.params[c][1], pm.params[c][2]);
+        }
+    pm.mesh.build_adjacency(threads);
+    return pm;
+}
+
+template <class TetMeshT, class HexMeshT, class ParamOf>
+ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT& hexMesh,
+                            const ExtractionOptions& options) {
+    HexMesh hm;
+    ExtractionReport report;
+    {
+        const ParametrizedTetMesh pm = ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads);
+        report = extractHexMesh(pm, hm, options);
+    }  // the copy of the input is freed before the output is written
+    OvmHexOutput<HexMeshT> out(hexMesh);
+    fromHexMesh(hm, out);
+    return report;
+}
+
+} // namespace detail
+
+template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
+ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
+                                const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
+                                HexMeshT& hexMesh, const ExtractionOptions& options) {
+    return detail::extractOvm(
+        tetMesh,
+        [&](const OpenVolumeMesh::HalfFaceHandle&, const OpenVolumeMesh::CellHandle& ch,
+            const OpenVolumeMesh::VertexHandle& v) -> const VecT& {
+            const auto& m = parameters[ch];
+            const auto it = m.find(v);
+            if (it == m.end())
+                throw InputError("OpenVolumeMesh cell " + std::to_string(ch.idx()) + ": property '" +
+                                 parameters.name() + "' has no parameter for vertex " + std::to_string(v.idx()));
+            return it->second;
+        },
+        hexMesh, options);
+}
+
+template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
+ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
+                                HexMeshT& hexMesh, const ExtractionOptions& options) {
+    return detail::extractOvm(
+        tetMesh,
+        [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
+            const OpenVolumeMesh::VertexHandle&) -> const VecT& { return parameters[hf]; },
+        hexMesh, options);
+}
+
+} // namespace HexEx

@@ -1,0 +1,215 @@
+// The OpenVolumeMesh one-call overloads of extractHexMesh() (HexEx/Adapters/OpenVolumeMesh.hh):
+// the map passed as a cell property std::map<VertexHandle, Vec3d> (the reference HexEx
+// implementation's convention) or as a halfface property (HexHex's), the result written
+// into an OpenVolumeMesh mesh in bulk. Both give bit for bit the hexes of the built-in path.
+
+#include "../TestMeshChecks.hh"
+
+#include <HexEx/Adapters/OpenVolumeMesh.hh>
+#include <HexEx/Generators/Generators.hh>
+#include <HexEx/IO/HexExFile.hh>
+
+#include <OpenVolumeMesh/IO/IO.hh>
+#include <OpenVolumeMesh/IO/ovmb_read.hh>
+#include <OpenVolumeMesh/Mesh/HexahedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/PolyhedralMesh.hh>
+#include <OpenVolumeMesh/Mesh/TetrahedralMesh.hh>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+namespace {
+
+using TetMesh = OpenVolumeMesh::GeometricTetrahedralMeshV3d;
+using PolyMesh = OpenVolumeMesh::GeometricPolyhedralMeshV3d;
+using HexMeshOvm = OpenVolumeMesh::GeometricHexahedralMeshV3d;
+using OvmVec = OpenVolumeMesh::Geometry::Vec3d;
+using CellMap = std::map<OpenVolumeMesh::VertexHandle, OvmVec>;
+
+/// Output of a shell command ("" if it could not run).
+std::string capture(const std::string& cmd) {
+    std::unique_ptr<FILE, int (*)(FILE*)> p(popen(cmd.c_str(), "r"), pclose);
+    std::string out;
+    if (!p) return out;
+    char buf[65536];
+    std::size_t n = 0;
+    while ((n = std::fread(buf, 1, sizeof buf, p.get())) > 0) out.append(buf, n);
+    return out;
+}
+
+/// The map of @p m's halfface property @p hf as a cell property (per cell, vertex -> parameter).
+OpenVolumeMesh::CellPropertyT<CellMap> toCellMap(TetMesh& m, const OpenVolumeMesh::HalfFacePropertyT<OvmVec>& hf) {
+    auto prop = m.request_cell_property<CellMap>("Parameters");
+    for (std::size_t c = 0; c < m.n_cells(); ++c) {
+        const OpenVolumeMesh::CellHandle ch{int(c)};
+        const std::vector<OpenVolumeMesh::VertexHandle> cv = m.get_cell_vertices(ch);
+        for (const auto& h : m.cell(ch).halffaces()) {
+            const auto loop = m.get_halfface_vertices(h);
+            for (const auto& v : cv)
+                if (std::find(loop.begin(), loop.end(), v) == loop.end()) prop[ch][v] = hf[h];
+        }
+    }
+    return prop;
+}
+
+/// Checks that @p a and @p b hold the same vertices (bitwise) and the same cells with the
+/// same oriented halfface loops, in the same order.
+template <class MeshA, class MeshB>
+void expectSameOvmMesh(const MeshA& a, const MeshB& b) {
+    ASSERT_EQ(a.n_vertices(), b.n_vertices());
+    ASSERT_EQ(a.n_cells(), b.n_cells());
+    EXPECT_EQ(a.n_faces(), b.n_faces());
+    EXPECT_EQ(a.n_edges(), b.n_edges());
+    for (std::size_t v = 0; v < a.n_vertices(); ++v) {
+        const OvmVec &p = a.vertex(OpenVolumeMesh::VertexHandle(int(v))), &q = b.vertex(OpenVolumeMesh::VertexHandle(int(v)));
+        EXPECT_TRUE(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]) << "vertex " << v;
+    }
+    for (std::size_t c = 0; c < a.n_cells(); ++c) {
+        const auto& ha = a.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces();
+        const auto& hb = b.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces();
+        ASSERT_EQ(ha.size(), hb.size()) << "cell " << c;
+        for (std::size_t k = 0; k < ha.size(); ++k) {
+            auto la = a.get_halfface_vertices(ha[k]), lb = b.get_halfface_vertices(hb[k]);
+            // Equal up to the start vertex.
+            std::rotate(la.begin(), std::min_element(la.begin(), la.end()), la.end());
+            std::rotate(lb.begin(), std::min_element(lb.begin(), lb.end()), lb.end());
+            EXPECT_EQ(la, lb) << "cell " << c << " halfface " << k;
+        }
+    }
+}
+
+/// The hexes of @p m as vertex sets, in cell order.
+std::vector<std::set<int>> hexVertexSets(const HexMeshOvm& m) {
+    std::vector<std::set<int>> r;
+    for (std::size_t c = 0; c < m.n_cells(); ++c) {
+        std::set<int> s;
+        for (const auto& hf : m.cell(OpenVolumeMesh::CellHandle(int(c))).halffaces())
+            for (const auto& v : m.get_halfface_vertices(hf)) s.insert(v.idx());
+        r.push_back(s);
+    }
+    return r;
+}
+
+/// Extracts @p tets through both overloads (into the hexahedral kernel) and checks each
+/// result against @p ref (the built-in path: positions bitwise, hexes as vertex sets, in
+/// order) and against OpenVolumeMesh's own checked construction of the same cells.
+void expectBothConventionsGive(TetMesh& tets, const HexEx::HexMesh& ref) {
+    auto hf = tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    ASSERT_TRUE(hf.has_value());
+    const auto cellMap = toCellMap(tets, *hf);
+    HexMeshOvm viaHalffaces, viaCells, checked;
+    const HexEx::ExtractionReport r1 = HexEx::extractHexMesh(tets, *hf, viaHalffaces);
+    const HexEx::ExtractionReport r2 = HexEx::extractHexMesh(tets, cellMap, viaCells);
+    EXPECT_EQ(r1.output.hexes, std::int64_t(ref.hexes.size()));
+    EXPECT_EQ(r2.output.hexes, std::int64_t(ref.hexes.size()));
+    HexEx::OvmHexOutput<HexMeshOvm> out(checked, /*topologyCheck=*/true);
+    HexEx::fromHexMesh(ref, out);
+    for (const HexMeshOvm* m : {&viaHalffaces, &viaCells}) {
+        ASSERT_EQ(m->n_cells(), ref.hexes.size());
+        const auto sets = hexVertexSets(*m);
+        for (std::size_t c = 0; c < ref.hexes.size(); ++c)
+            ASSERT_EQ(sets[c], std::set<int>(ref.hexes[c].begin(), ref.hexes[c].end())) << "hex " << c;
+        expectSameOvmMesh(*m, checked);
+    }
+}
+
+} // namespace
+
+TEST(OvmNativeCall, SphereBothConventionsGiveTheBuiltInHexes) {
+    TetMesh tets;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file("src/Unittests/data/ovm/sphere.ovmb", tets));
+    const HexEx::HexMesh ref = HexExTest::extracted(HexEx::readHexExFile("Examples/data/sphere.hexex"));
+    ASSERT_EQ(ref.hexes.size(), 216u);
+    expectBothConventionsGive(tets, ref);
+}
+
+TEST(OvmNativeCall, PolycubeS1BothConventionsGiveTheBuiltInHexes) {
+    const std::string ovmb = "../shared/data/ovm/S1_polycube_scale1.ovmb.xz",
+                      hexex = "../shared/data/S1_polycube_scale1.hexex.xz";
+    if (!std::filesystem::exists(ovmb) || !std::filesystem::exists(hexex))
+        GTEST_SKIP() << "fixture " << ovmb << " or " << hexex << " absent";
+    const std::string bytes = capture("xz -dc '" + ovmb + "'");
+    if (bytes.empty()) GTEST_SKIP() << "xz not available";
+    std::istringstream in(bytes);
+    TetMesh tets;
+    ASSERT_EQ(OpenVolumeMesh::IO::ovmb_read(in, tets), OpenVolumeMesh::IO::ReadResult::Ok);
+    const HexEx::HexMesh ref =
+        HexExTest::extracted(HexEx::readHexExBuffer(capture("xz -dc '" + hexex + "'"), "S1.hexex"));
+    ASSERT_EQ(ref.hexes.size(), 10288u);
+    expectBothConventionsGive(tets, ref);
+}
+
+TEST(OvmNativeCall, PolyhedralKernelAndNonHexCellsMatchTheCheckedConstruction) {
+    // A cylinder with a perturbed map gives polyhedra on some seeds; any output must equal
+    // OpenVolumeMesh's own construction through find_halfface()/add_face() with its checks.
+    const HexEx::HexMesh withPolyhedron{
+        {HexEx::Vec3d(0, 0, 0), HexEx::Vec3d(1, 0, 0), HexEx::Vec3d(1, 1, 0), HexEx::Vec3d(0, 1, 0),
+         HexEx::Vec3d(0, 0, 1), HexEx::Vec3d(1, 0, 1), HexEx::Vec3d(1, 1, 1), HexEx::Vec3d(0, 1, 1),
+         HexEx::Vec3d(0.5, 0.5, 2), HexEx::Vec3d(2, 0.5, 0.5)},
+        {{0, 1, 2, 3, 4, 5, 6, 7}},
+        {HexEx::Polyhedron{{{4, 7, 6, 5}, {4, 5, 8}, {5, 6, 8}, {6, 7, 8}, {7, 4, 8}}},
+         HexEx::Polyhedron{{{1, 5, 6, 2}, {1, 2, 9}, {2, 6, 9}, {6, 5, 9}, {5, 1, 9}}}}};
+    PolyMesh bulk, checked;
+    HexEx::OvmHexOutput<PolyMesh> a(bulk), b(checked, true);
+    HexEx::fromHexMesh(withPolyhedron, a);
+    HexEx::fromHexMesh(withPolyhedron, b);
+    EXPECT_EQ(bulk.n_cells(), 3u);
+    EXPECT_EQ(bulk.n_faces(), 6u + 4u + 4u);
+    expectSameOvmMesh(bulk, checked);
+    // The sphere into the polyhedral kernel: every quad of the 6x6x6 grid once.
+    TetMesh tets;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file("src/Unittests/data/ovm/sphere.ovmb", tets));
+    PolyMesh poly;
+    HexEx::extractHexMesh(tets, *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization), poly);
+    EXPECT_EQ(poly.n_cells(), 216u);
+    EXPECT_EQ(poly.n_faces(), 3u * 6 * 6 * 7);
+    EXPECT_EQ(poly.n_edges(), 3u * 6 * 7 * 7);
+}
+
+TEST(OvmNativeCall, GeneratedCylinderAndErrors) {
+    const HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(5, 2, 2, 2, 1);
+    TetMesh tets;
+    for (std::size_t v = 0; v < pm.mesh.n_vertices(); ++v) {
+        const HexEx::Vec3d p = pm.mesh.position(HexEx::VertexHandle(int(v)));
+        tets.add_vertex(OvmVec(p[0], p[1], p[2]));
+    }
+    auto params = tets.request_cell_property<CellMap>("Parameters");
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const auto& cv = pm.mesh.cell_vertices(HexEx::CellHandle(int(t)));
+        // TetrahedralMeshTopologyKernel::add_cell(vertices): positively oriented a b c d.
+        const OpenVolumeMesh::CellHandle ch = tets.add_cell(
+            OpenVolumeMesh::VertexHandle(cv[0].idx()), OpenVolumeMesh::VertexHandle(cv[1].idx()),
+            OpenVolumeMesh::VertexHandle(cv[2].idx()), OpenVolumeMesh::VertexHandle(cv[3].idx()), true);
+        ASSERT_TRUE(ch.is_valid());
+        for (int i = 0; i < 4; ++i) {
+            const HexEx::Vec3d u = pm.params[t][std::size_t(i)];
+            params[ch][OpenVolumeMesh::VertexHandle(cv[std::size_t(i)].idx())] = OvmVec(u[0], u[1], u[2]);
+        }
+    }
+    HexMeshOvm hexes;
+    const HexEx::ExtractionReport r = HexEx::extractHexMesh(tets, params, hexes);
+    const HexEx::HexMesh ref = HexExTest::extracted(pm);
+    EXPECT_TRUE(r.valid_all_hex);
+    ASSERT_EQ(hexes.n_cells(), ref.hexes.size());
+    ASSERT_EQ(hexes.n_vertices(), ref.vertices.size());
+    const auto sets = hexVertexSets(hexes);
+    for (std::size_t c = 0; c < ref.hexes.size(); ++c)
+        EXPECT_EQ(sets[c], std::set<int>(ref.hexes[c].begin(), ref.hexes[c].end())) << "hex " << c;
+    // A missing parameter names the cell, the property and the vertex.
+    params[OpenVolumeMesh::CellHandle(3)].erase(OpenVolumeMesh::VertexHandle(pm.mesh.cell_vertex(HexEx::CellHandle(3), 2).idx()));
+    try {
+        HexEx::extractHexMesh(tets, params, hexes);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "OpenVolumeMesh cell 3: property 'Parameters' has no parameter for vertex " +
+                                             std::to_string(pm.mesh.cell_vertex(HexEx::CellHandle(3), 2).idx()));
+    }
+    EXPECT_EQ(hexes.n_cells(), ref.hexes.size());  // untouched by the failed call
+}
