@@ -3,6 +3,8 @@
 
 #include "HexMeshQuality.hh"
 
+#include "../Core/Parallel.hh"
+
 #include <algorithm>
 #include <cmath>
 
@@ -57,7 +59,26 @@ std::vector<double> scaledJacobians(const HexMesh& mesh) {
     return out;
 }
 
-QualityStats computeQuality(const HexMesh& mesh) {
+std::vector<HexValidity> hexValidities(const HexMesh& mesh, int threads) {
+    std::vector<HexValidity> out(mesh.hexes.size(), HexValidity::Invalid);
+    const long nv = static_cast<long>(mesh.vertices.size());
+    const int chunks = mesh.hexes.size() < 4096 ? 1 : resolveThreadCount(threads);
+    parallelChunks(mesh.hexes.size(), chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t h = b; h < e; ++h) {
+            std::array<Vec3d, 8> p;
+            bool ok = true;
+            for (int i = 0; i < 8 && ok; ++i) {
+                const int v = mesh.hexes[h][i];
+                ok = v >= 0 && v < nv;
+                if (ok) p[i] = mesh.vertices[v];
+            }
+            if (ok) out[h] = classifyHexValidity(p);
+        }
+    });
+    return out;
+}
+
+QualityStats computeQuality(const HexMesh& mesh, int threads) {
     QualityStats s;
     const std::vector<double> sj = scaledJacobians(mesh);
     if (sj.empty()) return s;
@@ -69,6 +90,15 @@ QualityStats computeQuality(const HexMesh& mesh) {
     }
     s.min_scaled_jacobian = mn;
     s.mean_scaled_jacobian = sum / static_cast<double>(sj.size());
+    const std::vector<HexValidity> validity = hexValidities(mesh, threads);
+    for (std::size_t h = 0; h < validity.size(); ++h) {
+        if (validity[h] == HexValidity::Invalid) {
+            if (s.invalid_hexes == 0) s.first_invalid_hex = static_cast<long>(h);
+            ++s.invalid_hexes;
+        } else if (validity[h] == HexValidity::Undecided) {
+            ++s.undecided_hexes;
+        }
+    }
     return s;
 }
 

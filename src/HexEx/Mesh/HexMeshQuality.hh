@@ -3,6 +3,7 @@
 /// Element quality of hex meshes: the scaled Jacobian per hexahedron and summary statistics.
 
 #include "HexMesh.hh"
+#include "HexValidity.hh"
 
 #include <array>
 #include <vector>
@@ -26,14 +27,29 @@ double hexScaledJacobian(const std::array<Vec3d, 8>& p);
 /// index out of range get 0 (they count as degenerate).
 std::vector<double> scaledJacobians(const HexMesh& mesh);
 
+/// Certified validity (classifyHexValidity()) of every hex of @p mesh, in hex order, on
+/// @p threads threads (0 = all; the result does not depend on it). Hexes that reference a
+/// vertex index out of range are Invalid.
+std::vector<HexValidity> hexValidities(const HexMesh& mesh, int threads = 0);
+
 /// Summary of the hex quality of a mesh (polyhedra are not measured).
+///
+/// Two validity figures: `inverted_hexes` counts hexes with a corner Jacobian <= 0 (the
+/// classical 8-corner test); `invalid_hexes` counts hexes whose Jacobian is proved <= 0
+/// somewhere in the element (every inverted hex, plus hexes positive at all 8 corners but
+/// negative inside), and `undecided_hexes` those the exact test could not decide. A mesh
+/// is certified valid when invalid_hexes + undecided_hexes == 0.
 struct QualityStats {
     double min_scaled_jacobian = 0;   ///< minimum over all hexes (0 if there are none)
     double mean_scaled_jacobian = 0;  ///< mean over all hexes (0 if there are none)
     long inverted_hexes = 0;          ///< hexes with a corner Jacobian <= 0 (inverted or degenerate)
+    long invalid_hexes = 0;           ///< hexes certified to have J <= 0 somewhere (HexValidity::Invalid)
+    long undecided_hexes = 0;         ///< hexes the certified test left undecided (HexValidity::Undecided)
+    long first_invalid_hex = -1;      ///< index of the first invalid hex (-1: none)
 };
 
-/// Computes QualityStats from scaledJacobians().
-QualityStats computeQuality(const HexMesh& mesh);
+/// Computes QualityStats from scaledJacobians() and hexValidities() on @p threads threads
+/// (0 = all); the result does not depend on the thread count.
+QualityStats computeQuality(const HexMesh& mesh, int threads = 0);
 
 } // namespace HexEx
