@@ -34,6 +34,8 @@ hexex_add_install_test(install_and_find_package_traits traits traits)
 # The adapters: Examples/cgal_lcc (CGAL is a dependency, always built) and
 # Examples/openvolumemesh (only when OpenVolumeMesh is found; its prefix is passed on).
 hexex_add_install_test(install_and_find_package_cgal_lcc cgal_lcc cgal_lcc)
+# The C API: Examples/c_api builds a C99 program against HexEx::C and the installed hexex.h.
+hexex_add_install_test(install_and_find_package_c_api c_api extract_c)
 include(${PROJECT_SOURCE_DIR}/cmake/HexExOpenVolumeMesh.cmake)
 if(OpenVolumeMesh_FOUND)
   # <prefix>/lib/cmake/OpenVolumeMesh -> <prefix>
