@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexExTraits.hh
+/// @ingroup kernel
 /// The one-call API for any mesh kernel: extractHexMesh() templated over the input and
 /// output mesh types, read and written through TetMeshTraits and HexMeshOutputTraits
 /// (see MeshTraits.hh and Documentation/traits.md). Including this header also brings the

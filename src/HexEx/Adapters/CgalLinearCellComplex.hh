@@ -1,5 +1,6 @@
 #pragma once
 /// @file CgalLinearCellComplex.hh
+/// @ingroup adapters
 /// Adapter for CGAL's Linear_cell_complex (3D combinatorial maps): extract the hex mesh of
 /// an LCC of tetrahedra whose integer-grid map is stored per dart (or per (cell, vertex)
 /// through a caller-supplied accessor) into an LCC of hexahedra, 3-sewn along shared faces.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file OpenVolumeMesh.hh
+/// @ingroup adapters
 /// Adapter for OpenVolumeMesh (3.x): extract the hex mesh of an OpenVolumeMesh tet mesh
 /// (tetrahedral or polyhedral kernel with Vec3d geometry) whose integer-grid map is the
 /// halfface property `HexHex::Parametrization` (the convention of HexHex and the AlgoHex

@@ -1,5 +1,6 @@
 #pragma once
 /// @file OvmBulkTables.hh
+/// @ingroup adapters
 /// Lookup tables of the bulk OpenVolumeMesh writer (OvmHexOutput): an open-addressing hash
 /// table from a 128-bit key (an edge's or a face's sorted vertex indices) to a 64-bit value,
 /// so that every edge and face of the output is created once without asking the mesh.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file CompensatedSum.hh
+/// @ingroup kernel
 /// Neumaier-compensated summation: sums of many terms (e.g. parametric volumes of a large
 /// map) stay exact to the last digits.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file DefaultInitAllocator.hh
+/// @ingroup kernel
 /// An allocator whose resize() default-initializes instead of value-initializing, so that
 /// a large array of a type with an empty default constructor can be sized without a
 /// zeroing pass and then filled in parallel (pages are touched only once, by the writers).

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Error.hh
+/// @ingroup kernel
 /// Exceptions thrown by the library for bad input.
 
 #include <stdexcept>

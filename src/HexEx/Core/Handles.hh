@@ -1,5 +1,6 @@
 #pragma once
 /// @file Handles.hh
+/// @ingroup kernel
 /// Strongly typed entity handles in the style of OpenVolumeMesh.
 
 #include <cstddef>

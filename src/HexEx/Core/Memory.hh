@@ -1,5 +1,6 @@
 #pragma once
 /// @file Memory.hh
+/// @ingroup kernel
 /// Memory sizes: what the machine has available now, parsing and printing byte counts.
 
 #include <cstdint>

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Parallel.hh
+/// @ingroup kernel
 /// A minimal deterministic parallel loop: the range is cut into contiguous chunks, one
 /// per thread, so per-chunk results can be concatenated in chunk order.
 

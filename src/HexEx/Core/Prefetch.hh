@@ -1,5 +1,6 @@
 #pragma once
 /// @file Prefetch.hh
+/// @ingroup kernel
 /// A portable cache-line prefetch hint.
 
 namespace HexEx {

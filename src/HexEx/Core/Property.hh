@@ -1,5 +1,6 @@
 #pragma once
 /// @file Property.hh
+/// @ingroup kernel
 /// Typed property containers per entity kind, requested by name or kept by handle
 /// (the OpenVolumeMesh property idea, reduced to what the extractor needs).
 

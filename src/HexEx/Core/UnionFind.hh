@@ -1,5 +1,6 @@
 #pragma once
 /// @file UnionFind.hh
+/// @ingroup kernel
 /// Union-find over dense 32-bit ids, shared by the orbit labellings and the assembly.
 
 #include <cstddef>

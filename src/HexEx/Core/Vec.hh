@@ -1,5 +1,6 @@
 #pragma once
 /// @file Vec.hh
+/// @ingroup kernel
 /// Vector types: OpenMesh's Vec3d for points and parameters, Vec3i for integer grid points.
 
 #include <OpenMesh/Core/Geometry/VectorT.hh>

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Version.hh
+/// @ingroup kernel
 /// The library's version, for reports and bindings.
 
 namespace HexEx {

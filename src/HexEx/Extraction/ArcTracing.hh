@@ -1,5 +1,6 @@
 #pragma once
 /// @file ArcTracing.hh
+/// @ingroup pipeline
 /// The exact image of one hex edge or hex face in the tet mesh: the preimage of a unit
 /// grid segment (an edge "arc", a polyline) or of a unit grid square (a face "patch", a
 /// triangle soup), found by walking from tet to tet through the halfface transitions.

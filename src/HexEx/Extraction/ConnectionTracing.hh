@@ -1,5 +1,6 @@
 #pragma once
 /// @file ConnectionTracing.hh
+/// @ingroup pipeline
 /// Connection extraction (paper 4.3.2, Algorithm 2): for every dart and every i, trace
 /// from the dart towards its expected partner alpha_i*(d) through the tets, across
 /// transitions, swapping start and target whenever the flippedness changes. The face a

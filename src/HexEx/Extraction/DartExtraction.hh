@@ -1,5 +1,6 @@
 #pragma once
 /// @file DartExtraction.hh
+/// @ingroup pipeline
 /// Dart extraction (paper 4.3.1) with the symbolic-perturbation ownership rule: the dart
 /// (z, d1, d2, d3) belongs to the tet whose parameter image contains z + e d1 + e^2 d2 + e^3 d3.
 /// Darts of flipped tets are anti darts.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ExtractionReport.hh
+/// @ingroup pipeline
 /// Options and report of the one-call extraction API.
 
 #include "../GMap/GMapValidator.hh"

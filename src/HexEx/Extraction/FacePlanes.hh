@@ -1,5 +1,6 @@
 #pragma once
 /// @file FacePlanes.hh
+/// @ingroup pipeline
 /// The four face functions of one tet, set up once for many points: TetSoS::side() for
 /// every grid point of a tet's box with a few multiplications per point instead of a full
 /// orientation predicate. Same signs, exactly: a sign the floating-point filter cannot

@@ -1,5 +1,6 @@
 #pragma once
 /// @file FoldCancellation.hh
+/// @ingroup pipeline
 /// Cheap folds: grid points whose darts all cancel are found before any dart is stored,
 /// and get no darts at all.
 ///

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TetSoS.hh
+/// @ingroup pipeline
 /// Symbolic perturbation on one tet's parameter image: decides whether the point
 /// z + e*d1 + e^2*d2 + e^3*d3 (e > 0 infinitesimal, d_k axis directions) lies inside,
 /// and which face a traced path leaves through. Every decision is a sign of an exact

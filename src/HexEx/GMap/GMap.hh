@@ -1,5 +1,6 @@
 #pragma once
 /// @file GMap.hh
+/// @ingroup pipeline
 /// A dimension-generic generalized map (paper section 3): darts with involutions
 /// alpha_0 .. alpha_Dim. A free link is a fixed point (alpha_i(d) == d).
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file GMapValidator.hh
+/// @ingroup pipeline
 /// The one validator of paper section 3.1, equations 1-6, for 3D generalized maps of
 /// hexahedral meshes. Used by the tests, the CLI report and the benchmarks.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Generators.hh
+/// @ingroup io
 /// Procedural test inputs: tet meshes with exact integer-grid maps whose hex meshes are
 /// known in advance (cube, cylinder with one singular edge, periodic and twisted rings),
 /// plus deterministic ways to make the maps harder (random chart changes, parameter noise).

@@ -1,5 +1,6 @@
 #pragma once
 /// @file MapFromHexMesh.hh
+/// @ingroup io
 /// Integer-grid maps built from a given hex mesh, so that the expected extraction result is
 /// that mesh, vertex for vertex: every hex is split into 24 tets, every hex gets its own
 /// random chart, and face and cell centres can be moved in parameter space to create folds.

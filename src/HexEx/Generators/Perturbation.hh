@@ -1,5 +1,6 @@
 #pragma once
 /// @file Perturbation.hh
+/// @ingroup io
 /// Stress-test perturbation of an integer-grid map after the HexEx paper, section 5.1:
 /// every vertex's parameter is moved by uniform noise, consistently in all charts that see
 /// the vertex, while boundary planes and singular edges keep their grid alignment.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file RandomDraws.hh
+/// @ingroup io
 /// Platform-independent draws from std::mt19937 (the standard distributions are not
 /// specified bit for bit, so generators that must give the same output everywhere map the
 /// raw 32-bit words by hand).

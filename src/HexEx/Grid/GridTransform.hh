@@ -1,5 +1,6 @@
 #pragma once
 /// @file GridTransform.hh
+/// @ingroup pipeline
 /// Grid automorphisms g(u) = R u + t with R one of the 24 rotations and t integer.
 
 #include "Rotation.hh"

@@ -1,5 +1,6 @@
 #pragma once
 /// @file PlanarRotation.hh
+/// @ingroup pipeline
 /// The 4 planar rotations (quarter turns about +z) as a subgroup view of the 24 cube
 /// rotations, for the 2D (quad) pipeline: a 2D transition is a GridTransform whose rotation
 /// fixes the z axis and whose translation has t[2] = 0.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Rotation.hh
+/// @ingroup pipeline
 /// The chiral cubical group: the 24 rotations that map the coordinate axes onto
 /// themselves, as signed axis permutations with composition and inverse tables.
 

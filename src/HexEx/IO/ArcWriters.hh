@@ -1,5 +1,6 @@
 #pragma once
 /// @file ArcWriters.hh
+/// @ingroup io
 /// Writers for the edge arcs and face patches of an extraction (HexArcs) as VTK XML
 /// UnstructuredGrid (.vtu, ASCII): a small writer of its own, since these are polylines and
 /// triangle soups rather than hex meshes.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file BlockOutput.hh
+/// @ingroup io
 /// Output assembled in a memory block and handed to a stream in large pieces, with number
 /// formatting by std::to_chars (no iostream formatting per number), and a helper that
 /// formats the items of a long range on several threads in the same byte order.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file FileBytes.hh
+/// @ingroup io
 /// The bytes of an input file as one read-only view: memory-mapped where POSIX mmap is
 /// available and the file is a non-empty regular file (no copy into a string, no zeroing
 /// of a buffer the size of the file), read into memory otherwise (pipes, empty files,

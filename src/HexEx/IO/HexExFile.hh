@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexExFile.hh
+/// @ingroup io
 /// Reader and writer of the `.hexex` format: a tet mesh with its integer-grid map given
 /// per tet corner.
 ///

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMeshReaders.hh
+/// @ingroup io
 /// Readers of hex mesh files (for `hexex validate` and round-trip tests): the formats of
 /// HexMeshWriters.hh, also as written by other tools where the format allows.
 ///

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMeshWriters.hh
+/// @ingroup io
 /// Writers of the output hex mesh (HexMesh) in the formats the `hexex` tool supports,
 /// chosen by file extension:
 ///

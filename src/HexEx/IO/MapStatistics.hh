@@ -1,5 +1,6 @@
 #pragma once
 /// @file MapStatistics.hh
+/// @ingroup io
 /// Summary statistics of a tet mesh with its integer-grid map (used by `hexex info` and by
 /// the extractor report).
 

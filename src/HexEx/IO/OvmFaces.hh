@@ -1,5 +1,6 @@
 #pragma once
 /// @file OvmFaces.hh
+/// @ingroup io
 /// Faces and edges of an OpenVolumeMesh model from cells given as vertex loops, found by
 /// bucketing on the smallest vertex (no node-based maps): a face shared by two cells is
 /// stored once, with the orientation of its first occurrence; faces and edges are numbered

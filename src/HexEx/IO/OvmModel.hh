@@ -1,5 +1,6 @@
 #pragma once
 /// @file OvmModel.hh
+/// @ingroup io
 /// The content of an OpenVolumeMesh file, ASCII (`.ovm`) or binary (`.ovmb`), as the files
 /// store it: vertices, edges, faces as halfedge loops, cells as halfface lists, and the
 /// integer-grid map if a property holds one. Both file formats are read into and written

@@ -1,5 +1,6 @@
 #pragma once
 /// @file OvmTetReader.hh
+/// @ingroup io
 /// Reader and writer of tetrahedral meshes with an integer-grid map in the OpenVolumeMesh
 /// formats: ASCII (`.ovm`) and binary (`.ovmb`, recognised by its magic bytes; layout in
 /// OvmBinary.cc). Both are parsed into an OvmModel (OvmModel.hh) and checked the same way.

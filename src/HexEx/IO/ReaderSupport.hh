@@ -1,5 +1,6 @@
 #pragma once
 /// @file ReaderSupport.hh
+/// @ingroup io
 /// Steps shared by the readers and writers: reading a whole stream or file, opening an input
 /// file with a clear error, writing a whole file, and finishing a tet mesh (adjacency and
 /// manifoldness).

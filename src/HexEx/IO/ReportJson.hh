@@ -1,5 +1,6 @@
 #pragma once
 /// @file ReportJson.hh
+/// @ingroup io
 /// The extraction report as JSON (the `--report` file of `hexex extract`).
 ///
 /// The document has this fixed structure (keys are never renamed; more keys may be added):

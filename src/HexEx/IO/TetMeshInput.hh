@@ -1,5 +1,6 @@
 #pragma once
 /// @file TetMeshInput.hh
+/// @ingroup io
 /// Reading a parametrized tet mesh in any supported input format, chosen by extension.
 
 #include "HexExFile.hh"

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TextParsing.hh
+/// @ingroup io
 /// Small helpers shared by the text readers (.hexex, .ovm, hex mesh files).
 
 #include "../Core/Error.hh"

@@ -1,5 +1,6 @@
 #pragma once
 /// @file VtkCells.hh
+/// @ingroup io
 /// Cell helpers shared by the hex mesh readers and writers: VTK cell types into HexMesh
 /// cells, signed volumes, index checks.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file VtkDataBlocks.hh
+/// @ingroup io
 /// The binary data blocks of VTK XML files: base64 (with separately padded pieces, as VTK
 /// writes them), a byte-count header of UInt32 or UInt64, and zlib compression in blocks
 /// (`vtkZLibDataCompressor`).

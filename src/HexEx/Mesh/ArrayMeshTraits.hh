@@ -1,5 +1,6 @@
 #pragma once
 /// @file ArrayMeshTraits.hh
+/// @ingroup adapters
 /// Plain-array meshes: a non-owning view of tets with corner parameters as input
 /// (TetArraysView) and an owning set of arrays as output (HexArrays), with their traits.
 

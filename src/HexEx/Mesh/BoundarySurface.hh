@@ -1,5 +1,6 @@
 #pragma once
 /// @file BoundarySurface.hh
+/// @ingroup quality
 /// The boundary surface of an output hex mesh as an OpenMesh polygonal surface mesh, and a
 /// writer for it (.obj, .off, .ply, .stl through OpenMesh's IO).
 ///

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexArcs.hh
+/// @ingroup kernel
 /// The exact images of the hex mesh's edges and faces in the input (ExtractionOptions::arcs):
 /// a polyline ("arc") per hex edge and a triangle mesh ("patch") per hex face.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMesh.hh
+/// @ingroup kernel
 /// The extractor's output: hexahedra (VTK vertex order) plus polyhedra for cells whose
 /// dart orbits are not hexahedra.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMeshCheck.hh
+/// @ingroup quality
 /// The one validator of output meshes (paper section 3.1, mesh level): all cells hexes,
 /// every face shared by at most two cells, boundary faces forming a closed 2-manifold,
 /// Euler characteristic, plus hex quality. Used by the tests, `hexex validate` and the

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMeshQuality.hh
+/// @ingroup quality
 /// Element quality of hex meshes: the scaled Jacobian per hexahedron and summary statistics.
 
 #include "HexMesh.hh"

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexValidity.hh
+/// @ingroup quality
 /// Certified validity of a trilinear hexahedron: is its Jacobian determinant positive on the
 /// whole reference cube, not just at the 8 corners?
 ///

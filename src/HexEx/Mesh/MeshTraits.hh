@@ -1,5 +1,6 @@
 #pragma once
 /// @file MeshTraits.hh
+/// @ingroup kernel
 /// Mesh-kernel traits: the concept through which the templated extractHexMesh() (see
 /// HexExTraits.hh) reads an input tet mesh with its integer-grid map and writes the output
 /// hex mesh, the specializations for the built-in kernel (ParametrizedTetMesh, HexMesh),

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ParametrizedTetMesh.hh
+/// @ingroup kernel
 /// A tet mesh together with its integer-grid map given per tet corner.
 
 #include "TetMesh.hh"

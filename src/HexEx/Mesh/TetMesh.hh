@@ -1,5 +1,6 @@
 #pragma once
 /// @file TetMesh.hh
+/// @ingroup kernel
 /// The built-in tetrahedral mesh kernel: positions, tets as 4 vertex handles, halffaces
 /// indexed 4*c+i (opposite corner i), unique edges and faces with incidences.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file AnnihilateStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "annihilate/merge" (paper 4.4.1): cancels regular/anti dart pairs,
 /// numbers the survivors and compacts them into a generalized map (missing partners
 /// become free links), then completes partially connected quads.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ArcStage.hh
+/// @ingroup pipeline
 /// Optional pipeline stage "arcs" (ExtractionOptions::arcs): the exact image of every hex
 /// edge (a polyline through the tets) and hex face (a triangulated patch), traced from the
 /// darts of the hexes through the halfface transitions (Extraction/ArcTracing.hh).

@@ -1,5 +1,6 @@
 #pragma once
 /// @file AssembleStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "assemble": validates the final generalized map (paper 3.1) and builds
 /// the hex mesh (vertex merging 4.4.2, hexes, polyhedra for other cells).
 

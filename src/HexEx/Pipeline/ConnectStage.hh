@@ -1,5 +1,6 @@
 #pragma once
 /// @file ConnectStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "connect" (paper 4.3.2): traces the alpha links of every dart and keeps
 /// only the mutual ones.
 

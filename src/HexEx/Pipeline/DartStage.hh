@@ -1,5 +1,6 @@
 #pragma once
 /// @file DartStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "darts" (paper 4.3.1): the darts of every tet (the h-vertices are the
 /// grid points they sit on), with the implicit-cell fast path where it applies.
 

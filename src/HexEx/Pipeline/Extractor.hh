@@ -1,5 +1,6 @@
 #pragma once
 /// @file Extractor.hh
+/// @ingroup pipeline
 /// The pipeline's driver: runs the stages of this folder in order (Documentation/algorithm.md,
 /// "Stages") and fills the report as data flows. Included through HexEx.hh.
 

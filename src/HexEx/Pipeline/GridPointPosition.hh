@@ -1,5 +1,6 @@
 #pragma once
 /// @file GridPointPosition.hh
+/// @ingroup pipeline
 /// 3D position of an integer grid point seen from one tet (barycentric interpolation of
 /// the tet's corner positions), shared by the vertex placement and the implicit cells.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexElementNumbering.hh
+/// @ingroup pipeline
 /// Ids of the edges and faces of the hexes of a hex mesh by first appearance (the numbering
 /// of HexArcs), computed in parallel by grouping the occurrences by their smallest vertex.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ImplicitCellPath.hh
+/// @ingroup pipeline
 /// The implicit-cell fast path, in one place: unit cells inside one large proper tet are
 /// built from the grid without darts (ExtractionOptions::implicit_cells). This file decides
 /// when the path is used, which tet faces may carry implicit-cell corners, how explicit

@@ -1,5 +1,6 @@
 #pragma once
 /// @file MemoryBudget.hh
+/// @ingroup pipeline
 /// Pipeline stage "budget": estimates the memory the extraction will need before any
 /// per-grid-point or per-dart data is allocated, refuses maps that would exceed
 /// ExtractionOptions::max_memory, and words the messages of every memory refusal

@@ -1,5 +1,6 @@
 #pragma once
 /// @file PlacementStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "vertices": the 3D geometry of the surviving darts (position of each
 /// dart's grid point in its tet, its boundary faces, the frame's handedness), input of the
 /// vertex merging (paper 4.4.2) in the assembly.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file PreprocessStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "preprocess" (paper 4.1): refuses unusable parameters, computes the
 /// halfface transitions, sanitizes the parameters and classifies the tets.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ReportStage.hh
+/// @ingroup pipeline
 /// Pipeline stage "report": each stage's counts and warnings go into the ExtractionReport
 /// as the data flows (one function per stage output, called in pipeline order).
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file DartAnnihilation.hh
+/// @ingroup pipeline
 /// Dart annihilation (paper 4.4.1): a regular dart and an anti dart linked by any alpha_i
 /// cancel; the darts around them are reconnected by
 /// alpha_j(alpha_j(d)) = alpha_j(d'), alpha_j(alpha_j(d')) = alpha_j(d) for all j with alpha_j(d) != d'.

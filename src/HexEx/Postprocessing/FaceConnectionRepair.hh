@@ -1,5 +1,6 @@
 #pragma once
 /// @file FaceConnectionRepair.hh
+/// @ingroup pipeline
 /// Completes partial face connections (paper 5.2, "partial connectivity"): a quad whose
 /// darts are linked by alpha_3 to one other quad only in part gets the missing links, when
 /// the links it has determine the correspondence and the missing ones are free on both sides.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file FaceRelinking.hh
+/// @ingroup pipeline
 /// Re-pairs quads whose alpha_3 links the dart annihilation left inconsistent.
 ///
 /// Where a grid point is covered by several regular layers and a fold layer, the

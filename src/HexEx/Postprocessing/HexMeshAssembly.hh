@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexMeshAssembly.hh
+/// @ingroup pipeline
 /// Builds the output mesh from the final generalized map: vertices are the
 /// <alpha_1, alpha_2, alpha_3> orbits (so h-vertices that annihilation or degenerate tets
 /// joined are merged), cells the <alpha_0, alpha_1, alpha_2> orbits.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file LocalHexCheck.hh
+/// @ingroup pipeline
 /// Checks the hex cells around given darts of an uncompacted link array (during the
 /// annihilation, before the generalized map is built): the per-cell part of the
 /// validator's equations 1-6 (GMapValidator.hh), plus "no alpha_3 link inside one cell".

@@ -1,5 +1,6 @@
 #pragma once
 /// @file VertexMerging.hh
+/// @ingroup pipeline
 /// Vertex merging (paper 4.4.2). The equivalence classes are the <alpha_1, alpha_2, alpha_3>
 /// orbits of the final map: h-vertices joined by annihilated alpha_0 pairs or by tracing
 /// through degenerate tets share an orbit. This file decides the merged positions.

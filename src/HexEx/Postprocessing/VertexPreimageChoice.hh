@@ -1,5 +1,6 @@
 #pragma once
 /// @file VertexPreimageChoice.hh
+/// @ingroup pipeline
 /// Where a vertex's grid point has several preimages among its h-vertices (a fold covers
 /// it more than once), choose the one that gives the incident hexes the best shape.
 

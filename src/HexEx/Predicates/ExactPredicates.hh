@@ -1,5 +1,6 @@
 #pragma once
 /// @file ExactPredicates.hh
+/// @ingroup pipeline
 /// Exact orientation predicates on doubles (CGAL's filtered kernel) and the classification
 /// of an integer grid point against a tet's parameter image.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file CornerRepair.hh
+/// @ingroup pipeline
 /// A corner parameter the sanitization replaced (see sanitizeParameters()).
 
 #include "../Core/Vec.hh"

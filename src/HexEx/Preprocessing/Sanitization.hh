@@ -1,5 +1,6 @@
 #pragma once
 /// @file Sanitization.hh
+/// @ingroup pipeline
 /// Sanitization of the parametrization (paper 4.1.2): after it, the parameters of every
 /// vertex in all its tets are related exactly by the transitions, so every later predicate
 /// is exact and consistent across charts.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Transitions.hh
+/// @ingroup pipeline
 /// Transition functions per halfface (paper 4.1.1) and singularity detection.
 
 #include "../Grid/GridTransform.hh"

@@ -1,5 +1,6 @@
 #pragma once
 /// @file ParametrizedTriMesh.hh
+/// @ingroup quad
 /// Input of the 2D (quad) pipeline: a triangle mesh with an integer-grid map given per
 /// triangle corner, and its halfedge adjacency.
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file PlanarOrientation.hh
+/// @ingroup quad
 /// The exact planar orientation test of the 2D pipeline, orient2dAxis(a, b, c, 2) with its
 /// cheap cases inlined. The 2D tracing and dart extraction call it millions of times,
 /// mostly with points on grid lines, where the floating-point filter cannot decide.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file PlanarTransform.hh
+/// @ingroup quad
 /// The transition between two charts of a 2D integer-grid map: a counter-clockwise
 /// rotation by 0..3 quarter turns followed by an integer translation. The planar form of
 /// GridTransform (12 bytes instead of 16, no third coordinate); it gives bit for bit what

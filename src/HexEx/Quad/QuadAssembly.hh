@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadAssembly.hh
+/// @ingroup quad
 /// Quad mesh assembly in 2D: vertices are the <alpha_1, alpha_2> orbits of the final map,
 /// faces its <alpha_0, alpha_1> orbits.
 

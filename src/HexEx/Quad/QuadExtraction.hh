@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadExtraction.hh
+/// @ingroup quad
 /// The 2D pipeline's one-call API on the built-in types: extract the quad mesh of a
 /// triangle mesh with an integer-grid map (ParametrizedTriMesh -> QuadMesh), with its
 /// options and report. The templated entry for other kernels (OpenMesh, plain arrays) is

@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadGMapValidator.hh
+/// @ingroup quad
 /// The validator of paper section 3.1 in 2D, for generalized maps of quad meshes (GMap<2>):
 /// involutions, closed faces, edges connected as a whole (the 2D form of equation 1) and
 /// quad faces (equation 3); the 3D-only equations (2, 4-6) have no 2D counterpart.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadGenerators.hh
+/// @ingroup quad
 /// Procedural 2D test inputs: triangle meshes with exact integer-grid maps whose quad meshes
 /// are known in advance (square, disk with a cone, torus, a seam with a quarter turn), and
 /// deterministic ways to make the maps harder (random charts per triangle, noise, the

@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadMesh.hh
+/// @ingroup quad
 /// Output of the 2D pipeline: quads plus the polygons whose dart orbits are not quads.
 
 #include "../Core/Vec.hh"

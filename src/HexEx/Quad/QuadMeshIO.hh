@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadMeshIO.hh
+/// @ingroup quad
 /// Files of the 2D pipeline: triangle meshes with per-corner parameters as OBJ with `vt`
 /// texture coordinates (read and written by TriObjReader.hh / TextMeshWriters.hh, parameters as
 /// doubles, exact round trip), quad meshes as OBJ, OFF or PLY (TextMeshWriters.hh) or VTU

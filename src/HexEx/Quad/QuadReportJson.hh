@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadReportJson.hh
+/// @ingroup quad
 /// The 2D extraction report as JSON (the `--report` file of `hexex quad`), with the keys of
 /// the 3D report where they apply (ReportJson.hh): "input" {"vertices", "triangles",
 /// "boundary_edges", "flipped_triangles", "degenerate_triangles", "cones",

@@ -1,5 +1,6 @@
 #pragma once
 /// @file QuadTraits.hh
+/// @ingroup quad
 /// The 2D one-call API for any mesh kernel: extractQuadMesh() templated over the input
 /// triangle mesh and the output polygon mesh, read and written through TriMeshTraits and
 /// QuadMeshOutputTraits (the 2D twins of TetMeshTraits and HexMeshOutputTraits). Ready

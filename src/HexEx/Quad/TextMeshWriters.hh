@@ -1,5 +1,6 @@
 #pragma once
 /// @file TextMeshWriters.hh
+/// @ingroup quad
 /// Fast text writers of the 2D pipeline (triangle maps as OBJ; quad meshes as OBJ, OFF,
 /// PLY): numbers formatted with std::to_chars (the shortest text that reads back to the
 /// same double) into large buffers, blocks of elements formatted in parallel and written

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TriObjReader.hh
+/// @ingroup quad
 /// A fast reader for OBJ triangle meshes with per-corner texture coordinates (`v`, `vt`,
 /// `f v/vt` or `f v/vt/vn`), the input format of the 2D pipeline. The text is cut into
 /// chunks at line boundaries, counted, then parsed in place with std::from_chars, one

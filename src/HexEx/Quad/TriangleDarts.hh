@@ -1,5 +1,6 @@
 #pragma once
 /// @file TriangleDarts.hh
+/// @ingroup quad
 /// Dart extraction in 2D (paper 4.3.1 with one dimension less): a dart is a quad corner
 /// seen from one triangle, an integer grid point z with a frame (d1, d2) of two orthogonal
 /// axis directions (8 frames per point). Triangle f owns the dart if it contains the

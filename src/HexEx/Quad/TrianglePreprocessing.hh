@@ -1,5 +1,6 @@
 #pragma once
 /// @file TrianglePreprocessing.hh
+/// @ingroup quad
 /// Preprocessing of the 2D pipeline (the analogue of Preprocessing/ for tets): transitions
 /// per halfedge (paper 4.1.1 in 2D), sanitization (4.1.2 in 2D), the orientation of every
 /// triangle's parameter image and the holonomy (cones) of the map.

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TriangleTracing.hh
+/// @ingroup quad
 /// Connection tracing in 2D (paper 4.3.2 with one dimension less): alpha_0 (the other end
 /// of the grid edge), alpha_1 (the other edge at the corner) and alpha_2 (the quad across
 /// the edge) of every dart, traced across triangles with the same symbolic perturbation as

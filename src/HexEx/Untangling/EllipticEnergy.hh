@@ -1,5 +1,6 @@
 #pragma once
 /// @file EllipticEnergy.hh
+/// @ingroup quality
 /// The regularised elliptic energy of one tetrahedron (Garanzha, Kaporin, Kudryavtseva,
 /// Protais, Ray, Sokolov: "Foldover-free maps in 50 lines of code", ACM TOG 40(4), 2021),
 /// evaluated on a corner tet of a hexahedron: the three edges leaving a hex corner.

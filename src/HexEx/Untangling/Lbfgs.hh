@@ -1,5 +1,6 @@
 #pragma once
 /// @file Lbfgs.hh
+/// @ingroup quality
 /// A small limited-memory BFGS minimiser (Nocedal and Wright, "Numerical Optimization",
 /// algorithm 7.4, two-loop recursion) with a backtracking Armijo line search, on Eigen
 /// vectors. Deterministic: the same function gives the same iterates.

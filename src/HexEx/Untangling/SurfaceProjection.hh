@@ -1,5 +1,6 @@
 #pragma once
 /// @file SurfaceProjection.hh
+/// @ingroup quality
 /// Closest-point queries on a TriangleSurface and on its sharp feature curves (CGAL AABB
 /// trees), used to keep the boundary vertices of an untangled hex mesh on the input surface.
 ///

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TriangleSurface.hh
+/// @ingroup quality
 /// A triangle soup with shared vertices: the surface the boundary vertices of an untangled
 /// hex mesh must stay on (the boundary of the input tet mesh, or of the hex mesh itself).
 

@@ -1,5 +1,6 @@
 #pragma once
 /// @file Untangler.hh
+/// @ingroup quality
 /// Untangling of hex meshes: moves vertices so that every hexahedron has positive
 /// Jacobians at its 8 corners, changing the mesh only near the inverted hexes.
 ///
