@@ -39,6 +39,8 @@ void setQualityValues(hexex_result* r, const HexEx::QualityStats& q) {
     r->values[HEXEX_VALUE_INVERTED_HEXES] = static_cast<double>(q.inverted_hexes);
     r->values[HEXEX_VALUE_MIN_SCALED_JACOBIAN] = q.min_scaled_jacobian;
     r->values[HEXEX_VALUE_MEAN_SCALED_JACOBIAN] = q.mean_scaled_jacobian;
+    r->values[HEXEX_VALUE_INVALID_HEXES] = static_cast<double>(q.invalid_hexes);
+    r->values[HEXEX_VALUE_UNDECIDED_HEXES] = static_cast<double>(q.undecided_hexes);
 }
 
 void setUntangleValues(hexex_result* r, const HexEx::UntangleReport& u) {

@@ -86,6 +86,8 @@ typedef enum hexex_value {
     HEXEX_VALUE_INVERTED_HEXES = 6,         /**< hexes with a corner Jacobian <= 0 */
     HEXEX_VALUE_MIN_SCALED_JACOBIAN = 7,    /**< minimum scaled Jacobian over the hexes (0 without hexes) */
     HEXEX_VALUE_MEAN_SCALED_JACOBIAN = 8,   /**< mean scaled Jacobian over the hexes (0 without hexes) */
+    HEXEX_VALUE_INVALID_HEXES = 9,          /**< hexes certified to have a non-positive Jacobian somewhere inside (HexEx::hexValidity()) */
+    HEXEX_VALUE_UNDECIDED_HEXES = 10,       /**< hexes the certified validity test left undecided */
     /* Extraction (hexex_extract()). */
     HEXEX_VALUE_INPUT_VERTICES = 20,        /**< tet-mesh vertices */
     HEXEX_VALUE_INPUT_TETS = 21,            /**< tets */

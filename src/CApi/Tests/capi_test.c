@@ -69,6 +69,8 @@ static void test_cube(void) {
     CHECK(value(r, HEXEX_VALUE_FLIPPED_TETS) == 0);
     CHECK(value(r, HEXEX_VALUE_BOUNDARY_QUADS) == 24);
     CHECK(value(r, HEXEX_VALUE_INVERTED_HEXES) == 0);
+    CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 0);
+    CHECK(value(r, HEXEX_VALUE_UNDECIDED_HEXES) == 0);
     CHECK(fabs(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) - 1.0) < 1e-12);
     CHECK(fabs(value(r, HEXEX_VALUE_PARAMETRIC_VOLUME) - 8.0) < 1e-12);
     CHECK(strstr(hexex_result_report_json(r), "\"valid_all_hex\": true") != NULL);
@@ -201,6 +203,13 @@ static void test_untangle(void) {
                     hexes[8 * n + i] = (x + corner[i][0]) + 3 * (y + corner[i][1]) + 9 * (z + corner[i][2]);
     points[3 * 13 + 0] = points[3 * 13 + 1] = points[3 * 13 + 2] = 1.8;
 
+    /* Validation sees the inverted hex, by its corners and by the certified test. */
+    CHECK(hexex_validate(points, 27, hexes, 8, &r) == HEXEX_OK);
+    CHECK(value(r, HEXEX_VALUE_INVERTED_HEXES) == 1);
+    CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 1);
+    CHECK(value(r, HEXEX_VALUE_VALID_ALL_HEX) == 1); /* topology only: element quality does not count */
+    hexex_result_free(r);
+
     hexex_untangle_options_init(&opt);
     CHECK(opt.size == sizeof opt && opt.rings == 1 && opt.fixed_boundary == 0);
     opt.fixed_boundary = 1;
@@ -211,6 +220,7 @@ static void test_untangle(void) {
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_INVERTED_AFTER) == 0);
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_SUCCESS) == 1);
     CHECK(value(r, HEXEX_VALUE_INVERTED_HEXES) == 0);
+    CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 0);
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_MOVED_VERTICES) == 1);
     CHECK(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) > 0);
     CHECK(strstr(hexex_result_report_json(r), "\"inverted_after\": 0,") != NULL);
