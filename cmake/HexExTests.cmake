@@ -35,13 +35,27 @@ hexex_add_install_test(install_and_find_package_traits traits traits)
 # Examples/openvolumemesh (only when OpenVolumeMesh is found; its prefix is passed on).
 hexex_add_install_test(install_and_find_package_cgal_lcc cgal_lcc cgal_lcc)
 # The C API: Examples/c_api builds a C99 program against HexEx::C and the installed hexex.h.
-hexex_add_install_test(install_and_find_package_c_api c_api extract_c)
+if(TARGET hexex_c)
+  hexex_add_install_test(install_and_find_package_c_api c_api extract_c)
+endif()
 include(${PROJECT_SOURCE_DIR}/cmake/HexExOpenVolumeMesh.cmake)
 if(OpenVolumeMesh_FOUND)
   # <prefix>/lib/cmake/OpenVolumeMesh -> <prefix>
   get_filename_component(_hexex_ovm_prefix "${OpenVolumeMesh_DIR}/../../.." ABSOLUTE)
   hexex_add_install_test(install_and_find_package_openvolumemesh openvolumemesh openvolumemesh ${_hexex_ovm_prefix})
 endif()
+
+# add_subdirectory() of the project: only the library, no GTest, no forced build type
+# (configured, not built: Examples/embedding, cmake/TestEmbedding.cmake).
+add_test(NAME embed_with_add_subdirectory
+  COMMAND ${CMAKE_COMMAND}
+    -DHEXEX_SOURCE_DIR=${PROJECT_SOURCE_DIR}
+    -DWORK_DIR=${PROJECT_BINARY_DIR}/test-embed_with_add_subdirectory
+    -DGENERATOR=${CMAKE_GENERATOR}
+    -DCXX_COMPILER=${CMAKE_CXX_COMPILER}
+    "-DEXTRA_PREFIX_PATH=${CMAKE_PREFIX_PATH}"
+    -P ${PROJECT_SOURCE_DIR}/cmake/TestEmbedding.cmake)
+set_tests_properties(embed_with_add_subdirectory PROPERTIES TIMEOUT 300 LABELS package)
 
 # The API documentation must build without a single Doxygen warning.
 if(TARGET doc)

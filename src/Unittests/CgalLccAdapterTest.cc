@@ -248,3 +248,54 @@ TEST(CgalLccAdapter, FacesOrientedLikeMakeHexahedron) {
                        out);
     EXPECT_EQ(inwardFaces(ours, out.cellDarts()[0]), 24);
 }
+
+namespace {
+
+/// One dart per volume of @p lcc in creation order (the order of the extractor's cells
+/// when the one-call overload wrote them into a cleared LCC).
+std::vector<HexLcc::Dart_handle> volumeDarts(HexLcc& lcc) {
+    std::vector<HexLcc::Dart_handle> r;
+    for (auto it = lcc.one_dart_per_cell<3>().begin(); it != lcc.one_dart_per_cell<3>().end(); ++it) r.push_back(it);
+    return r;
+}
+
+} // namespace
+
+TEST(CgalLccAdapter, OneCallOverloadsWithDartInfoAndPointAccessor) {
+    for (const auto& pm : {HexEx::readHexExFile("Examples/data/sphere.hexex"), HexEx::generateCylinder(3, 3, 2, 2, 1)}) {
+        const HexEx::HexMesh ref = HexExTest::extracted(pm);
+        const TetLcc tets = toLcc(pm);
+        // The map in the darts' info.
+        HexLcc viaInfo;
+        const HexEx::ExtractionReport r = HexEx::extractHexMesh(tets, viaInfo);
+        EXPECT_TRUE(r.valid_all_hex);
+        EXPECT_EQ(r.output.hexes, std::int64_t(ref.hexes.size()));
+        EXPECT_TRUE(viaInfo.is_valid());
+        HexExTest::expectSameMesh(readBack(viaInfo, volumeDarts(viaInfo)), ref);
+        // An accessor returning CGAL's Point_3.
+        const auto asPoint = [](const TetLcc& lcc, TetLcc::Dart_const_handle d) {
+            const std::array<double, 3>& u = lcc.info(d);
+            return TetLcc::Point(u[0], u[1], u[2]);
+        };
+        HexLcc viaAccessor;
+        HexEx::extractHexMesh(tets, asPoint, viaAccessor, HexEx::ExtractionOptions{});
+        HexExTest::expectSameMesh(readBack(viaAccessor, volumeDarts(viaAccessor)), ref);
+        // The same accessor through the view (a Point_3 used not to convert).
+        HexEx::HexMesh viaView;
+        HexEx::extractHexMesh(HexEx::LccTetMesh(tets, asPoint), viaView);
+        HexExTest::expectSameMesh(viaView, ref);
+    }
+    // Bad input: the output LCC stays untouched.
+    TetLcc bad;
+    using P = TetLcc::Point;
+    bad.make_hexahedron(P(0, 0, 0), P(1, 0, 0), P(1, 1, 0), P(0, 1, 0), P(0, 1, 1), P(0, 0, 1), P(1, 0, 1), P(1, 1, 1));
+    HexLcc out;
+    out.make_tetrahedron(HexLcc::Point(0, 0, 0), HexLcc::Point(1, 0, 0), HexLcc::Point(0, 1, 0), HexLcc::Point(0, 0, 1));
+    try {
+        HexEx::extractHexMesh(bad, out);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_STREQ(e.what(), "LCC volume 0 is not a closed combinatorial tetrahedron");
+    }
+    EXPECT_EQ(out.number_of_darts(), 12u);
+}

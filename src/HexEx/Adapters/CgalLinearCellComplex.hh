@@ -68,6 +68,72 @@ struct LccDartInfoParameter {
     }
 };
 
+namespace detail {
+
+/// True if @p T looks like a CGAL Linear_cell_complex of dimension 3 in 3D (detection fallback).
+template <class T, class = void>
+struct IsLcc3 : std::false_type {};
+/// True if @p T looks like a CGAL Linear_cell_complex of dimension 3 in 3D.
+template <class T>
+struct IsLcc3<T, std::void_t<typename T::Dart_const_handle, typename T::Vertex_attribute_const_handle,
+                             decltype(T::dimension), decltype(T::ambient_dimension)>>
+    : std::bool_constant<T::dimension == 3 && T::ambient_dimension == 3> {};
+
+/// The four corner darts of the tet volume of @p d (first dart of tet number @p t, for the
+/// error message): the darts of its corners in LccTetMesh's order. Throws InputError if
+/// the volume is not a closed combinatorial tetrahedron.
+template <class LCC>
+std::array<typename LCC::Dart_const_handle, 4> lccTetCornerDarts(const LCC& lcc, typename LCC::Dart_const_handle d,
+                                                                 std::size_t t) {
+    if (lcc.template is_free<1>(d) || lcc.template is_free<2>(d) || !lcc.is_volume_combinatorial_tetrahedron(d))
+        throw InputError("LCC volume " + std::to_string(t) + " is not a closed combinatorial tetrahedron");
+    return {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
+}
+
+/// Numbers the vertex attributes of @p lcc in their order: attribute address -> index.
+template <class LCC>
+std::unordered_map<const void*, std::size_t> lccVertexIndex(const LCC& lcc) {
+    std::unordered_map<const void*, std::size_t> index;
+    index.reserve(lcc.vertex_attributes().size());
+    for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
+        index.emplace(static_cast<const void*>(&*it), index.size());
+    return index;
+}
+
+/// The index of the vertex of dart @p d of tet @p t (see lccVertexIndex()); throws
+/// InputError if the dart has no vertex attribute.
+template <class LCC>
+std::size_t lccVertexOf(const LCC& lcc, const std::unordered_map<const void*, std::size_t>& index,
+                        typename LCC::Dart_const_handle d, std::size_t t) {
+    const auto va = lcc.vertex_attribute(d);
+    if (va == nullptr) throw InputError("LCC volume " + std::to_string(t) + ": a dart has no vertex attribute");
+    return index.at(static_cast<const void*>(&*va));
+}
+
+} // namespace detail
+
+/// Extracts the hex mesh of the CGAL Linear_cell_complex of tets @p tets, whose darts carry
+/// the map (`tets.info(d)`: the parameter of the vertex of `d` in the chart of its volume; a
+/// CGAL point or vector or an indexable triple), into the Linear_cell_complex @p hexes
+/// (cleared first; written as LccHexOutput writes: one volume per cell, 3-sewn).
+///
+/// The tets are read straight into the built-in kernel (vertex and tet order, corner order
+/// as LccTetMesh reads them; no per-tet cache), extracted, and the copy is freed before the
+/// output is written. Throws InputError if a volume is not a closed combinatorial
+/// tetrahedron or the input is otherwise unusable.
+template <class TetLcc, class HexLcc,
+          std::enable_if_t<detail::IsLcc3<TetLcc>::value && detail::IsLcc3<HexLcc>::value, int> = 0>
+ExtractionReport extractHexMesh(const TetLcc& tets, HexLcc& hexes, const ExtractionOptions& options = {});
+
+/// As the overload above, the map read through @p param: called as `param(tets, d)` with a
+/// dart `d` (Dart_const_handle), it returns the parameter of the vertex of `d` in the chart of
+/// the volume of `d` as a CGAL `Point_3` or `Vector_3` (any number type with
+/// CGAL::to_double), a HexEx::Vec3d or an indexable triple of numbers.
+template <class TetLcc, class ParamFn, class HexLcc,
+          std::enable_if_t<detail::IsLcc3<TetLcc>::value && detail::IsLcc3<HexLcc>::value, int> = 0>
+ExtractionReport extractHexMesh(const TetLcc& tets, const ParamFn& param, HexLcc& hexes,
+                                const ExtractionOptions& options = {});
+
 /// Input view of a CGAL Linear_cell_complex of dimension 3 whose volumes are tetrahedra,
 /// read by the templated extractHexMesh() through TetMeshTraits.
 ///
@@ -96,27 +162,15 @@ public:
     explicit LccTetMesh(const LCC& lcc, ParamFn param = ParamFn()) : lcc_(&lcc), param_(std::move(param)) {
         static_assert(LCC::dimension == 3 && LCC::ambient_dimension == 3,
                       "HexEx::LccTetMesh needs a Linear_cell_complex of dimension 3 in 3D");
-        std::unordered_map<const void*, std::size_t> index;
-        index.reserve(lcc.vertex_attributes().size());
-        for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it) {
-            index.emplace(static_cast<const void*>(&*it), vertices_.size());
+        const std::unordered_map<const void*, std::size_t> index = detail::lccVertexIndex(lcc);
+        for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
             vertices_.push_back(it);
-        }
         for (auto it = lcc.template one_dart_per_cell<3>().begin(); it != lcc.template one_dart_per_cell<3>().end();
              ++it) {
             const std::size_t t = darts_.size();
-            const Dart d = it;
-            if (lcc.template is_free<1>(d) || lcc.template is_free<2>(d) ||
-                !lcc.is_volume_combinatorial_tetrahedron(d))
-                throw InputError("LCC volume " + std::to_string(t) + " is not a closed combinatorial tetrahedron");
-            const std::array<Dart, 4> c = {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
+            const std::array<Dart, 4> c = detail::lccTetCornerDarts(lcc, Dart(it), t);
             std::array<std::size_t, 4> v{};
-            for (std::size_t i = 0; i < 4; ++i) {
-                const auto va = lcc.vertex_attribute(c[i]);
-                if (va == nullptr)
-                    throw InputError("LCC volume " + std::to_string(t) + ": a dart has no vertex attribute");
-                v[i] = index.at(static_cast<const void*>(&*va));
-            }
+            for (std::size_t i = 0; i < 4; ++i) v[i] = detail::lccVertexOf(lcc, index, c[i], t);
             darts_.push_back(c);
             corners_.push_back(v);
         }
@@ -135,7 +189,7 @@ public:
     /// The dart of tet @p t whose vertex is corner @p i (the one passed to the parameter accessor).
     Dart cornerDart(std::size_t t, int i) const { return darts_[t][static_cast<std::size_t>(i)]; }
     /// Parameter of corner @p i of tet @p t.
-    Vec3d param(std::size_t t, int i) const { return Vec3d(param_(*lcc_, cornerDart(t, i))); }
+    Vec3d param(std::size_t t, int i) const { return detail::lccToVec3d(param_(*lcc_, cornerDart(t, i))); }
 
 private:
     const LCC* lcc_;
@@ -183,6 +237,13 @@ public:
         cells_.clear();
         open_.clear();
         unsewn_ = 0;
+    }
+    /// Makes room for @p nVertices vertices and the faces of @p nHexes hexahedra in this
+    /// object's bookkeeping (the LCC itself grows as it goes).
+    void reserve(std::size_t nVertices, std::size_t nHexes) {
+        vertices_.reserve(nVertices);
+        cells_.reserve(nHexes);
+        open_.reserve(nHexes + nHexes / 2);
     }
     /// Adds a vertex attribute at @p p and returns its index.
     std::size_t addVertex(const Vec3d& p) {
@@ -327,6 +388,10 @@ template <class LCC>
 struct HexMeshOutputTraits<LccHexOutput<LCC>> {
     /// Clears the LCC.
     static void clear(LccHexOutput<LCC>& m) { m.clear(); }
+    /// Makes room for @p nVertices vertices and @p nHexes hexahedra.
+    static void reserve(LccHexOutput<LCC>& m, std::size_t nVertices, std::size_t nHexes) {
+        m.reserve(nVertices, nHexes);
+    }
     /// Adds a vertex attribute.
     static std::size_t add_vertex(LccHexOutput<LCC>& m, const Vec3d& p) { return m.addVertex(p); }
     /// Adds a hexahedron (VTK order).
@@ -338,3 +403,5 @@ struct HexMeshOutputTraits<LccHexOutput<LCC>> {
 };
 
 } // namespace HexEx
+
+#include "CgalLinearCellComplexT_impl.hh"

@@ -58,6 +58,9 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
     }
 }
 
+/// Copies the tets of @p mesh into the built-in kernel, corners as OvmTetMesh reads them, the
+/// parameter of corner `v` opposite halfface `hf` of cell `c` being `paramOf(hf, c, v)`
+/// (indexable by 0..2), and builds the adjacency with @p threads threads.
 template <class Mesh, class ParamOf>
 ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf, int threads) {
     if (mesh.needs_garbage_collection())
@@ -101,6 +104,7 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     return pm;
 }
 
+/// Body of both one-call overloads: read, extract, free the copy, write in bulk.
 template <class TetMeshT, class HexMeshT, class ParamOf>
 ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT& hexMesh,
                             const ExtractionOptions& options) {
