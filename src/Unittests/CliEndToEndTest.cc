@@ -417,7 +417,7 @@ TEST_F(CliEndToEndTest, GenerateFromHexMesh) {
     ASSERT_EQ(r.status, 0) << r.err;
     r = run({"extract", path("map2.hexex"), "-o", path("again2.vtk")});
     EXPECT_NE(r.out.find("216 hexes, 343 vertices, valid all-hex"), std::string::npos) << r.out;
-    r = run({"generate", "from-hex", path("cube.vtk"), "--perturb", "1.5", "-o", path("bad.hexex")});
+    r = run({"generate", "from-hex", path("cube.vtk"), "--perturb", "2.5", "-o", path("bad.hexex")});
     EXPECT_EQ(r.status, 2);
     EXPECT_NE(r.err.find("--perturb"), std::string::npos) << r.err;
     r = run({"generate", "from-hex", "-o", path("bad.hexex")});

@@ -81,7 +81,7 @@ TEST(MapFromHexMesh, SplitsEveryHexIntoTwentyFourTetsWithOwnCharts) {
 
 TEST(MapFromHexMesh, RejectsNonHexAndBadOptions) {
     HexMesh m = sourceMesh("cube");
-    EXPECT_THROW(mapFromHexMesh(m, MapFromHexOptions{1.0, 1, 1}), std::invalid_argument);
+    EXPECT_THROW(mapFromHexMesh(m, MapFromHexOptions{2.5, 1, 1}), std::invalid_argument);
     EXPECT_THROW(mapFromHexMesh(m, MapFromHexOptions{0.0, 1, 0}), std::invalid_argument);
     HexMesh flipped = m;
     std::swap(flipped.hexes[0][1], flipped.hexes[0][3]);  // mirrored: orientation disagrees with its neighbours

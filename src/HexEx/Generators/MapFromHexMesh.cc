@@ -75,8 +75,8 @@ Vec3i hexCornerLattice(int i) {
 }
 
 MapFromHexResult mapFromHexMesh(const HexMesh& hexes, const MapFromHexOptions& options) {
-    if (!(options.perturb >= 0.0 && options.perturb < 1.0))
-        throw std::invalid_argument("mapFromHexMesh: perturbation must lie in [0, 1), got " +
+    if (!(options.perturb >= 0.0 && options.perturb <= 2.0))
+        throw std::invalid_argument("mapFromHexMesh: perturbation must lie in [0, 2], got " +
                                     std::to_string(options.perturb));
     if (options.scale < 1 || options.scale > 1000)
         throw std::invalid_argument("mapFromHexMesh: scale must lie in [1, 1000], got " +

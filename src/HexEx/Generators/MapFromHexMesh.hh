@@ -18,7 +18,8 @@ namespace HexEx {
 struct MapFromHexOptions {
     /// Face and cell centres are moved in parameter space by up to this many grid units per
     /// coordinate (uniform noise, quantized to multiples of 2^-20); boundary face centres
-    /// only within their face's plane. 0 keeps the map exact. Must lie in [0, 1).
+    /// only within their face's plane. 0 keeps the map exact. Must lie in [0, 2] (from 1 on a
+    /// centre can pass a whole grid unit, so folds cover neighbouring hexes' corners).
     double perturb = 0.0;
     /// Seed of the chart choice and of the perturbation (std::mt19937, same on every platform).
     unsigned seed = 1;

@@ -120,7 +120,7 @@ int runGenerate(const Args& args) {
                                          sz("--nv", 2), sz("--nw", 2));
             } else if (shape == "from-hex") {
                 HexEx::MapFromHexOptions o;
-                o.perturb = pa.getDouble("--perturb", 0, 0, 0.999);
+                o.perturb = pa.getDouble("--perturb", 0, 0, 2);
                 o.seed = static_cast<unsigned>(
                     pa.getInt("--seed", 1, 0, static_cast<long>(std::numeric_limits<unsigned>::max())));
                 o.scale = sz("--scale", 1);
