@@ -66,6 +66,10 @@ nb::dict validateHexMesh(const DoubleArray& points, const Int32Array& hexes, con
     q["min_scaled_jacobian"] = r.quality.min_scaled_jacobian;
     q["mean_scaled_jacobian"] = r.quality.mean_scaled_jacobian;
     q["inverted_hexes"] = r.quality.inverted_hexes;
+    q["invalid_hexes"] = r.quality.invalid_hexes;
+    q["undecided_hexes"] = r.quality.undecided_hexes;
+    q["first_invalid_hex"] = r.quality.first_invalid_hex;
+    q["certified_valid"] = r.quality.invalid_hexes == 0 && r.quality.undecided_hexes == 0;
     d["quality"] = q;
     return d;
 }

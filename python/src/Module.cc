@@ -64,7 +64,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
             if (rotations) opt.given_rotations = &given;
             rep = HexEx::extractHexMesh(pm, hm, opt);
         }
-        extras.quality = HexEx::computeQuality(hm);
+        extras.quality = HexEx::computeQuality(hm, threads);
         extras.total_s = secondsSince(t_start);
         json = HexEx::reportToJson(rep, extras);
     }

@@ -236,7 +236,8 @@ TEST(ReportJsonTest, RequiredStructureAndTypes) {
                    "parametric_volume"}},
         {"output", {"vertices", "hexes", "non_hex_cells", "quads", "boundary_quads", "unconnected_darts"}},
         {"darts", {"extracted", "anti", "annihilated_pairs"}},
-        {"quality", {"min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes"}},
+        {"quality", {"min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes", "invalid_hexes",
+                     "undecided_hexes"}},
         {"timings_s", {"read", "preprocess", "vertices", "darts", "connect", "postprocess", "assemble", "write", "total"}},
     };
     for (const auto& sec : required) {

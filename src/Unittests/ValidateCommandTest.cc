@@ -68,8 +68,36 @@ TEST(ValidateCommand, ValidCubeJson) {
                             "\"quads\": 108", "\"boundary_quads\": 54", "\"quads_shared_by_more_than_two\": 0",
                             "\"nonmanifold_boundary_edges\": 0", "\"euler_characteristic\": 1",
                             "\"min_scaled_jacobian\": 1", "\"mean_scaled_jacobian\": 1", "\"inverted_hexes\": 0",
-                            "\"valid_all_hex\": true"})
+                            "\"invalid_hexes\": 0", "\"certified_valid\": true", "\"valid_all_hex\": true"})
         EXPECT_NE(r.out.find(key), std::string::npos) << key << " not in\n" << r.out;
+}
+
+TEST(ValidateCommand, CertifiedFlagsAHexNegativeInsideWithPositiveCorners) {
+    REQUIRE_TOOL();
+    // Positive Jacobian at all 8 corners, negative at (u, v, w) = (0.25, 1, 0) (HexValidityTest).
+    HexMesh m;
+    m.vertices = {{0.34903947519629847, -0.040657101802294204, -0.14580526119256942},
+                  {1.3158235993425553, -0.22753776138255985, -0.32283547238959748},
+                  {0.66302905271037815, 0.96539898402132385, -0.21103170472141899},
+                  {0.38309908700906353, 1.3863647837410384, 0.3657617023242497},
+                  {-0.26060920847350455, -0.27169702399717743, 0.61007095309834447},
+                  {1.21923850574767, -0.22315681136377602, 0.88364110018111863},
+                  {0.63601846817499119, 1.4113433695468787, 0.7938652942780513},
+                  {-0.3339704468756034, 1.045714042671493, 1.3534283884624589}};
+    m.hexes.push_back({0, 1, 2, 3, 4, 5, 6, 7});
+    const std::string path = tempPath("twisted.vtu");
+    writeHexMesh(path, m);
+    RunResult r = runTool("validate '" + path + "' --json");
+    EXPECT_EQ(r.status, 0) << r.out;  // topologically a valid all-hex mesh
+    for (const char* key : {"\"inverted_hexes\": 0", "\"invalid_hexes\": 1", "\"undecided_hexes\": 0",
+                            "\"first_invalid_hex\": 0", "\"certified_valid\": false"})
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " not in\n" << r.out;
+    r = runTool("validate '" + path + "' --certified");
+    EXPECT_EQ(r.status, 3) << r.out;
+    EXPECT_NE(r.out.find("invalid hexes (certified):"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("1 (first: hex 0)"), std::string::npos) << r.out;
+    r = runTool("validate '" + std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex' --certified");
+    EXPECT_EQ(r.status, 2) << r.out;  // a tet map is not a hex mesh
 }
 
 TEST(ValidateCommand, NonHexExitsThree) {

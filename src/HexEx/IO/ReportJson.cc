@@ -157,6 +157,9 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("min_scaled_jacobian", x.quality.min_scaled_jacobian);
             w.num("mean_scaled_jacobian", x.quality.mean_scaled_jacobian);
             w.num("inverted_hexes", x.quality.inverted_hexes);
+            w.num("invalid_hexes", x.quality.invalid_hexes);
+            w.num("undecided_hexes", x.quality.undecided_hexes);
+            w.boolean("certified_valid", x.quality.invalid_hexes == 0 && x.quality.undecided_hexes == 0);
         }));
         if (x.untangle) {
             const UntangleReport& u = *x.untangle;

@@ -10,7 +10,8 @@
 ///  "output":  {"vertices", "hexes", "non_hex_cells", "quads", "boundary_quads", "unconnected_darts"},
 ///  "darts":   {"extracted", "anti", "annihilated_pairs", ...},
 ///  "valid_all_hex": bool,
-///  "quality": {"min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes"},
+///  "quality": {"min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes",
+///              "invalid_hexes", "undecided_hexes", "certified_valid"},
 ///  "timings_s": {"read", "preprocess", "vertices", "darts", "connect", "postprocess",
 ///                "assemble", "write", "total"},
 ///  "threads": N, "version": "x.y.z", ...}
@@ -20,7 +21,10 @@
 /// "repaired_corners" and, when corners were repaired, "repairs" (at most 32 entries
 /// {"tet", "corner", "vertex", "original", "repaired"}); "darts" has "remaining_anti" and
 /// "asymmetric_links"; top level has "validation" (the validator's counts, "valid" and
-/// "summary") and "warnings" (array of strings). Numbers are JSON numbers (doubles in
+/// "summary") and "warnings" (array of strings). In "quality", "inverted_hexes" counts hexes
+/// with a corner Jacobian <= 0 (the 8-corner test), "invalid_hexes" hexes whose Jacobian is
+/// proved <= 0 somewhere inside (classifyHexValidity()), "undecided_hexes" those the exact
+/// test could not decide; "certified_valid" is true when both are 0. Numbers are JSON numbers (doubles in
 /// shortest round-trip form); non-finite numbers are written as null.
 
 #include "../Extraction/ExtractionReport.hh"

@@ -323,7 +323,7 @@ int runExtract(const Args& args) {
         rep.warnings.push_back("dropped " + std::to_string(dropped.first) + " polyhedron faces with fewer than 3 "
                                "vertices and " + std::to_string(dropped.second) + " cells that could not be written");
     }
-    extras.quality = HexEx::computeQuality(hm);
+    extras.quality = HexEx::computeQuality(hm, opt.threads);
     HexEx::UntangleReport untangle_rep;
     if (untangle) {
         const HexEx::TriangleSurface input_boundary = HexEx::tetMeshBoundary(pm.mesh);
@@ -331,7 +331,7 @@ int runExtract(const Args& args) {
         uo.threads = opt.threads;
         untangle_rep = HexEx::untangleHexMesh(hm, uo, &input_boundary);
         extras.untangle = &untangle_rep;
-        extras.quality = HexEx::computeQuality(hm);
+        extras.quality = HexEx::computeQuality(hm, opt.threads);
     }
 
     // Write.
