@@ -40,58 +40,65 @@ double hexScaledJacobian(const std::array<Vec3d, 8>& p) {
     return worst;
 }
 
-std::vector<double> scaledJacobians(const HexMesh& mesh) {
-    std::vector<double> out;
-    out.reserve(mesh.hexes.size());
+namespace {
+
+/// The corners of hex @p h of @p mesh; false if an index is out of range.
+bool hexCorners(const HexMesh& mesh, const std::array<int, 8>& h, std::array<Vec3d, 8>& p) {
     const long nv = static_cast<long>(mesh.vertices.size());
-    for (const auto& h : mesh.hexes) {
-        std::array<Vec3d, 8> p;
-        bool ok = true;
-        for (int i = 0; i < 8; ++i) {
-            if (h[i] < 0 || h[i] >= nv) {
-                ok = false;
-                break;
-            }
-            p[i] = mesh.vertices[h[i]];
-        }
-        out.push_back(ok ? hexScaledJacobian(p) : 0.0);
+    for (int i = 0; i < 8; ++i) {
+        if (h[i] < 0 || h[i] >= nv) return false;
+        p[i] = mesh.vertices[h[i]];
     }
+    return true;
+}
+
+/// Chunks for the per-hex loops: one for small meshes (thread start-up would dominate).
+int hexChunks(const HexMesh& mesh, int threads) {
+    return mesh.hexes.size() < 4096 ? 1 : resolveThreadCount(threads);
+}
+
+} // namespace
+
+std::vector<double> scaledJacobians(const HexMesh& mesh) {
+    std::vector<double> out(mesh.hexes.size(), 0.0);
+    std::array<Vec3d, 8> p;
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
+        if (hexCorners(mesh, mesh.hexes[h], p)) out[h] = hexScaledJacobian(p);
     return out;
 }
 
 std::vector<HexValidity> hexValidities(const HexMesh& mesh, int threads) {
     std::vector<HexValidity> out(mesh.hexes.size(), HexValidity::Invalid);
-    const long nv = static_cast<long>(mesh.vertices.size());
-    const int chunks = mesh.hexes.size() < 4096 ? 1 : resolveThreadCount(threads);
-    parallelChunks(mesh.hexes.size(), chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t h = b; h < e; ++h) {
-            std::array<Vec3d, 8> p;
-            bool ok = true;
-            for (int i = 0; i < 8 && ok; ++i) {
-                const int v = mesh.hexes[h][i];
-                ok = v >= 0 && v < nv;
-                if (ok) p[i] = mesh.vertices[v];
-            }
-            if (ok) out[h] = classifyHexValidity(p);
-        }
+    parallelChunks(mesh.hexes.size(), hexChunks(mesh, threads), [&](int, std::size_t b, std::size_t e) {
+        std::array<Vec3d, 8> p;
+        for (std::size_t h = b; h < e; ++h)
+            if (hexCorners(mesh, mesh.hexes[h], p)) out[h] = classifyHexValidity(p);
     });
     return out;
 }
 
 QualityStats computeQuality(const HexMesh& mesh, int threads) {
     QualityStats s;
-    const std::vector<double> sj = scaledJacobians(mesh);
-    if (sj.empty()) return s;
+    const std::size_t n = mesh.hexes.size();
+    if (n == 0) return s;
+    // One parallel pass for both per-hex figures; the sums run in hex order afterwards, so
+    // the result does not depend on the thread count.
+    std::vector<double> sj(n, 0.0);
+    std::vector<HexValidity> validity(n, HexValidity::Invalid);
+    parallelChunks(n, hexChunks(mesh, threads), [&](int, std::size_t b, std::size_t e) {
+        std::array<Vec3d, 8> p;
+        for (std::size_t h = b; h < e; ++h)
+            if (hexCorners(mesh, mesh.hexes[h], p)) {
+                sj[h] = hexScaledJacobian(p);
+                validity[h] = classifyHexValidity(p);
+            }
+    });
     double sum = 0, mn = sj.front();
-    for (const double x : sj) {
+    for (std::size_t h = 0; h < n; ++h) {
+        const double x = sj[h];
         sum += x;
         mn = std::min(mn, x);
         if (x <= 0) ++s.inverted_hexes;
-    }
-    s.min_scaled_jacobian = mn;
-    s.mean_scaled_jacobian = sum / static_cast<double>(sj.size());
-    const std::vector<HexValidity> validity = hexValidities(mesh, threads);
-    for (std::size_t h = 0; h < validity.size(); ++h) {
         if (validity[h] == HexValidity::Invalid) {
             if (s.invalid_hexes == 0) s.first_invalid_hex = static_cast<long>(h);
             ++s.invalid_hexes;
@@ -99,6 +106,8 @@ QualityStats computeQuality(const HexMesh& mesh, int threads) {
             ++s.undecided_hexes;
         }
     }
+    s.min_scaled_jacobian = mn;
+    s.mean_scaled_jacobian = sum / static_cast<double>(n);
     return s;
 }
 
