@@ -27,5 +27,6 @@ bool isShape2D(const std::string& name);
 int runPerturb2D(const std::string& input, const std::string& output, double a, unsigned seed, bool quiet);
 int runConvert(const Args& args);   ///< hexex convert IN OUT [--encoding E]
 int runUntangle(const Args& args);  ///< hexex untangle HEX -o OUT [--surface-from MAP] [...]
+int runOptimize(const Args& args);  ///< hexex optimize HEX -o OUT [--surface TRI | --surface-from MAP] [...]
 
 } // namespace HexExTool

@@ -21,6 +21,8 @@ const char* kUsage =
     "  perturb IN -a A --seed S -o OUT.hexex     stress-test perturbation of a map\n"
     "  validate MESH [--json]                    check a hex mesh file\n"
     "  untangle HEX -o OUT [--surface-from MAP]  move vertices so that no hex is inverted\n"
+    "  optimize HEX -o OUT [--surface TRI | --surface-from MAP] [--target SJ] [--json]\n"
+    "                                            raise the worst scaled Jacobian, boundary on the surface\n"
     "  quad IN.obj -o OUT [--report R.json] [--threads N] [--epsilon E] [--quiet]\n"
     "                                            2D: extract the quad mesh of a triangle mesh\n"
     "                                            with per-corner vt parameters (.obj, .off, .ply, .vtu)\n"
@@ -44,6 +46,7 @@ int main(int argc, char** argv) {
         if (cmd == "quad") return HexExTool::runQuad(args);
         if (cmd == "convert") return HexExTool::runConvert(args);
         if (cmd == "untangle") return HexExTool::runUntangle(args);
+        if (cmd == "optimize") return HexExTool::runOptimize(args);
     } catch (const std::bad_alloc&) {
         std::cerr << "hexex " << cmd << ": error: out of memory (std::bad_alloc) outside the extraction (reading or "
                      "writing a mesh); free memory or use a smaller input\n";
