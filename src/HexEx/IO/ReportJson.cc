@@ -4,6 +4,7 @@
 #include "ReportJson.hh"
 
 #include "../Core/Version.hh"
+#include "OptimizeReportJson.hh"
 
 #include <charconv>
 #include <cmath>
@@ -187,6 +188,7 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
                 w.raw("message", jsonQuote(u.message));
             }));
         }
+        if (x.optimize) top.raw("optimize", optimizeReportToJson(*x.optimize, 2));
         top.raw("timings_s", object(2, [&](ObjectWriter& w) {
             w.num("read", x.read_s);
             w.num("preprocess", t.preprocess);

@@ -29,6 +29,7 @@
 
 #include "../Extraction/ExtractionReport.hh"
 #include "../Mesh/HexMeshQuality.hh"
+#include "../Untangling/HexOptimizer.hh"
 #include "../Untangling/Untangler.hh"
 
 #include <string>
@@ -44,6 +45,7 @@ struct ReportExtras {
     QualityStats quality;               ///< quality of the output hexes
     std::vector<std::string> warnings;  ///< more warnings (reader, writer), listed after the report's own
     const UntangleReport* untangle = nullptr;  ///< the untangling run, if any (key `untangle`, same names as Python's report)
+    const OptimizeReport* optimize = nullptr;  ///< the optimisation run, if any (key `optimize`, optimizeReportToJson())
 };
 
 /// Renders @p report and @p extras as a JSON object (indented, ending with a newline).

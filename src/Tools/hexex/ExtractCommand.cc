@@ -5,6 +5,7 @@
 
 #include "ArgParser.hh"
 #include "Commands.hh"
+#include "OptimizeOutput.hh"
 #include "UntangleOutput.hh"
 
 #include <HexEx/Core/Error.hh>
@@ -20,6 +21,7 @@
 #include <HexEx/Predicates/ExactPredicates.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
 #include <HexEx/Untangling/TriangleSurface.hh>
+#include <HexEx/Untangling/HexOptimizer.hh>
 #include <HexEx/Untangling/Untangler.hh>
 
 #include <cctype>
@@ -62,6 +64,10 @@ const char* kExtractUsage =
     "  --face-patches P.vtu    write the exact image of every hex face as VTK triangles (cell data face_id)\n"
     "  --untangle              move vertices so that no hex is inverted (folded maps), boundary\n"
     "                          vertices on the input's boundary surface; prints a report\n"
+    "  --optimize              then raise the worst scaled Jacobian (implies --untangle; boundary\n"
+    "                          vertices on the input's boundary surface, its feature curves and\n"
+    "                          corners kept, every hex certified valid); prints a report\n"
+    "  --target SJ             with --optimize: stop once the worst scaled Jacobian reaches SJ (default 0.9)\n"
     "  -q, --quiet             print nothing but errors\n"
     "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
@@ -215,12 +221,14 @@ int runExtract(const Args& args) {
         {"--encoding", true, ""},         {"--max-memory", true, ""},      {"--full-annihilation", false, ""},
         {"--no-annihilation-retries", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
+        {"--optimize", false, ""},        {"--target", true, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
     HexEx::HexArcs arcs;
     HexEx::ExtractionOptions opt;
     HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
-    bool quiet = false, untangle = false;
+    bool quiet = false, untangle = false, optimize = false;
+    HexEx::OptimizeOptions optimize_opt;
     try {
         const ParsedArgs pa = parseArgs(args, spec);
         if (pa.has("--help")) {
@@ -260,7 +268,9 @@ int runExtract(const Args& args) {
             }
         }
         quiet = pa.has("--quiet");
-        untangle = pa.has("--untangle");
+        optimize = pa.has("--optimize");
+        untangle = pa.has("--untangle") || optimize;
+        optimize_opt.target = pa.getDouble("--target", optimize_opt.target, -1, 1);
         surface_path = pa.get("--surface");
         if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))
             throw UsageError("--surface: unknown surface format '" + surface_path + "' (expected .obj, .off, .ply or .stl)");
@@ -325,12 +335,18 @@ int runExtract(const Args& args) {
     }
     extras.quality = HexEx::computeQuality(hm, opt.threads);
     HexEx::UntangleReport untangle_rep;
+    HexEx::OptimizeReport optimize_rep;
     if (untangle) {
         const HexEx::TriangleSurface input_boundary = HexEx::tetMeshBoundary(pm.mesh);
         HexEx::UntangleOptions uo;
         uo.threads = opt.threads;
         untangle_rep = HexEx::untangleHexMesh(hm, uo, &input_boundary);
         extras.untangle = &untangle_rep;
+        if (optimize) {
+            optimize_opt.threads = opt.threads;
+            optimize_rep = HexEx::optimizeHexMesh(hm, optimize_opt, &input_boundary);
+            extras.optimize = &optimize_rep;
+        }
         extras.quality = HexEx::computeQuality(hm, opt.threads);
     }
 
@@ -390,6 +406,7 @@ int runExtract(const Args& args) {
         os << "wrote " << output << ": " << rep.output.hexes << " hexes, " << rep.output.vertices << " vertices, "
            << (rep.valid_all_hex ? "valid all-hex" : "NOT all-hex") << "\n";
         if (untangle) printUntangleReport(os, untangle_rep);
+        if (optimize) printOptimizeReport(os, optimize_rep);
     }
     if (untangle && untangle_rep.inverted_after > 0) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
     if (rep.valid_all_hex) return untangle && untangle_rep.inverted_after > 0 ? 3 : 0;
