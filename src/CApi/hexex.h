@@ -134,8 +134,9 @@ typedef struct hexex_extraction_options {
     int annihilation_retries;    /**< retry the annihilation where it left broken cells (default 1) */
     double max_hexes;            /**< refuse maps with a larger parametric volume (default 4e7) */
     uint64_t max_memory;         /**< memory budget in bytes, 0 = half of the available memory (default 0) */
-    /** Optional rotation index (0..23) per halfface, 4 per tet in corner-opposite order
-     *  (HexEx::ExtractionOptions::given_rotations), or NULL to infer the transitions (default). */
+    /** Optional given transitions, 4 per tet: `given_rotations[4*t+i]` (0..23, 0 = identity)
+     *  maps the chart of tet t into its neighbour's across the face opposite corner i
+     *  (HexEx::ExtractionOptions::given_rotations); NULL (default) infers them from the parameters. */
     const int32_t* given_rotations;
 } hexex_extraction_options;
 
