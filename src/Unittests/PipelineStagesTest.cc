@@ -49,7 +49,7 @@ ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitReq
     ConnectOutput links = connectStage({&pm.mesh, &pre.transitions, &pre.tets, &darts.darts, threads, {}});
     addToReport(links, r.report);
     const AnnihilateOutput survivors =
-        annihilateStage({&links.alpha, &darts.sign, true, darts.anti, oneHeirPerPoint ? &darts.darts : nullptr, 1, {}});
+        annihilateStage({&links.alpha, &darts.sign, true, darts.anti, oneHeirPerPoint ? &darts.darts : nullptr, 1, {}, {}});
     addToReport(survivors, r.report);
     r.heirs = static_cast<long>(survivors.heir.size());
     r.survivors = survivors.n_alive;

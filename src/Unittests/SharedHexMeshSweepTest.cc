@@ -182,6 +182,29 @@ TEST(SharedHexMeshes, AnnihilationRetriesGiveTheSourceMeshWhereTheFirstOrderBrea
     EXPECT_EQ(one.out.vertices, two.out.vertices);
 }
 
+// The fold around a singular edge (pig 0.8, seed 7): every order of the annihilation leaves
+// one 96-dart polyhedron (two cells merged, eq4 24, eq5 32, eq6 96; two of its darts sit on
+// the corner of the wrong cube, a split vertex). The reconnection re-links its darts into
+// the two source hexes: the source mesh back, every vertex in place, for 1 and 2 threads.
+TEST(SharedHexMeshes, FoldAroundASingularEdgeIsReconnectedIntoTheSourceHexes) {
+    const HexMesh pig = sharedHexMesh("sss19_pig_in");
+    if (pig.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes/sss19_pig_in.vtk.xz not available (or no xz)";
+    HexMesh first;
+    for (int threads : {1, 2}) {
+        const FoldedCase c = runFolded(pig, 0.8, 7, threads);
+        expectSourceMeshBack(c, "pig a=0.8 seed=7 threads=" + std::to_string(threads));
+        EXPECT_EQ(c.report.darts.broken_cells_after_annihilation, 1);
+        EXPECT_EQ(c.report.darts.reconnected_cells, 2);
+        EXPECT_EQ(c.report.darts.unreconnected_cells, 0);
+        EXPECT_EQ(c.out.hexes.size(), 13987u);
+        if (threads == 1) first = c.out;
+        else {
+            EXPECT_EQ(first.hexes, c.out.hexes);
+            EXPECT_EQ(first.vertices, c.out.vertices);
+        }
+    }
+}
+
 namespace {
 
 /// Comma-separated numbers (or ranges of integers "1-40") of the environment variable @p var, or @p dflt if unset.

@@ -105,6 +105,8 @@ struct ExtractionReport {
         long cancelled_fold_points = 0;  ///< (tet, grid point) occurrences of cancelled fold points (no darts; ExtractionOptions::cheap_folds)
         int annihilation_order = 0;      ///< order of the annihilation kept: 0 the first pass, 1 phase by phase, 2 descending, k > 2 hashed (ExtractionOptions::annihilation_retries)
         long broken_cells_after_annihilation = 0; ///< hex cells the annihilation left broken, after the retries
+        long reconnected_cells = 0;   ///< hex cells formed by re-linking the darts of broken cells (reconnectBrokenCells())
+        long unreconnected_cells = 0; ///< broken cells whose darts could not be re-linked into hexes (left as they were)
     } darts;  ///< dart statistics
     /// Edge arcs and face patches (only with ExtractionOptions::arcs).
     struct Arcs {

@@ -2,12 +2,14 @@
 
 #include "../Core/Parallel.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
+#include "../Postprocessing/DartReconnection.hh"
 #include "../Postprocessing/FaceConnectionRepair.hh"
 #include "../Postprocessing/FaceRelinking.hh"
 
 #include <algorithm>
 #include <cstring>
 #include <functional>
+#include <string>
 
 namespace HexEx {
 
@@ -27,6 +29,15 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         out.stats = as;
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;
+        // Broken cells that no order of the annihilation avoids: regroup their darts into
+        // cubes and re-link them (only then; every other map keeps its links).
+        if (in.retry.enabled && as.broken_cells_after > 0 && in.darts) {
+            out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components);
+            for (const auto& u : out.reconnection.unresolved)
+                out.warnings.push_back("broken hex cells at dart " + std::to_string(u.first) + " (tet " +
+                                       std::to_string(in.darts->darts[static_cast<std::size_t>(u.first)].tet) +
+                                       ") could not be reconnected: " + u.second);
+        }
     } else {
         out.remaining_anti = in.anti;
     }

@@ -8,7 +8,9 @@
 #include "../Extraction/ConnectionTracing.hh"
 #include "../GMap/GMap.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
+#include "../Postprocessing/DartReconnection.hh"
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +28,9 @@ struct AnnihilateInput {
     const DartSet* darts = nullptr;
     int threads = 1;                                   ///< worker threads for the numbering
     AnnihilationRetry retry;                           ///< local retries of clusters left with broken hex cells
+    /// Per tet, its chart component (tets joined by identity transitions), computed only
+    /// when broken cells are reconnected (reconnectBrokenCells()); empty: each tet alone.
+    std::function<std::vector<int>()> chart_components;
 };
 
 /// Output of annihilateStage().
@@ -40,6 +45,10 @@ struct AnnihilateOutput {
     /// annihilateDarts(); one per grid point and heir if AnnihilateInput::darts is given);
     /// empty without merge.
     std::vector<std::pair<int, int>> heir;
+    /// Broken cells after the annihilation and its retries, re-linked into hexes where
+    /// possible (reconnectBrokenCells(); only with retries and when cells are broken).
+    ReconnectionStats reconnection;
+    std::vector<std::string> warnings;  ///< warnings of this stage (broken cells left unreconnected)
 };
 
 /// Annihilates (if merge) and numbers the surviving darts in order.

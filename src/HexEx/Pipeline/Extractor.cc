@@ -3,6 +3,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Memory.hh"
 #include "../Core/Parallel.hh"
+#include "../Extraction/FoldCancellation.hh"
 #include "AnnihilateStage.hh"
 #include "ArcStage.hh"
 #include "AssembleStage.hh"
@@ -91,8 +92,9 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.connect = clock.lap();
 
     enter("postprocess");
-    AnnihilateInput annihilateIn{&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads, {}};
+    AnnihilateInput annihilateIn{&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads, {}, {}};
     annihilateIn.retry.enabled = opt.annihilation_retries && !implicit;
+    annihilateIn.chart_components = [&]() { return identityChartComponents(mesh, pre.transitions); };
     AnnihilateOutput survivors = annihilateStage(annihilateIn);
     addToReport(survivors, rep);
     ImplicitCells cells;

@@ -27,6 +27,9 @@ void addToReport(const AnnihilateOutput& out, ExtractionReport& rep) {
     rep.darts.remaining_anti = out.remaining_anti;
     rep.darts.annihilation_order = out.stats.reordered;
     rep.darts.broken_cells_after_annihilation = out.stats.broken_cells_after;
+    rep.darts.reconnected_cells = out.reconnection.reconnected_cells;
+    rep.darts.unreconnected_cells = out.reconnection.unresolved_cells;
+    appendWarnings(out.warnings, rep);
 }
 
 void addToReport(const MapOutput& out, ExtractionReport& rep) {
