@@ -1,5 +1,6 @@
 #pragma once
 /// @file HexOptimizer.hh
+/// @ingroup quality
 /// Quality optimisation of valid hex meshes: raises the minimum scaled Jacobian (SJ) of the
 /// whole mesh while every hex stays certified valid (classifyHexValidity()), boundary
 /// vertices stay on a given surface and its sharp features are kept.

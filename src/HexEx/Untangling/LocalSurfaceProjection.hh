@@ -1,5 +1,6 @@
 #pragma once
 /// @file LocalSurfaceProjection.hh
+/// @ingroup quality
 /// Local closest-point queries on a TriangleSurface, split into patches by its sharp feature
 /// curves: a point is projected onto the patch it belongs to, and a feature vertex onto its
 /// own curve, by walking from the triangle (segment) it was last projected to. A point

@@ -1,5 +1,6 @@
 #pragma once
 /// @file TriangleSurfaceReader.hh
+/// @ingroup quality
 /// Reading a triangle surface (the surface an optimised hex mesh's boundary must stay on)
 /// from .obj, .off, .ply or .stl files through OpenMesh's readers.
 
