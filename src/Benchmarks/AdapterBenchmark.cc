@@ -6,10 +6,16 @@
 ///   adapter_benchmark CASE PATH
 ///
 /// CASE: cube40 (generateCube(80, 40): 3.07M tets, 64,000 hexes) or cylinder6
-/// (generateCylinder(6, 64, 64, 1, 1): 36 tets, 1,572,864 hexes); cube8/cylinder6s are
-/// small versions. PATH: builtin, arrays (TetArraysView -> HexArrays), lcc (CGAL
-/// Linear_cell_complex both ways) or, when built with OpenVolumeMesh, ovm (tetrahedral
-/// kernel with the halfface map -> hexahedral kernel). Run one measurement per process:
+/// (generateCylinder(6, 64, 64, 1, 1): 36 tets, 1,572,864 hexes); cube20 (generateCube(40,
+/// 20): 384,000 tets, 8,000 hexes) and cylinder6m (generateCylinder(6, 32, 32, 1, 1):
+/// 196,608 hexes) are moderate, cube8/cylinder6s small versions. PATH: builtin, arrays
+/// (TetArraysView -> HexArrays), lcc (CGAL Linear_cell_complex both ways through the view
+/// LccTetMesh and LccHexOutput), lcc-native (the one-call overload extractHexMesh(tetLcc,
+/// hexLcc): read straight into the built-in kernel, copy freed before the writing) or, when
+/// built with OpenVolumeMesh, ovm (tetrahedral kernel with the halfface map -> hexahedral
+/// kernel, through OvmTetMesh and OvmHexOutput) and ovm-native (the one-call overload
+/// extractHexMesh(tetMesh, halffaceProperty, hexMesh), timed stage by stage through the
+/// same detail functions it calls). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
 /// `key=value` pairs; building the input in the user's structure is not timed. view_s:
 /// the adapter's scan of the input; copy_s: toParametrizedTetMesh() including the
@@ -92,13 +98,36 @@ Timings timeThroughTraits(MakeView makeView, Output& out) {
     return r;
 }
 
+/// The stages of a one-call overload: @p read copies the user's mesh into the built-in
+/// kernel (adjacency included), the extraction runs, the copy is freed, and the result is
+/// written through @p out.
+template <class Read, class Output>
+Timings timeOneCall(Read read, Output out) {
+    Timings r;
+    const auto t0 = std::chrono::steady_clock::now();
+    HexEx::HexMesh hm;
+    {
+        const HexEx::ParametrizedTetMesh copyPm = read();
+        r.copy = since(t0);
+        const auto t2 = std::chrono::steady_clock::now();
+        HexEx::extractHexMesh(copyPm, hm);
+        r.extract = since(t2);
+    }
+    const auto t3 = std::chrono::steady_clock::now();
+    HexEx::fromHexMesh(hm, out);
+    r.write = since(t3);
+    r.total = since(t0);
+    return r;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     if (argc != 3) {
-        std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube8|cylinder6s builtin|arrays|lcc"
+        std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube20|cylinder6m|cube8|cylinder6s "
+                     "builtin|arrays|lcc|lcc-native"
 #ifdef HEXEX_BENCH_OVM
-                     "|ovm"
+                     "|ovm|ovm-native"
 #endif
                      "\n";
         return 2;
@@ -109,6 +138,8 @@ int main(int argc, char** argv) {
     else if (c == "cube8") pm = HexEx::generateCube(16, 8);
     else if (c == "cylinder6") pm = HexEx::generateCylinder(6, 64, 64, 1, 1);
     else if (c == "cylinder6s") pm = HexEx::generateCylinder(6, 8, 8, 1, 1);
+    else if (c == "cube20") pm = HexEx::generateCube(40, 20);
+    else if (c == "cylinder6m") pm = HexEx::generateCylinder(6, 32, 32, 1, 1);
     else {
         std::cerr << "unknown case " << c << "\n";
         return 2;
@@ -145,6 +176,14 @@ int main(int argc, char** argv) {
         HexEx::LccHexOutput<HexLcc> out(outLcc);
         r = timeThroughTraits([&] { return HexEx::LccTetMesh(lcc); }, out);
         hexes = out.cellDarts().size();
+    } else if (path == "lcc-native") {
+        TetLcc lcc;
+        HexExTestSupport::buildTetLcc(pm, lcc);
+        pm = HexEx::ParametrizedTetMesh();
+        HexLcc outLcc;
+        r = timeOneCall([&] { return HexEx::detail::lccToParametrizedTetMesh(lcc, HexEx::LccDartInfoParameter{}, 0); },
+                        HexEx::LccHexOutput<HexLcc>(outLcc));
+        hexes = outLcc.one_dart_per_cell<3>().size();
 #ifdef HEXEX_BENCH_OVM
     } else if (path == "ovm") {
         OvmTets tm;
@@ -154,6 +193,22 @@ int main(int argc, char** argv) {
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
         r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
         hexes = out.cells().size();
+    } else if (path == "ovm-native") {
+        OvmTets tm;
+        HexExTestSupport::buildOvmTets(pm, tm);
+        pm = HexEx::ParametrizedTetMesh();
+        const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
+        OvmHexes hexMesh;
+        r = timeOneCall(
+            [&] {
+                return HexEx::detail::ovmToParametrizedTetMesh(
+                    tm,
+                    [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
+                        const OpenVolumeMesh::VertexHandle&) -> const OpenVolumeMesh::Geometry::Vec3d& { return prop[hf]; },
+                    0);
+            },
+            HexEx::OvmHexOutput<OvmHexes>(hexMesh));
+        hexes = hexMesh.n_cells();
 #endif
     } else {
         std::cerr << "unknown path " << path << "\n";

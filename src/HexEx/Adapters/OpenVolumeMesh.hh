@@ -21,6 +21,8 @@
 #include "../Core/Error.hh"
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
+#include "../Preprocessing/SingularityGraph.hh"
+#include "../Preprocessing/Transitions.hh"
 #include "OvmBulkTables.hh"
 
 #include <OpenVolumeMesh/Core/Handles.hh>
@@ -70,6 +72,26 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
 
 } // namespace detail
 
+/// What the one-call OpenVolumeMesh overloads of extractHexMesh() write back into
+/// properties of the user's tet mesh (each optional: null writes nothing). The properties
+/// are the caller's (e.g. `tetMesh.request_halfface_property<int>("rotation")`) and must
+/// belong to the tet mesh passed to the call.
+///
+/// The transitions are those HexEx infers from the corner parameters as given
+/// (computeTransitions(), with ExtractionOptions::given_rotations when set), the singular
+/// edges those of singularityGraph().
+struct OvmTetResults {
+    /// Per halfface `h` of cell `c`: the rotation index (0..23, see Rotation) of the
+    /// transition from the chart of `c` into the chart of the cell across `h`; 0 (the
+    /// identity) on the boundary.
+    OpenVolumeMesh::HalfFacePropertyT<int>* rotation = nullptr;
+    /// Per halfface: the integer translation `t` of that transition (`u' = R u + t`).
+    OpenVolumeMesh::HalfFacePropertyT<OpenVolumeMesh::Geometry::Vec3i>* translation = nullptr;
+    /// Per edge: the valence of a singular edge (quarter turns of parametric angle around
+    /// it; 4 would be regular), 0 on every other edge.
+    OpenVolumeMesh::EdgePropertyT<int>* singular_valence = nullptr;
+};
+
 /// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
 /// hexahedral or polyhedral mesh @p hexMesh, the map given as in the reference HexEx
 /// implementation: per cell, a map from each of its vertices to its parameter in the cell's
@@ -80,7 +102,8 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
 /// the built-in kernel (corner order and orientation as OvmTetMesh reads it), extracted, and
 /// the result written in bulk (see OvmHexOutput; @p hexMesh is cleared first; a hexahedral
 /// kernel skips non-hex cells, which the report still counts). Vertex and cell indices are
-/// the handles' indices: the mesh must not contain deleted entities.
+/// the handles' indices: the mesh must not contain deleted entities. @p results names
+/// properties of @p tetMesh that receive the transitions and singular edges (OvmTetResults).
 ///
 /// Throws InputError if a cell is not a tetrahedron, lacks the parameter of one of its
 /// vertices, or the input is otherwise unusable (see the built-in extractHexMesh()).
@@ -88,7 +111,8 @@ template <class TetMeshT, class VecT, class HexMeshT,
           std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options = {});
+                                HexMeshT& hexMesh, const ExtractionOptions& options = {},
+                                const OvmTetResults& results = {});
 
 /// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
 /// hexahedral or polyhedral mesh @p hexMesh, the map given as in HexHex: the value on a
@@ -100,7 +124,8 @@ ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
 template <class TetMeshT, class VecT, class HexMeshT,
           std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options = {});
+                                HexMeshT& hexMesh, const ExtractionOptions& options = {},
+                                const OvmTetResults& results = {});
 
 /// Input view of an OpenVolumeMesh tet mesh (any kernel with `Vec3d` geometry whose cells
 /// are tetrahedra: TetrahedralMeshTopologyKernel or the polyhedral TopologyKernel) with its
@@ -232,6 +257,12 @@ public:
 
     /// Writes into @p mesh (cleared by the first clear()).
     explicit OvmHexOutput(Mesh& mesh, bool topologyCheck = false) : mesh_(&mesh), check_(topologyCheck) {}
+    /// Calls finish().
+    ~OvmHexOutput() { finish(); }
+    /// Copying would finish the mesh twice.
+    OvmHexOutput(const OvmHexOutput&) = delete;
+    /// Copying would finish the mesh twice.
+    OvmHexOutput& operator=(const OvmHexOutput&) = delete;
 
     /// The mesh written into.
     Mesh& mesh() { return *mesh_; }
@@ -246,8 +277,7 @@ public:
         mesh_->clear();
         cells_.clear();
         skipped_ = 0;
-        edges_.clear();
-        faces_.clear();
+        index_.clear();
         bigFaces_.clear();
     }
     /// Makes room for @p nVertices vertices and @p nHexes hexahedra (and their edges and
@@ -259,9 +289,25 @@ public:
         mesh_->reserve_cells(nHexes);
         cells_.reserve(nHexes);
         if (!check_) {
-            edges_.reserve(nVertices + 2 * nHexes);
-            faces_.reserve(3 * nHexes + nHexes / 2);
+            index_.reserve(nVertices, nVertices + 2 * nHexes, 3 * nHexes + nHexes / 2);
+            // The bulk writer never asks the mesh for incidences: OpenVolumeMesh builds
+            // them once, in finish(), instead of cell by cell.
+            if (mesh_->has_full_bottom_up_incidences()) {
+                mesh_->enable_bottom_up_incidences(false);
+                incidencesOff_ = true;
+            }
         }
+    }
+    /// Ends the writing: turns OpenVolumeMesh's bottom-up incidences back on (they are
+    /// built in one pass) if reserve() turned them off, and frees the lookup tables.
+    /// Called by fromHexMesh() after the last cell and by the destructor.
+    void finish() {
+        if (incidencesOff_) {
+            mesh_->enable_bottom_up_incidences(true);
+            incidencesOff_ = false;
+        }
+        index_.clear();
+        bigFaces_.clear();
     }
     /// Adds a vertex and returns its index.
     std::size_t addVertex(const Vec3d& p) {
@@ -330,11 +376,13 @@ private:
     }
     /// The halfedge from vertex @p a to @p b, its edge created on first use.
     OpenVolumeMesh::HalfEdgeHandle bulkHalfedge(std::size_t a, std::size_t b) {
-        const std::size_t lo = std::min(a, b), hi = std::max(a, b);
-        const auto [e, inserted] = edges_.insert((std::uint64_t(lo) << 32) | hi, 0, mesh_->n_edges());
-        OpenVolumeMesh::EdgeHandle eh(static_cast<int>(e));
-        if (inserted) eh = mesh_->add_edge(vh(lo), vh(hi), /*allowDuplicates=*/true);
-        return OpenVolumeMesh::HalfEdgeHandle(2 * eh.idx() + (a == lo ? 0 : 1));
+        const std::uint32_t lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
+        std::uint32_t e = index_.findEdge(lo, hi);
+        if (e == detail::OvmBulkIndex::kNone) {
+            e = static_cast<std::uint32_t>(mesh_->add_edge(vh(lo), vh(hi), /*allowDuplicates=*/true).idx());
+            index_.addEdge(lo, hi, e);
+        }
+        return OpenVolumeMesh::HalfEdgeHandle(static_cast<int>(2 * e + (a == lo ? 0 : 1)));
     }
     /// The halfface with the vertex loop @p loop (@p n vertices, outward for the cell being
     /// added), its face created on first use. Faces are keyed by their sorted vertices; the
@@ -343,38 +391,43 @@ private:
         std::size_t first = 0;
         for (std::size_t k = 1; k < n; ++k)
             if (loop[k] < loop[first]) first = k;
-        const std::uint64_t succ = loop[(first + 1) % n];
-        const std::uint64_t value = (std::uint64_t(mesh_->n_faces()) << 32) | succ;
-        std::pair<std::uint64_t, bool> found;
+        const std::uint32_t succ = static_cast<std::uint32_t>(loop[(first + 1) % n]);
+        const std::uint32_t next = static_cast<std::uint32_t>(mesh_->n_faces());
+        std::uint32_t key[4] = {detail::OvmBulkIndex::kNone, detail::OvmBulkIndex::kNone, detail::OvmBulkIndex::kNone,
+                                detail::OvmBulkIndex::kNone};
+        const std::uint32_t* found = nullptr;
+        std::uint32_t stored[2];
         if (n <= 4) {
-            std::uint64_t s[4] = {~std::uint64_t(0) >> 32, ~std::uint64_t(0) >> 32, ~std::uint64_t(0) >> 32,
-                                  ~std::uint64_t(0) >> 32};
-            for (std::size_t k = 0; k < n; ++k) s[k] = loop[k];
-            std::sort(s, s + 4);
-            found = faces_.insert((s[0] << 32) | s[1], (s[2] << 32) | s[3], value);
+            for (std::size_t k = 0; k < n; ++k) key[k] = static_cast<std::uint32_t>(loop[k]);
+            std::sort(key, key + 4);
+            found = index_.findFace(key);
         } else {
-            std::vector<std::size_t> key(loop, loop + n);
-            std::sort(key.begin(), key.end());
-            const auto [it, inserted] = bigFaces_.emplace(std::move(key), value);
-            found = {it->second, inserted};
+            std::vector<std::size_t> big(loop, loop + n);
+            std::sort(big.begin(), big.end());
+            const auto [it, inserted] = bigFaces_.emplace(std::move(big), (std::uint64_t(next) << 32) | succ);
+            stored[0] = static_cast<std::uint32_t>(it->second >> 32);
+            stored[1] = static_cast<std::uint32_t>(it->second & 0xFFFFFFFFu);
+            if (!inserted) found = stored;
         }
-        if (!found.second) {
-            const OpenVolumeMesh::FaceHandle fh(static_cast<int>(found.first >> 32));
-            return mesh_->halfface_handle(fh, (found.first & 0xFFFFFFFFu) == succ ? 0 : 1);
+        if (found) {
+            const OpenVolumeMesh::FaceHandle fh(static_cast<int>(found[0]));
+            return mesh_->halfface_handle(fh, found[1] == succ ? 0 : 1);
         }
         hes_.clear();
         for (std::size_t k = 0; k < n; ++k) hes_.push_back(bulkHalfedge(loop[k], loop[(k + 1) % n]));
         const OpenVolumeMesh::FaceHandle fh = mesh_->add_face(hes_, false);
-        if (!fh.is_valid()) throw InputError("OpenVolumeMesh rejected a face of output cell " + std::to_string(cells_.size()));
+        if (!fh.is_valid() || static_cast<std::uint32_t>(fh.idx()) != next)
+            throw InputError("OpenVolumeMesh rejected a face of output cell " + std::to_string(cells_.size()));
+        if (n <= 4) index_.addFace(key, next, succ);
         return mesh_->halfface_handle(fh, 0);
     }
 
     Mesh* mesh_;
     bool check_;
+    bool incidencesOff_ = false;  // reserve() turned the mesh's bottom-up incidences off
     std::vector<OpenVolumeMesh::CellHandle> cells_;
     std::size_t skipped_ = 0;
-    detail::OvmKeyTable edges_;                                   // (lo, hi) -> edge index
-    detail::OvmKeyTable faces_;                                   // sorted vertices -> face index, successor
+    detail::OvmBulkIndex index_;                                  // edges and faces made so far
     std::map<std::vector<std::size_t>, std::uint64_t> bigFaces_;  // faces of more than 4 vertices
     std::vector<OpenVolumeMesh::HalfFaceHandle> hfs_;             // scratch: halffaces of a cell
     std::vector<OpenVolumeMesh::HalfEdgeHandle> hes_;             // scratch: halfedges of a face
@@ -434,6 +487,8 @@ struct HexMeshOutputTraits<OvmHexOutput<Mesh>> {
     static void reserve(OvmHexOutput<Mesh>& m, std::size_t nVertices, std::size_t nHexes) {
         m.reserve(nVertices, nHexes);
     }
+    /// Ends the writing (see OvmHexOutput::finish()).
+    static void finish(OvmHexOutput<Mesh>& m) { m.finish(); }
     /// Adds a vertex.
     static std::size_t add_vertex(OvmHexOutput<Mesh>& m, const Vec3d& p) { return m.addVertex(p); }
     /// Adds a hexahedron (VTK order).

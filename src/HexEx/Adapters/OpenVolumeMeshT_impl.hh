@@ -6,6 +6,7 @@
 /// and the result written into the user's mesh in bulk.
 
 #include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
 
@@ -104,15 +105,55 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     return pm;
 }
 
-/// Body of both one-call overloads: read, extract, free the copy, write in bulk.
+/// Writes the transitions and singular edges of @p pm (read from @p tetMesh by
+/// ovmToParametrizedTetMesh()) into the properties named by @p results.
+template <class TetMeshT>
+void writeOvmTetResults(const TetMeshT& tetMesh, const ParametrizedTetMesh& pm, const ExtractionOptions& options,
+                        const OvmTetResults& results) {
+    if (!results.rotation && !results.translation && !results.singular_valence) return;
+    const int threads = resolveThreadCount(options.threads);
+    const Transitions tr = computeTransitions(pm.mesh, pm.params, options.given_rotations, threads);
+    if (results.rotation || results.translation) {
+        std::array<OpenVolumeMesh::VertexHandle, 4> cv;
+        std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
+        for (std::size_t c = 0; c < pm.mesh.n_cells(); ++c) {
+            ovmTetCorners(tetMesh, c, cv, opposite);
+            for (int i = 0; i < 4; ++i) {
+                // Corner i of the built-in tet is the OpenVolumeMesh corner with its vertex
+                // (corners 1 and 2 were swapped if the mesh had outward halffaces).
+                const int v = pm.mesh.cell_vertex(CellHandle(static_cast<int>(c)), i).idx();
+                std::size_t k = 0;
+                while (cv[k].idx() != v) ++k;
+                const GridTransform g = tr.halfface[4 * c + static_cast<std::size_t>(i)];
+                if (results.rotation) (*results.rotation)[opposite[k]] = g.R.index();
+                if (results.translation)
+                    (*results.translation)[opposite[k]] = OpenVolumeMesh::Geometry::Vec3i(g.t[0], g.t[1], g.t[2]);
+            }
+        }
+    }
+    if (results.singular_valence) {
+        for (std::size_t e = 0; e < tetMesh.n_edges(); ++e) (*results.singular_valence)[OpenVolumeMesh::EdgeHandle(static_cast<int>(e))] = 0;
+        const Singularities s = findSingularities(pm.mesh, pm.params, tr, threads);
+        for (const SingularEdge& e : s.edges) {
+            const auto& ev = pm.mesh.edge_vertices(e.edge);
+            const OpenVolumeMesh::HalfEdgeHandle he =
+                tetMesh.find_halfedge(OpenVolumeMesh::VertexHandle(ev[0].idx()), OpenVolumeMesh::VertexHandle(ev[1].idx()));
+            if (he.is_valid()) (*results.singular_valence)[he.edge_handle()] = e.valence;
+        }
+    }
+}
+
+/// Body of both one-call overloads: read, extract (and write @p results), free the copy,
+/// write the hex mesh in bulk.
 template <class TetMeshT, class HexMeshT, class ParamOf>
 ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT& hexMesh,
-                            const ExtractionOptions& options) {
+                            const ExtractionOptions& options, const OvmTetResults& results) {
     HexMesh hm;
     ExtractionReport report;
     {
         const ParametrizedTetMesh pm = ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads);
         report = extractHexMesh(pm, hm, options);
+        writeOvmTetResults(tetMesh, pm, options, results);
     }  // the copy of the input is freed before the output is written
     OvmHexOutput<HexMeshT> out(hexMesh);
     fromHexMesh(hm, out);
@@ -124,7 +165,7 @@ ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetResults& results) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle&, const OpenVolumeMesh::CellHandle& ch,
@@ -136,17 +177,17 @@ ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                  parameters.name() + "' has no parameter for vertex " + std::to_string(v.idx()));
             return it->second;
         },
-        hexMesh, options);
+        hexMesh, options, results);
 }
 
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetResults& results) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
             const OpenVolumeMesh::VertexHandle&) -> const VecT& { return parameters[hf]; },
-        hexMesh, options);
+        hexMesh, options, results);
 }
 
 } // namespace HexEx

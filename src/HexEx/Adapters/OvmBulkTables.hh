@@ -1,84 +1,94 @@
 #pragma once
 /// @file OvmBulkTables.hh
 /// @ingroup adapters
-/// Lookup tables of the bulk OpenVolumeMesh writer (OvmHexOutput): an open-addressing hash
-/// table from a 128-bit key (an edge's or a face's sorted vertex indices) to a 64-bit value,
-/// so that every edge and face of the output is created once without asking the mesh.
-/// Internal to the OpenVolumeMesh adapter; needs no OpenVolumeMesh header.
+/// Lookup tables of the bulk OpenVolumeMesh writer (OvmHexOutput): the edges and the faces
+/// of at most four vertices already created, found through lists per vertex (edges from
+/// their smaller vertex, faces from their smallest), so that every edge and face of the
+/// output is created once without asking the mesh. About 12 bytes per edge, 24 per face and
+/// 8 per vertex. Internal to the OpenVolumeMesh adapter; needs no OpenVolumeMesh header.
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
-#include <utility>
 #include <vector>
 
 namespace HexEx {
 namespace detail {
 
-/// Open-addressing (linear probing) hash table from a key of two 64-bit words to a 64-bit
-/// value. The key word `a == ~0` is reserved (marks a free slot); callers pack vertex
-/// indices below 2^31, which never produce it.
-class OvmKeyTable {
+/// Edges (vertex pairs) and faces (up to four vertices, with an orientation tag) of the
+/// mesh being written, each mapped to the index the mesh gave it.
+class OvmBulkIndex {
 public:
-    /// Makes room for @p n entries without rehashing.
-    void reserve(std::size_t n) {
-        std::size_t cap = 16;
-        while (cap < 2 * n) cap *= 2;
-        if (cap > slots_.size()) rehash(cap);
+    /// "Not found".
+    static constexpr std::uint32_t kNone = ~std::uint32_t(0);
+
+    /// Makes room for @p nVertices vertices, @p nEdges edges and @p nFaces faces.
+    void reserve(std::size_t nVertices, std::size_t nEdges, std::size_t nFaces) {
+        grow(nVertices);
+        edges_.reserve(nEdges);
+        faces_.reserve(nFaces);
     }
-    /// Removes all entries and frees the table.
+    /// Removes everything and frees the memory.
     void clear() {
-        std::vector<Slot>().swap(slots_);
-        size_ = 0;
+        std::vector<std::uint32_t>().swap(edgeHead_);
+        std::vector<std::uint32_t>().swap(faceHead_);
+        std::vector<Edge>().swap(edges_);
+        std::vector<Face>().swap(faces_);
     }
-    /// Number of entries.
-    std::size_t size() const { return size_; }
-    /// Looks up (@p a, @p b); if absent inserts it with @p value. Returns the stored value
-    /// and whether it was inserted now.
-    std::pair<std::uint64_t, bool> insert(std::uint64_t a, std::uint64_t b, std::uint64_t value) {
-        if (2 * (size_ + 1) > slots_.size()) rehash(slots_.empty() ? 16 : 2 * slots_.size());
-        const std::size_t mask = slots_.size() - 1;
-        for (std::size_t i = hash(a, b) & mask;; i = (i + 1) & mask) {
-            Slot& s = slots_[i];
-            if (s.a == kFree) {
-                s = Slot{a, b, value};
-                ++size_;
-                return {value, true};
-            }
-            if (s.a == a && s.b == b) return {s.value, false};
+    /// The index of edge (@p lo, @p hi), lo < hi, or kNone.
+    std::uint32_t findEdge(std::uint32_t lo, std::uint32_t hi) const {
+        if (lo >= edgeHead_.size()) return kNone;
+        for (std::uint32_t e = edgeHead_[lo]; e != kNone; e = edges_[e].next)
+            if (edges_[e].hi == hi) return edges_[e].index;
+        return kNone;
+    }
+    /// Records edge (@p lo, @p hi) with the mesh's @p index.
+    void addEdge(std::uint32_t lo, std::uint32_t hi, std::uint32_t index) {
+        grow(std::size_t(lo) + 1);
+        edges_.push_back(Edge{hi, edgeHead_[lo], index});
+        edgeHead_[lo] = static_cast<std::uint32_t>(edges_.size() - 1);
+    }
+    /// The face with the ascending vertices @p v (v[0] smallest; unused entries kNone), or
+    /// nullptr: its index and orientation tag as stored by addFace().
+    const std::uint32_t* findFace(const std::uint32_t v[4]) const {
+        if (v[0] >= faceHead_.size()) return nullptr;
+        for (std::uint32_t f = faceHead_[v[0]]; f != kNone; f = faces_[f].next) {
+            const Face& r = faces_[f];
+            if (r.rest[0] == v[1] && r.rest[1] == v[2] && r.rest[2] == v[3]) return r.index;
         }
+        return nullptr;
+    }
+    /// Records the face with the ascending vertices @p v, its mesh @p index and @p tag.
+    void addFace(const std::uint32_t v[4], std::uint32_t index, std::uint32_t tag) {
+        grow(std::size_t(v[0]) + 1);
+        faces_.push_back(Face{{v[1], v[2], v[3]}, faceHead_[v[0]], {index, tag}});
+        faceHead_[v[0]] = static_cast<std::uint32_t>(faces_.size() - 1);
     }
 
 private:
-    /// One slot: key words and value.
-    struct Slot {
-        std::uint64_t a = kFree;  ///< first key word (kFree: empty slot)
-        std::uint64_t b = 0;      ///< second key word
-        std::uint64_t value = 0;  ///< stored value
+    /// An edge in the list of its smaller vertex.
+    struct Edge {
+        std::uint32_t hi;     ///< larger vertex
+        std::uint32_t next;   ///< next edge of the same smaller vertex, or kNone
+        std::uint32_t index;  ///< the mesh's edge index
     };
-    static constexpr std::uint64_t kFree = ~std::uint64_t(0);
-
-    /// Mixes the key words (splitmix64 finalizer).
-    static std::size_t hash(std::uint64_t a, std::uint64_t b) {
-        std::uint64_t h = a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull);
-        h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-        h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-        return static_cast<std::size_t>(h ^ (h >> 31));
-    }
-    /// Moves all entries into a table of @p cap slots (a power of two).
-    void rehash(std::size_t cap) {
-        std::vector<Slot> old(cap);
-        old.swap(slots_);
-        const std::size_t mask = cap - 1;
-        for (const Slot& s : old) {
-            if (s.a == kFree) continue;
-            std::size_t i = hash(s.a, s.b) & mask;
-            while (slots_[i].a != kFree) i = (i + 1) & mask;
-            slots_[i] = s;
+    /// A face in the list of its smallest vertex.
+    struct Face {
+        std::uint32_t rest[3];  ///< the other vertices, ascending (kNone-padded)
+        std::uint32_t next;     ///< next face of the same smallest vertex, or kNone
+        std::uint32_t index[2];  ///< the mesh's face index, then the orientation tag
+    };
+    /// Makes the per-vertex heads cover @p n vertices.
+    void grow(std::size_t n) {
+        if (n > edgeHead_.size()) {
+            edgeHead_.resize(std::max(n, 2 * edgeHead_.size()), kNone);
+            faceHead_.resize(edgeHead_.size(), kNone);
         }
     }
 
-    std::vector<Slot> slots_;
-    std::size_t size_ = 0;
+    std::vector<std::uint32_t> edgeHead_, faceHead_;  // per vertex: first edge / face, or kNone
+    std::vector<Edge> edges_;
+    std::vector<Face> faces_;
 };
 
 } // namespace detail

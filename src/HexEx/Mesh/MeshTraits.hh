@@ -62,7 +62,8 @@ struct TetMeshTraits;
 ///
 /// Optionally, `static void reserve(Mesh&, std::size_t n_vertices, std::size_t n_hexes)`:
 /// called once after clear() with the numbers of vertices and hexahedra about to be added,
-/// so that the kernel can allocate in bulk.
+/// so that the kernel can allocate in bulk; and `static void finish(Mesh&)`: called once
+/// after the last cell.
 ///
 /// The ids passed to add_hex() and add_polyhedron() are those returned by add_vertex().
 /// VTK order: bottom quad 0-1-2-3 counter-clockwise seen from the top quad 4-5-6-7,
@@ -192,6 +193,13 @@ struct HasOutputReserve<M, std::void_t<decltype(HexMeshOutputTraits<M>::reserve(
                                                                                  std::size_t()))>>
     : std::true_type {};
 
+/// True if HexMeshOutputTraits<M> has the optional finish() (detection fallback).
+template <class M, class = void>
+struct HasOutputFinish : std::false_type {};
+/// True if HexMeshOutputTraits<M> has the optional finish(M&).
+template <class M>
+struct HasOutputFinish<M, std::void_t<decltype(HexMeshOutputTraits<M>::finish(std::declval<M&>()))>> : std::true_type {};
+
 /// A vertex index as text; values that wrapped around from a negative signed index
 /// (above PTRDIFF_MAX) are printed as that negative number.
 inline std::string indexToString(std::size_t v) {
@@ -254,7 +262,7 @@ ParametrizedTetMesh toParametrizedTetMesh(const M& in) {
 
 /// Writes @p hm into any mesh with HexMeshOutputTraits: clears @p out, adds all vertices,
 /// then all hexahedra, then all polyhedra (vertex ids mapped through add_vertex()). Calls the
-/// traits' optional reserve() after clear().
+/// traits' optional reserve() after clear() and finish() after the last cell.
 template <class M>
 void fromHexMesh(const HexMesh& hm, M& out) {
     static_assert(hasHexMeshOutputTraits<M>, "HexEx::HexMeshOutputTraits<M> is not specialized for this mesh type");
@@ -278,6 +286,7 @@ void fromHexMesh(const HexMesh& hm, M& out) {
             for (int v : p.faces[f]) faces[f].push_back(id[static_cast<std::size_t>(v)]);
         T::add_polyhedron(out, faces);
     }
+    if constexpr (detail::HasOutputFinish<M>::value) T::finish(out);
 }
 
 } // namespace HexEx

@@ -19,6 +19,7 @@
 #include <HexEx/Mesh/BoundarySurface.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Predicates/ExactPredicates.hh>
+#include <HexEx/Preprocessing/SingularityGraph.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
 #include <HexEx/Untangling/TriangleSurface.hh>
 #include <HexEx/Untangling/HexOptimizer.hh>
@@ -155,27 +156,9 @@ void writeParamMeshVtk(const std::string& path, const HexEx::ParametrizedTetMesh
 
 /// Singular edges of the input (transitions inferred from the parameters), in 3D.
 void writeSingularities(const std::string& path, const HexEx::ParametrizedTetMesh& pm, long* n_edges) {
-    const HexEx::Transitions tr = HexEx::computeTransitions(pm.mesh, pm.params);
-    const HexEx::Singularities s = HexEx::findSingularities(pm.mesh, pm.params, tr);
-    std::map<int, int> index;  // input vertex -> point index
-    std::vector<HexEx::Vec3d> points;
-    std::vector<std::array<int, 2>> segments;
-    std::vector<int> valences;
-    auto point = [&](HexEx::VertexHandle v) {
-        const auto it = index.find(v.idx());
-        if (it != index.end()) return it->second;
-        const int k = static_cast<int>(points.size());
-        index.emplace(v.idx(), k);
-        points.push_back(pm.mesh.position(v));
-        return k;
-    };
-    for (const auto& e : s.edges) {
-        const auto ev = pm.mesh.edge_vertices(e.edge);
-        segments.push_back({point(ev[0]), point(ev[1])});
-        valences.push_back(e.valence);
-    }
-    HexEx::writeSingularEdgesVtk(path, points, segments, valences);
-    *n_edges = static_cast<long>(segments.size());
+    const HexEx::SingularityGraph g = HexEx::singularityGraph(pm);
+    HexEx::writeSingularEdgesVtk(path, g.points, g.segments, g.valences);
+    *n_edges = static_cast<long>(g.segments.size());
 }
 
 /// Drops what no writer can store (polyhedron faces with fewer than three vertices, cells

@@ -3,11 +3,14 @@
 // implementation's convention) or as a halfface property (HexHex's), the result written
 // into an OpenVolumeMesh mesh in bulk. Both give bit for bit the hexes of the built-in path.
 
+#include "../../TestSupport/OvmTetFixtures.hh"
 #include "../TestMeshChecks.hh"
 
 #include <HexEx/Adapters/OpenVolumeMesh.hh>
 #include <HexEx/Generators/Generators.hh>
+#include <HexEx/Grid/GridTransform.hh>
 #include <HexEx/IO/HexExFile.hh>
+#include <HexEx/Preprocessing/Transitions.hh>
 
 #include <OpenVolumeMesh/IO/IO.hh>
 #include <OpenVolumeMesh/IO/ovmb_read.hh>
@@ -171,6 +174,15 @@ TEST(OvmNativeCall, PolyhedralKernelAndNonHexCellsMatchTheCheckedConstruction) {
     EXPECT_EQ(poly.n_cells(), 216u);
     EXPECT_EQ(poly.n_faces(), 3u * 6 * 6 * 7);
     EXPECT_EQ(poly.n_edges(), 3u * 6 * 7 * 7);
+    // The bottom-up incidences, turned off while writing, are back: boundary faces and
+    // cells around a vertex are known.
+    ASSERT_TRUE(poly.has_full_bottom_up_incidences());
+    std::size_t boundary = 0;
+    for (std::size_t f = 0; f < poly.n_faces(); ++f) boundary += poly.is_boundary(OpenVolumeMesh::FaceHandle(int(f))) ? 1 : 0;
+    EXPECT_EQ(boundary, 6u * 36);
+    std::size_t around = 0;
+    for (auto it = poly.vc_iter(OpenVolumeMesh::VertexHandle(0)); it.valid(); ++it) ++around;
+    EXPECT_GE(around, 1u);
 }
 
 TEST(OvmNativeCall, GeneratedCylinderAndErrors) {
@@ -212,4 +224,79 @@ TEST(OvmNativeCall, GeneratedCylinderAndErrors) {
                                              std::to_string(pm.mesh.cell_vertex(HexEx::CellHandle(3), 2).idx()));
     }
     EXPECT_EQ(hexes.n_cells(), ref.hexes.size());  // untouched by the failed call
+}
+
+TEST(OvmNativeCall, TransitionsAndSingularEdgesWrittenIntoTheTetMesh) {
+    // A cylinder of three wedges (one chart each) around a singular edge chain of valence 3.
+    HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(3, 2, 3, 1, 1);
+    pm.mesh.build_adjacency();
+    TetMesh tets;
+    ASSERT_EQ(HexExTestSupport::buildOvmTets(pm, tets), 0u);
+    auto rotation = tets.request_halfface_property<int>("rotation", -1);
+    auto translation = tets.request_halfface_property<OpenVolumeMesh::Geometry::Vec3i>("translation");
+    auto valence = tets.request_edge_property<int>("valence", -1);
+    HexEx::OvmTetResults results;
+    results.rotation = &rotation;
+    results.translation = &translation;
+    results.singular_valence = &valence;
+    HexMeshOvm hexes;
+    const HexEx::ExtractionReport report = HexEx::extractHexMesh(
+        tets, *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization), hexes, HexEx::ExtractionOptions{}, results);
+    EXPECT_TRUE(report.valid_all_hex);
+    EXPECT_EQ(hexes.n_cells(), std::size_t(3 * 2 * 2 * 3));
+
+    // Halfface by halfface, the library's own transitions (buildOvmTets: the k-th halfface of
+    // tet t is opposite its corner kOpposite[k]).
+    const HexEx::Transitions tr = HexEx::computeTransitions(pm.mesh, pm.params);
+    static const int kOpposite[4] = {3, 1, 2, 0};
+    std::size_t rotated = 0, checkedMaps = 0;
+    for (std::size_t t = 0; t < pm.mesh.n_cells(); ++t) {
+        const OpenVolumeMesh::CellHandle ch{int(t)};
+        const auto& hfs = tets.cell(ch).halffaces();
+        for (std::size_t k = 0; k < 4; ++k) {
+            const HexEx::GridTransform g = tr.halfface[4 * t + std::size_t(kOpposite[k])];
+            ASSERT_EQ(rotation[hfs[k]], g.R.index()) << "tet " << t << " halfface " << k;
+            EXPECT_EQ(translation[hfs[k]], OpenVolumeMesh::Geometry::Vec3i(g.t[0], g.t[1], g.t[2]));
+            rotated += g.R.index() != 0 ? 1 : 0;
+            // Independently: the transition maps this cell's parameters of the shared
+            // vertices onto the neighbour's.
+            const OpenVolumeMesh::CellHandle nb = tets.incident_cell(tets.opposite_halfface_handle(hfs[k]));
+            if (!nb.is_valid()) continue;
+            const HexEx::GridTransform stored(HexEx::Rotation(rotation[hfs[k]]),
+                                              HexEx::Vec3i(translation[hfs[k]][0], translation[hfs[k]][1], translation[hfs[k]][2]));
+            for (const auto& v : tets.get_halfface_vertices(hfs[k])) {
+                auto paramIn = [&](std::size_t cell) {
+                    for (int i = 0; i < 4; ++i)
+                        if (pm.mesh.cell_vertex(HexEx::CellHandle(int(cell)), i).idx() == v.idx()) return pm.params[cell][std::size_t(i)];
+                    ADD_FAILURE() << "vertex not in cell";
+                    return HexEx::Vec3d(0, 0, 0);
+                };
+                const HexEx::Vec3d a = stored.apply(paramIn(t)), b = paramIn(std::size_t(nb.idx()));
+                for (int d = 0; d < 3; ++d) EXPECT_NEAR(a[d], b[d], 1e-9) << "tet " << t << " halfface " << k;
+                ++checkedMaps;
+            }
+        }
+    }
+    EXPECT_GT(rotated, 0u);
+    EXPECT_GT(checkedMaps, 0u);
+
+    // Singular edges: the axis, valence 3; every other edge 0.
+    std::size_t singular = 0;
+    for (std::size_t e = 0; e < tets.n_edges(); ++e) {
+        const OpenVolumeMesh::EdgeHandle eh{int(e)};
+        const int val = valence[eh];
+        ASSERT_TRUE(val == 0 || val == 3) << "edge " << e << " valence " << val;
+        if (val == 0) continue;
+        ++singular;
+        for (const auto& v : {tets.edge(eh).from_vertex(), tets.edge(eh).to_vertex()}) {
+            EXPECT_NEAR(tets.vertex(v)[0], 0.0, 1e-12);
+            EXPECT_NEAR(tets.vertex(v)[1], 0.0, 1e-12);
+        }
+    }
+    EXPECT_EQ(long(singular), report.input.singular_edges);
+    EXPECT_GT(singular, 0u);
+    // The same graph as the library function the CLI writes.
+    const HexEx::SingularityGraph graph = HexEx::singularityGraph(pm);
+    EXPECT_EQ(graph.segments.size(), singular);
+    for (int v : graph.valences) EXPECT_EQ(v, 3);
 }
