@@ -69,9 +69,10 @@ struct OptimizeReport {
     double mean_scaled_jacobian_after = 0;   ///< mean SJ of the result
     long invalid_before = 0;                 ///< hexes not certified valid (invalid or undecided) before
     long invalid_after = 0;                  ///< and after
-    /// Counts of hexes per SJ bin: bin i covers [-1 + 0.1 i, -0.9 + 0.1 i) (20 bins over
-    /// [-1, 1]; SJ = 1 goes to the last bin).
-    std::vector<long> histogram_before, histogram_after;
+    /// Counts of hexes per SJ bin before: bin i covers [-1 + 0.1 i, -0.9 + 0.1 i) (20 bins
+    /// over [-1, 1]; SJ = 1 goes to the last bin).
+    std::vector<long> histogram_before;
+    std::vector<long> histogram_after;  ///< the same bins after
     long free_vertices = 0;                  ///< vertices allowed to move (interior, surface, curve)
     long surface_vertices = 0;               ///< boundary vertices held on a patch of the surface
     long curve_vertices = 0;                 ///< boundary vertices held on a feature curve
