@@ -17,7 +17,8 @@
 /// extractHexMesh(tetMesh, halffaceProperty, hexMesh), timed stage by stage through the
 /// same detail functions it calls). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
-/// `key=value` pairs; building the input in the user's structure is not timed. view_s:
+/// `key=value` pairs; building the input in the user's structure is not timed (input_mb:
+/// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
 /// the adapter's scan of the input; copy_s: toParametrizedTetMesh() including the
 /// adjacency (for builtin: TetMesh::build_adjacency() alone); extract_s: the extraction;
 /// write_s: fromHexMesh() into the output structure; total_s: all of them.
@@ -41,6 +42,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <malloc.h>
 #include <string>
 
 namespace {
@@ -51,6 +53,17 @@ double peakMb() {
     std::string line;
     while (std::getline(in, line))
         if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
+    return -1;
+}
+
+/// Resident set size of this process in MB (VmRSS) after returning freed heap memory to
+/// the system, or -1.
+double rssMb() {
+    malloc_trim(0);
+    std::ifstream in("/proc/self/status");
+    std::string line;
+    while (std::getline(in, line))
+        if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
     return -1;
 }
 
@@ -146,7 +159,9 @@ int main(int argc, char** argv) {
     }
     Timings r;
     std::size_t hexes = 0;
+    double inputMb = -1;  // resident memory once the input is built (the user's structure)
     if (path == "builtin") {
+        inputMb = rssMb();
         // copy_s: the adjacency, which the traits path builds inside its copy.
         auto t0 = std::chrono::steady_clock::now();
         pm.mesh.build_adjacency();
@@ -165,6 +180,7 @@ int main(int argc, char** argv) {
             for (int i = 0; i < 4; ++i) tets[t][std::size_t(i)] = pm.mesh.cell_vertex(HexEx::CellHandle(int(t)), i).idx();
         std::vector<std::array<HexEx::Vec3d, 4>> params = pm.params;
         pm = HexEx::ParametrizedTetMesh();
+        inputMb = rssMb();
         HexEx::HexArrays out;
         r = timeThroughTraits([&] { return HexEx::TetArraysView{&positions, &tets, &params}; }, out);
         hexes = out.hexes.size();
@@ -172,6 +188,7 @@ int main(int argc, char** argv) {
         TetLcc lcc;
         HexExTestSupport::buildTetLcc(pm, lcc);
         pm = HexEx::ParametrizedTetMesh();
+        inputMb = rssMb();
         HexLcc outLcc;
         HexEx::LccHexOutput<HexLcc> out(outLcc);
         r = timeThroughTraits([&] { return HexEx::LccTetMesh(lcc); }, out);
@@ -180,6 +197,7 @@ int main(int argc, char** argv) {
         TetLcc lcc;
         HexExTestSupport::buildTetLcc(pm, lcc);
         pm = HexEx::ParametrizedTetMesh();
+        inputMb = rssMb();
         HexLcc outLcc;
         r = timeOneCall([&] { return HexEx::detail::lccToParametrizedTetMesh(lcc, HexEx::LccDartInfoParameter{}, 0); },
                         HexEx::LccHexOutput<HexLcc>(outLcc));
@@ -189,6 +207,7 @@ int main(int argc, char** argv) {
         OvmTets tm;
         HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
+        inputMb = rssMb();
         OvmHexes hexMesh;
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
         r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
@@ -197,6 +216,7 @@ int main(int argc, char** argv) {
         OvmTets tm;
         HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
+        inputMb = rssMb();
         const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
         OvmHexes hexMesh;
         r = timeOneCall(
@@ -214,7 +234,8 @@ int main(int argc, char** argv) {
         std::cerr << "unknown path " << path << "\n";
         return 2;
     }
-    std::printf("case=%s path=%s hexes=%zu view_s=%.3f copy_s=%.3f extract_s=%.3f write_s=%.3f total_s=%.3f peak_mb=%.0f\n",
-                c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb());
+    std::printf("case=%s path=%s hexes=%zu view_s=%.3f copy_s=%.3f extract_s=%.3f write_s=%.3f total_s=%.3f peak_mb=%.0f "
+                "input_mb=%.0f\n",
+                c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb(), inputMb);
     return 0;
 }

@@ -23,7 +23,9 @@ template <class LCC, class ParamFn>
 ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& param, int threads) {
     using Dart = typename LCC::Dart_const_handle;
     const std::unordered_map<const void*, std::size_t> index = lccVertexIndex(lcc);
-    const std::size_t nv = index.size(), nt = lcc.template one_dart_per_cell<3>().size();
+    // A closed tet volume has 12 darts: the number of tets without a pass over the darts
+    // (one_dart_per_cell<3>().size() walks them all).
+    const std::size_t nv = index.size(), nt = lcc.number_of_darts() / 12;
     constexpr std::size_t kMax = static_cast<std::size_t>(INT_MAX) / 4;
     if (nv > kMax || nt > kMax)
         throw InputError("mesh too large: " + std::to_string(nv) + " vertices, " + std::to_string(nt) +
