@@ -213,7 +213,12 @@ public:
             lo.relative_decrease = 1e-7;
             lo.gradient_tolerance = 1e-12;
             auto f = [&](const Eigen::VectorXd& x, Eigen::VectorXd& g) { return energy(x, k, m0, &g); };
+            // Boundary vertices are projected in every evaluation (the energy sees the true
+            // positions; its gradient goes through the projection's tangent plane).
+            project_in_apply_ = !freeze_boundary_;
             const LbfgsResult r = minimizeLbfgs(f, q, lo);
+            project_in_apply_ = false;
+            restore(saved, saved_loc);
             rep_.lbfgs_iterations += r.iterations;
             // Feasibility line search on the block's displacement: positions base + t (x - base),
             // boundary vertices projected, for t = 1, 1/2, ..., 1/64 until accepted.
@@ -559,6 +564,7 @@ private:
     /// locations reached go to cur_loc_.
     void apply(const Eigen::VectorXd& q) {
         cur_loc_.resize(free_.size());
+        cur_dir_.resize(free_.size());
         parallelChunks(free_.size(), free_.size() < 4096 ? 1 : threads_, [&](int, std::size_t b, std::size_t e) {
             for (std::size_t i = b; i < e; ++i) {
                 const int v = free_[i];
@@ -566,7 +572,7 @@ private:
                 Vec3d p = base_[i];
                 for (int k = 0; k < dof; ++k) p += basis_[i][static_cast<std::size_t>(k)] * (scale_ * q[offset_[i] + k]);
                 int l = loc_[static_cast<std::size_t>(v)];
-                if (dof < 3 && project_in_apply_) p = project(v, p, l, nullptr);
+                if (dof < 3 && project_in_apply_) p = project(v, p, l, &cur_dir_[i]);
                 cur_loc_[i] = l;
                 mesh_.vertices[static_cast<std::size_t>(v)] = p;
             }
@@ -626,7 +632,10 @@ private:
             grad->resize(n_vars_);
             for (std::size_t i = 0; i < free_.size(); ++i) {
                 const int dof = dofOf(kind_[static_cast<std::size_t>(free_[i])]);
-                for (int d = 0; d < dof; ++d) (*grad)[offset_[i] + d] = scale_ * (basis_[i][static_cast<std::size_t>(d)] | vgrad_[i]);
+                Vec3d g = vgrad_[i];
+                if (project_in_apply_ && dof == 2) g -= cur_dir_[i] * (cur_dir_[i] | g);  // through the projection
+                if (project_in_apply_ && dof == 1) g = cur_dir_[i] * (cur_dir_[i] | g);
+                for (int d = 0; d < dof; ++d) (*grad)[offset_[i] + d] = scale_ * (basis_[i][static_cast<std::size_t>(d)] | g);
             }
         }
         return total;
@@ -646,6 +655,7 @@ private:
     double diag_ = 1;
     // Global phase problem.
     std::vector<int> free_, slot_, elems_, offset_, cur_loc_;
+    std::vector<Vec3d> cur_dir_;
     bool project_in_apply_ = false;
     bool freeze_boundary_ = false;
     std::vector<Vec3d> base_;
