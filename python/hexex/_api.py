@@ -125,10 +125,11 @@ def _boundary_triangles(tets: np.ndarray) -> np.ndarray:
 def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
              rings: int = 1, feature_angle: float = 40.0, keep_features: bool = False,
              quality_iterations: int = 10) -> UntangleResult:
-    """Moves the vertices of a hex mesh so that every hex has positive Jacobians at its 8
-    corners (regularised elliptic energy of Garanzha et al. 2021, minimised with L-BFGS;
-    see Documentation/algorithm.md). Only vertices near inverted hexes move; a mesh without
-    inverted hexes comes back unchanged. The input arrays are not modified.
+    """Moves the vertices of a hex mesh so that every hex is certified valid: its Jacobian
+    determinant is proved positive on the whole hex (the test of :func:`validate`), not only
+    at its 8 corners (regularised elliptic energy of Garanzha et al. 2021, minimised with
+    L-BFGS; see Documentation/algorithm.md). Only vertices near invalid hexes move; a mesh
+    without invalid hexes comes back unchanged. The input arrays are not modified.
 
     Args:
         points: vertex positions, shape (k, 3).
@@ -150,8 +151,10 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
 
     Returns:
         UntangleResult: ``points``, ``hexes``, ``polyhedra`` and ``report`` (dict);
-        ``report["inverted_after"] > 0`` and ``report["message"]`` say what could not be
-        untangled (no exception is raised for that).
+        ``report["invalid_after"]`` (certified invalid hexes), ``report["undecided_after"]``,
+        ``report["inverted_after"]`` (hexes with a corner Jacobian <= 0) and
+        ``report["message"]`` say what could not be untangled (no exception is raised for
+        that); ``report["success"]`` is True when every hex is certified valid.
     """
     points = as_float_array(points, "points", (None, 3))
     hexes = as_index_array(hexes, "hexes", (None, 8), dtypes=(np.int32,))

@@ -81,12 +81,15 @@ class UntangleResult(HexMesh):
         super().__init__(points, hexes, polyhedra)
         self.report = report
         """The untangling report: a dict with the fields of ``HexEx::UntangleReport``
-        (hexes, inverted_before, inverted_after, min/mean_scaled_jacobian_before/after,
+        (hexes, inverted_before, inverted_after (corner Jacobian <= 0), invalid_before,
+        invalid_after, undecided_before, undecided_after (the certified test of the whole
+        hex, ``validate``), min/mean_scaled_jacobian_before/after,
         free_vertices, moved_vertices, max_displacement, mean_displacement (relative to the
         bounding-box diagonal), released_feature_vertices, attempts, rings, outer_iterations, lbfgs_iterations, quality_iterations,
         seconds, success, budget_exhausted, message)."""
 
     @property
     def success(self) -> bool:
-        """True if no hex is inverted after untangling."""
+        """True if every hex is certified valid after untangling (invalid_after and
+        undecided_after are 0), not only positive at its 8 corners."""
         return bool(self.report["success"])

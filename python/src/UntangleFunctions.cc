@@ -24,6 +24,10 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
     d["hexes"] = r.hexes;
     d["inverted_before"] = r.inverted_before;
     d["inverted_after"] = r.inverted_after;
+    d["invalid_before"] = r.invalid_before;
+    d["invalid_after"] = r.invalid_after;
+    d["undecided_before"] = r.undecided_before;
+    d["undecided_after"] = r.undecided_after;
     d["min_scaled_jacobian_before"] = r.min_scaled_jacobian_before;
     d["mean_scaled_jacobian_before"] = r.mean_scaled_jacobian_before;
     d["min_scaled_jacobian_after"] = r.min_scaled_jacobian_after;

@@ -32,6 +32,9 @@ def test_untangle_random_interior_moves():
     r = hexex.untangle(tangled, hexes, fixed_boundary=True, threads=2)
     assert r.report["inverted_before"] > 20
     assert r.report["inverted_after"] == 0 and r.success
+    # success is certified validity: no hex negative anywhere inside, none undecided
+    assert r.report["invalid_before"] >= r.report["inverted_before"]
+    assert r.report["invalid_after"] == 0 and r.report["undecided_after"] == 0
     assert hexex.validate(r)["quality"]["inverted_hexes"] == 0
     assert np.array_equal(r.points[~inner], points[~inner])  # fixed boundary
     assert np.array_equal(tangled, before)  # the input is not modified

@@ -217,7 +217,7 @@ TEST(Untangler, BoundaryThatForcesAnInversionIsReported) {
     EXPECT_EQ(r.inverted_before, 1);
     EXPECT_EQ(r.inverted_after, 1);
     EXPECT_FALSE(r.success);
-    EXPECT_NE(r.message.find("1 hexes remain inverted; 1 of them have no vertex that may move"), std::string::npos)
+    EXPECT_NE(r.message.find("1 hexes remain invalid (1 inverted at a corner, 0 undecided); 1 of them have no vertex that may move"), std::string::npos)
         << r.message;
 }
 

@@ -3,12 +3,15 @@
 
 #include "Perturbation.hh"
 
+#include "../Mesh/HexArcs.hh"
+#include "../Mesh/HexMeshQuality.hh"
 #include "../Preprocessing/Transitions.hh"
 #include "RandomDraws.hh"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <random>
 #include <stdexcept>
 
@@ -151,6 +154,83 @@ void perturbParameters(ParametrizedTetMesh& pm, double a, unsigned seed, Perturb
         }
         for (int c : star) slot[c] = -1;
     }
+    if (stats) *stats = st;
+}
+
+namespace {
+
+/// Hexes with a corner Jacobian <= 0 (or a non-finite one).
+long countInverted(const HexMesh& mesh) {
+    long n = 0;
+    for (const auto& h : mesh.hexes) {
+        std::array<Vec3d, 8> p;
+        for (std::size_t k = 0; k < 8; ++k) p[k] = mesh.vertices[static_cast<std::size_t>(h[k])];
+        const double sj = hexScaledJacobian(p);
+        n += !(sj > 0);
+    }
+    return n;
+}
+
+} // namespace
+
+void perturbHexMesh(HexMesh& mesh, double fraction, unsigned seed, HexPerturbStats* stats) {
+    if (!(fraction >= 0) || !std::isfinite(fraction))
+        throw std::invalid_argument("perturbHexMesh: fraction must be finite and >= 0");
+    const std::size_t nv = mesh.vertices.size();
+    for (const auto& h : mesh.hexes)
+        for (const int v : h)
+            if (v < 0 || static_cast<std::size_t>(v) >= nv)
+                throw std::invalid_argument("perturbHexMesh: a hex references vertex " + std::to_string(v) + " of " +
+                                            std::to_string(nv));
+    HexPerturbStats st;
+    st.vertices = nv;
+    st.inverted_before = countInverted(mesh);
+    // Mean incident edge length per vertex (every hex edge counted once per hex using it,
+    // which weights shared edges equally on a regular mesh).
+    std::vector<double> len_sum(nv, 0.0);
+    std::vector<int> len_count(nv, 0), hex_count(nv, 0);
+    for (const auto& h : mesh.hexes) {
+        for (const int v : h) ++hex_count[static_cast<std::size_t>(v)];
+        for (const auto& e : HexArcs::kHexEdges) {
+            const int a = h[static_cast<std::size_t>(e[0])], b = h[static_cast<std::size_t>(e[1])];
+            const double l = (mesh.vertices[static_cast<std::size_t>(a)] - mesh.vertices[static_cast<std::size_t>(b)]).norm();
+            len_sum[static_cast<std::size_t>(a)] += l;
+            len_sum[static_cast<std::size_t>(b)] += l;
+            ++len_count[static_cast<std::size_t>(a)];
+            ++len_count[static_cast<std::size_t>(b)];
+        }
+    }
+    // Boundary: vertices of quads used by exactly one hex; polyhedron vertices stay too.
+    std::vector<char> fixed(nv, 0);
+    std::map<std::array<int, 4>, int> quad_uses;
+    for (const auto& h : mesh.hexes)
+        for (const auto& f : HexArcs::kHexFaces) {
+            std::array<int, 4> q;
+            for (std::size_t i = 0; i < 4; ++i) q[i] = h[static_cast<std::size_t>(f[i])];
+            std::sort(q.begin(), q.end());
+            ++quad_uses[q];
+        }
+    for (const auto& qu : quad_uses)
+        if (qu.second == 1)
+            for (const int v : qu.first) fixed[static_cast<std::size_t>(v)] = 1;
+    for (const auto& p : mesh.polyhedra)
+        for (const auto& f : p.faces)
+            for (const int v : f)
+                if (v >= 0 && static_cast<std::size_t>(v) < nv) fixed[static_cast<std::size_t>(v)] = 1;
+
+    std::mt19937 gen(seed);
+    for (std::size_t v = 0; v < nv; ++v) {
+        Vec3d d;
+        for (int k = 0; k < 3; ++k) d[k] = 2.0 * uniform01(gen) - 1.0;
+        if (fixed[v] || hex_count[v] == 0) continue;
+        ++st.interior_vertices;
+        d *= fraction * len_sum[v] / static_cast<double>(len_count[v]);
+        if (d[0] == 0 && d[1] == 0 && d[2] == 0) continue;
+        mesh.vertices[v] += d;
+        ++st.moved_vertices;
+        st.max_displacement = std::max(st.max_displacement, d.norm());
+    }
+    st.inverted_after = countInverted(mesh);
     if (stats) *stats = st;
 }
 

@@ -5,6 +5,7 @@
 /// every vertex's parameter is moved by uniform noise, consistently in all charts that see
 /// the vertex, while boundary planes and singular edges keep their grid alignment.
 
+#include "../Mesh/HexMesh.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
 
 #include <cstddef>
@@ -40,5 +41,29 @@ struct PerturbStats {
 /// @throws std::invalid_argument if @p a is negative or not finite, or if the parameter
 ///         count does not match the cell count.
 void perturbParameters(ParametrizedTetMesh& pm, double a, unsigned seed, PerturbStats* stats = nullptr);
+
+/// What perturbHexMesh() did.
+struct HexPerturbStats {
+    std::size_t vertices = 0;           ///< vertices of the mesh
+    std::size_t interior_vertices = 0;  ///< vertices that may move (on no boundary quad and no polyhedron)
+    std::size_t moved_vertices = 0;     ///< interior vertices displaced by a non-zero vector
+    long inverted_before = 0;           ///< hexes with a corner Jacobian <= 0 before
+    long inverted_after = 0;            ///< and after
+    double max_displacement = 0;        ///< largest displacement length
+};
+
+/// Tangles the hex mesh @p mesh for tests of the untangler: every interior vertex moves by
+/// a vector uniform in the cube [-d, d]^3 with d = @p fraction times the mean length of the
+/// hex edges at the vertex (measured before any vertex moves). Boundary vertices (on a quad
+/// used by one hex), vertices of polyhedra and unreferenced vertices keep their positions
+/// bit for bit, so the original positions stay a valid placement with the same boundary.
+/// With a fraction around 1 most hexes of a regular mesh invert.
+///
+/// Three numbers are drawn per vertex in vertex order, whether or not the vertex moves,
+/// from a std::mt19937 seeded with @p seed and mapped to doubles by hand: the same input,
+/// fraction and seed give the same output on every platform.
+/// @throws std::invalid_argument if @p fraction is negative or not finite, or a hex
+///         references a vertex out of range.
+void perturbHexMesh(HexMesh& mesh, double fraction, unsigned seed, HexPerturbStats* stats = nullptr);
 
 } // namespace HexEx

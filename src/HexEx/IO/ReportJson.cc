@@ -168,6 +168,10 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
                 w.num("hexes", u.hexes);
                 w.num("inverted_before", u.inverted_before);
                 w.num("inverted_after", u.inverted_after);
+                w.num("invalid_before", u.invalid_before);
+                w.num("invalid_after", u.invalid_after);
+                w.num("undecided_before", u.undecided_before);
+                w.num("undecided_after", u.undecided_after);
                 w.num("min_scaled_jacobian_before", u.min_scaled_jacobian_before);
                 w.num("mean_scaled_jacobian_before", u.mean_scaled_jacobian_before);
                 w.num("min_scaled_jacobian_after", u.min_scaled_jacobian_after);

@@ -1,15 +1,19 @@
 #pragma once
 /// @file Untangler.hh
 /// @ingroup quality
-/// Untangling of hex meshes: moves vertices so that every hexahedron has positive
-/// Jacobians at its 8 corners, changing the mesh only near the inverted hexes.
+/// Untangling of hex meshes: moves vertices so that every hexahedron is certified valid
+/// (its Jacobian determinant positive on the whole element, classifyHexValidity(), not
+/// only at its 8 corners), changing the mesh only near the invalid hexes.
 ///
 /// Method: the regularised elliptic energy of Garanzha, Kaporin, Kudryavtseva, Protais,
 /// Ray and Sokolov, "Foldover-free maps in 50 lines of code" (ACM TOG 40(4), 2021), summed
-/// over the 8 corner tets of every hex near the inverted ones (EllipticEnergy.hh), is
+/// over the 8 corner tets of every hex near the invalid ones (EllipticEnergy.hh), is
 /// minimised with L-BFGS (Lbfgs.hh) for a decreasing sequence of regularisation parameters
-/// eps. Only the vertices within `rings` hex rings of an inverted hex move; if hexes stay
-/// inverted the ring count is doubled and the minimisation repeated, up to the whole mesh.
+/// eps. Hexes positive at their corners but not certified valid get the energy of the
+/// Jacobian at 27, then 125 points inside (hexSampledEnergy()). Only the vertices within
+/// `rings` hex rings of an invalid hex move; if hexes stay invalid the ring count grows
+/// (x4, twice) and then the whole mesh moves. A heavy tangle (more than global_fraction of
+/// the hexes invalid) is untangled on the whole mesh from the start.
 ///
 /// Boundary: with BoundaryMode::Surface, boundary vertices move in the tangent plane of
 /// the given surface and are projected back onto it after every outer iteration; vertices
@@ -21,7 +25,7 @@
 /// ```
 /// HexEx::HexMesh hm = HexEx::readHexMesh("folded.vtu");
 /// HexEx::UntangleReport r = HexEx::untangleHexMesh(hm);   // boundary on hm's own boundary
-/// if (r.inverted_after > 0) std::cerr << r.message << "\n";
+/// if (!r.success) std::cerr << r.message << "\n";
 /// ```
 
 #include "../Mesh/HexMesh.hh"
@@ -60,6 +64,9 @@ struct UntangleOptions {
     /// energy in total (all attempts); bounds the cost when no untangled placement is found.
     double work_per_hex = 200;
     double min_work = 1e7;  ///< see work_per_hex
+    /// If more than this fraction of the hexes is invalid at the start (a heavy tangle), the
+    /// whole mesh is untangled at once instead of growing neighbourhoods of rings.
+    double global_fraction = 0.25;
 };
 
 /// What untangleHexMesh() did. Scaled Jacobians are per hex (minimum over its corners).
@@ -67,6 +74,10 @@ struct UntangleReport {
     long hexes = 0;                    ///< hexes in the mesh
     long inverted_before = 0;          ///< hexes with a corner Jacobian <= 0 before
     long inverted_after = 0;           ///< and after
+    long invalid_before = 0;           ///< hexes certified invalid before (J <= 0 somewhere in the hex, classifyHexValidity())
+    long invalid_after = 0;            ///< and after
+    long undecided_before = 0;         ///< hexes the certified test left undecided before
+    long undecided_after = 0;          ///< and after
     double min_scaled_jacobian_before = 0;   ///< minimum scaled Jacobian before
     double mean_scaled_jacobian_before = 0;  ///< mean scaled Jacobian before
     double min_scaled_jacobian_after = 0;    ///< minimum scaled Jacobian after
@@ -82,9 +93,9 @@ struct UntangleReport {
     int quality_iterations = 0;        ///< L-BFGS iterations of the quality steps (UntangleOptions::quality_iterations)
     int lbfgs_iterations = 0;          ///< L-BFGS iterations in total
     double seconds = 0;                ///< wall time
-    bool success = true;               ///< inverted_after == 0
+    bool success = true;               ///< certified valid: invalid_after == 0 and undecided_after == 0
     bool budget_exhausted = false;     ///< the work budget (UntangleOptions::work_per_hex) stopped the minimisation
-    std::string message;               ///< why hexes remain inverted (empty on success)
+    std::string message;               ///< why hexes remain invalid (empty on success)
 };
 
 /// Untangles @p mesh in place. @p surface is the surface boundary vertices stay on with

@@ -391,8 +391,8 @@ int runExtract(const Args& args) {
         if (untangle) printUntangleReport(os, untangle_rep);
         if (optimize) printOptimizeReport(os, optimize_rep);
     }
-    if (untangle && untangle_rep.inverted_after > 0) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
-    if (rep.valid_all_hex) return untangle && untangle_rep.inverted_after > 0 ? 3 : 0;
+    if (untangle && !untangle_rep.success) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
+    if (rep.valid_all_hex) return untangle && !untangle_rep.success ? 3 : 0;
 
     // Written, but not all-hex: say why.
     std::cerr << "hexex extract: the output is not a valid all-hex mesh:\n";

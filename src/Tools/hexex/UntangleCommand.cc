@@ -1,8 +1,8 @@
 /// @file UntangleCommand.cc
 /// `hexex untangle HEX -o OUT [--surface-from MAP] [options]`: moves the vertices of a hex
 /// mesh file so that no hex is inverted (HexEx::untangleHexMesh()) and writes it.
-/// Exit status 0 if no hex is inverted afterwards, 3 if some remain (the mesh is written
-/// anyway), 2 on bad input or usage.
+/// Exit status 0 if every hex is certified valid afterwards (classifyHexValidity()), 3 if
+/// invalid or undecided hexes remain (the mesh is written anyway), 2 on bad input or usage.
 
 #include "ArgParser.hh"
 #include "Commands.hh"
@@ -36,7 +36,8 @@ const char* kUntangleUsage =
     "  --threads N            worker threads (0 = all, default); the output is identical\n"
     "  --encoding E           .vtu data: binary (default), compressed or ascii\n"
     "  -q, --quiet            print nothing but errors\n"
-    "exit status: 0 no inverted hex, 3 written with inverted hexes left, 2 bad input or usage\n";
+    "exit status: 0 every hex certified valid (J > 0 on the whole hex), 3 written with invalid or\n"
+    "             undecided hexes left, 2 bad input or usage\n";
 } // namespace
 
 int runUntangle(const Args& args) {
@@ -114,7 +115,7 @@ int runUntangle(const Args& args) {
         printUntangleReport(std::cout, rep);
         std::cout << "wrote " << output << ": " << hm.hexes.size() << " hexes, " << hm.vertices.size() << " vertices\n";
     }
-    if (rep.inverted_after == 0) return 0;
+    if (rep.success) return 0;
     std::cerr << "hexex untangle: " << rep.message << "\n";
     return 3;
 }

@@ -12,7 +12,10 @@ void printUntangleReport(std::ostream& os, const HexEx::UntangleReport& r) {
     const auto flags = os.flags();
     const auto prec = os.precision();
     os << std::setprecision(4);
-    os << "untangle: inverted hexes " << r.inverted_before << " -> " << r.inverted_after << " of " << r.hexes << "\n"
+    os << "untangle: invalid hexes " << r.invalid_before << " -> " << r.invalid_after << " of " << r.hexes
+       << " (certified: J > 0 on the whole hex); undecided " << r.undecided_before << " -> " << r.undecided_after << "\n"
+       << "untangle: inverted hexes " << r.inverted_before << " -> " << r.inverted_after << " of " << r.hexes
+       << " (a corner Jacobian <= 0)\n"
        << "untangle: scaled Jacobian min " << r.min_scaled_jacobian_before << " -> " << r.min_scaled_jacobian_after
        << ", mean " << r.mean_scaled_jacobian_before << " -> " << r.mean_scaled_jacobian_after << "\n"
        << "untangle: vertices moved " << r.moved_vertices << " (free " << r.free_vertices << ", "
