@@ -38,8 +38,10 @@ struct ExtractionOptions {
     bool cheap_folds = true;
     /// Where the annihilation (with #merge) left broken hex cells, put the darts it touched
     /// back and annihilate again, phase by phase and then in other orders, keeping the run
-    /// with the fewest broken cells (AnnihilationRetry; Documentation/algorithm.md). Maps
-    /// without a broken cell are not affected. Off: the first pass's result is kept.
+    /// with the fewest broken cells (AnnihilationRetry; Documentation/algorithm.md); cells
+    /// still broken then have their darts re-linked into hexes where possible
+    /// (reconnectBrokenCells()). Maps without a broken cell are not affected. Off: the
+    /// first pass's result is kept.
     bool annihilation_retries = true;
     /// Refuse maps whose total unsigned parametric volume exceeds this many grid cells
     /// (each hex costs 48 darts in memory; the default allows about 2 billion darts).

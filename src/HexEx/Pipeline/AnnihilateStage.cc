@@ -25,13 +25,23 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
                 const Dart& B = ds[static_cast<std::size_t>(b)];
                 return A.tet == B.tet && samePoint(A.z, B.z);
             };
-        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, in.retry);
+        // Cells still broken after the phase-by-phase retry: regroup their darts into cubes and
+        // re-link them; if that leaves none broken, the other orders are not tried.
+        AnnihilationRetry retry = in.retry;
+        if (retry.enabled && in.darts)
+            retry.repair = [&]() {
+                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components);
+                const ReconnectionStats& r = out.reconnection;
+                return r.reconnected_cells > 0 && r.unresolved_cells == 0 && r.alpha3_only_groups == 0;
+            };
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, retry);
         out.stats = as;
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;
         // Broken cells that no order of the annihilation avoids: regroup their darts into
         // cubes and re-link them (only then; every other map keeps its links).
-        if (in.retry.enabled && as.broken_cells_after > 0 && in.darts) {
+        if (!as.repaired) out.reconnection = ReconnectionStats();  // a failed attempt during the retries
+        if (in.retry.enabled && as.broken_cells_after > 0 && in.darts && !as.repaired) {
             out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components);
             for (const auto& u : out.reconnection.unresolved)
                 out.warnings.push_back("broken hex cells at dart " + std::to_string(u.first) + " (tet " +

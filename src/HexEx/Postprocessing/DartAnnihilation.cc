@@ -269,6 +269,13 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             best = now;
             bestOrder = k;
         }
+        if (k == 1 && now > 0 && opt.repair && opt.repair()) {
+            // The cells phase by phase leaves broken were re-linked into hexes: keep that.
+            st.repaired = true;
+            st.reordered = 1;
+            st.broken_cells_after = now;
+            return;
+        }
     }
     if (lastRun != bestOrder) runVariant(bestOrder);
     st.reordered = bestOrder;

@@ -19,6 +19,7 @@ struct AnnihilationStats {
     long broken_cells_before = 0; ///< broken hex cells next to changed darts after the first pass (with retries only)
     long broken_cells_after = 0;  ///< the same for the order kept
     long retry_runs = 0;          ///< runs in other orders
+    bool repaired = false;        ///< AnnihilationRetry::repair left no broken cell after the first retry
     int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 phase by phase, 2 descending, k > 2 hashed
 };
 
@@ -41,6 +42,10 @@ struct AnnihilationRetry {
     bool enabled = false;     ///< check and retry at all
     int orders = 16;          ///< other orders tried at most
     int patience = 6;         ///< stop after this many orders in a row that leave no fewer broken cells than the best
+    /// Called once, after the first retry (phase by phase) if it leaves broken cells: may
+    /// re-link the darts of those cells (reconnectBrokenCells()) and returns true if no
+    /// broken cell is left; then no further order is tried and that result is kept.
+    std::function<bool()> repair;
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the

@@ -323,7 +323,10 @@ ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, c
         // whose cells are hexes once their alpha_3 links are ignored (partially connected
         // or crossed quads) is left to the face repair and relinking.
         const long cellsBefore = cellsBrokenInside(alpha, alive, group, mark);
-        if (cellsBefore == 0) continue;
+        if (cellsBefore == 0) {
+            ++st.alpha3_only_groups;
+            continue;
+        }
         st.broken_cells += cellsBefore;
         std::string why;
         const long formed = reconnectGroup(alpha, alive, darts, pieceOfTet, group, mark, why);

@@ -21,6 +21,7 @@ struct ReconnectionStats {
     long broken_cells = 0;        ///< broken hex cells found (<alpha_0, alpha_1, alpha_2> orbits that are not hexes even with their alpha_3 links ignored)
     long reconnected_cells = 0;   ///< hex cells the re-linked darts form (replacing broken ones)
     long unresolved_cells = 0;    ///< broken cells left as they were (no valid reconnection found)
+    long alpha3_only_groups = 0;  ///< groups of broken cells that are hexes once alpha_3 is ignored (left to the face repair)
     /// Per group of broken cells left as they were: its smallest dart and why (at most 8 entries).
     std::vector<std::pair<int, std::string>> unresolved;
 };
