@@ -135,6 +135,10 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
             w.num("cancelled_fold_points", d.cancelled_fold_points);
             w.num("annihilation_order", static_cast<long>(d.annihilation_order));
             w.num("broken_cells_after_annihilation", d.broken_cells_after_annihilation);
+            if (d.reconnected_cells > 0 || d.unreconnected_cells > 0) {  // only where cells were reconnected or left broken
+                w.num("reconnected_cells", d.reconnected_cells);
+                w.num("unreconnected_cells", d.unreconnected_cells);
+            }
         }));
         if (r.arcs.edges > 0 || r.arcs.faces > 0) {
             // Only with ExtractionOptions::arcs (hexex extract --edge-arcs / --face-patches).
