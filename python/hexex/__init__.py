@@ -11,16 +11,17 @@ See Documentation/python.md for the whole API.
 
 from . import _core
 from ._api import (HexExWarning, extract, generate_cube, generate_cylinder, generate_ring, generate_twisted_ring,
-                   map_statistics, parameter_noise, perturb, random_charts, read_hex_mesh, read_map, untangle,
-                   validate, write_hex_mesh, write_map)
-from ._types import ExtractionResult, HexMesh, TetMap, UntangleResult
+                   map_statistics, optimize, parameter_noise, perturb, random_charts, read_hex_mesh, read_map,
+                   untangle, validate, write_hex_mesh, write_map)
+from ._types import ExtractionResult, HexMesh, OptimizeResult, TetMap, UntangleResult
 
 __version__ = _core.version()
 """Version of the C++ library the module was built from (x.y.z)."""
 
 __all__ = [
     "ExtractionResult", "HexExWarning", "HexMesh", "TetMap", "__version__", "extract", "generate_cube",
-    "generate_cylinder", "generate_ring", "generate_twisted_ring", "map_statistics", "parameter_noise", "perturb",
+    "generate_cylinder", "generate_ring", "generate_twisted_ring", "map_statistics", "OptimizeResult", "optimize",
+    "parameter_noise", "perturb",
     "random_charts", "read_hex_mesh", "read_map", "UntangleResult", "untangle", "validate", "write_hex_mesh",
     "write_map",
 ]

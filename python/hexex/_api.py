@@ -11,7 +11,7 @@ import numpy as np
 
 from . import _core
 from ._arrays import as_float_array, as_index_array, as_map_arrays, as_path, as_polyhedra
-from ._types import ExtractionResult, HexMesh, TetMap, UntangleResult
+from ._types import ExtractionResult, HexMesh, OptimizeResult, TetMap, UntangleResult
 
 
 class HexExWarning(UserWarning):
@@ -175,6 +175,55 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
                                            bool(fixed_boundary), threads, rings, feature_angle, bool(keep_features),
                                            quality_iterations)
     return UntangleResult(pts, hx, poly, report)
+
+
+def optimize(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
+             target: float = 0.9, feature_angle: float = 40.0, max_blocks: int = 40,
+             max_passes: int = 60) -> OptimizeResult:
+    """Raises the worst scaled Jacobian of a valid hex mesh (``hexex optimize``): L-BFGS on a
+    soft minimum of the corner scaled Jacobians, then vertex-by-vertex max-min moves; every
+    accepted step keeps every hex certified valid and never lowers the worst scaled Jacobian
+    (see Documentation/algorithm.md, "Mesh optimisation"). Boundary vertices stay on the
+    surface, feature-curve vertices on their curve, corner vertices at their corner. A mesh
+    with inverted hexes is refused (``report["success"]`` False): untangle it first
+    (:func:`untangle`). The input arrays are not modified.
+
+    Args:
+        points: vertex positions, shape (k, 3).
+        hexes: hexahedra in VTK order, shape (h, 8), int32.
+        polyhedra: non-hex cells (their vertices never move), as in :class:`HexMesh`.
+        surface: ``(surface_points (n, 3), triangles (t, 3))`` that boundary vertices stay
+            on; default: the mesh's own boundary.
+        fixed_boundary: boundary vertices do not move at all.
+        threads: worker threads (0 = all); the result is identical for any value.
+        target: stop once the worst scaled Jacobian reaches this.
+        feature_angle: surface edges sharper than this (degrees) are feature curves.
+        max_blocks: L-BFGS blocks of the global phase at most (0: none).
+        max_passes: vertex-by-vertex passes of the local phase at most (0: none).
+
+    Returns:
+        OptimizeResult: ``points``, ``hexes``, ``polyhedra`` and ``report`` (dict).
+    """
+    points = as_float_array(points, "points", (None, 3))
+    hexes = as_index_array(hexes, "hexes", (None, 8), dtypes=(np.int32,))
+    polyhedra = as_polyhedra(polyhedra)
+    threads = _check_int(threads, "threads", 0)
+    target = _check_float(target, "target")
+    feature_angle = _check_float(feature_angle, "feature_angle")
+    max_blocks = _check_int(max_blocks, "max_blocks", 0, maximum=1000000)
+    max_passes = _check_int(max_passes, "max_passes", 0, maximum=1000000)
+    surface_points = surface_triangles = None
+    if surface is not None:
+        if fixed_boundary:
+            raise ValueError("surface and fixed_boundary exclude each other")
+        if not isinstance(surface, tuple) or len(surface) != 2:
+            raise TypeError("surface must be a tuple (points, triangles)")
+        surface_points = as_float_array(surface[0], "surface points", (None, 3))
+        surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
+    pts, hx, poly, report = _core.optimize(points, hexes, polyhedra, surface_points, surface_triangles,
+                                           bool(fixed_boundary), threads, target, feature_angle, max_blocks,
+                                           max_passes)
+    return OptimizeResult(pts, hx, poly, report)
 
 
 def read_map(path) -> TetMap:

@@ -74,6 +74,25 @@ class ExtractionResult(HexMesh):
         return bool(self.report["valid_all_hex"])
 
 
+class OptimizeResult(HexMesh):
+    """The output of :func:`hexex.optimize`: the hex mesh with moved vertices plus the report."""
+
+    def __init__(self, points, hexes, polyhedra, report: dict):
+        super().__init__(points, hexes, polyhedra)
+        self.report = report
+        """The optimisation report: a dict with the fields of ``HexEx::OptimizeReport``
+        (min/mean_scaled_jacobian_before/after, min_scaled_jacobian_projected,
+        invalid_before/after (hexes not certified valid), histogram_before/after (20 counts
+        over [-1, 1]), vertex counts by kind, feature_curves, feature_corners, diagonal,
+        max/mean_surface_distance, max/mean_feature_distance, global_blocks, accepted_blocks,
+        lbfgs_iterations, local_passes, local_moves, seconds, reached_target, success, message)."""
+
+    @property
+    def success(self) -> bool:
+        """False if the input was refused (it had inverted hexes; see ``report["message"]``)."""
+        return bool(self.report["success"])
+
+
 class UntangleResult(HexMesh):
     """The output of :func:`hexex.untangle`: the hex mesh with moved vertices plus the report."""
 

@@ -16,4 +16,7 @@ void bindHexMeshFunctions(nanobind::module_& m);
 /// Untangling of hex meshes (UntangleFunctions.cc).
 void bindUntangleFunctions(nanobind::module_& m);
 
+/// Quality optimisation of hex meshes (OptimizeFunctions.cc).
+void bindOptimizeFunctions(nanobind::module_& m);
+
 } // namespace HexExPython

@@ -98,4 +98,5 @@ NB_MODULE(_core, m) {
     HexExPython::bindMapFunctions(m);
     HexExPython::bindHexMeshFunctions(m);
     HexExPython::bindUntangleFunctions(m);
+    HexExPython::bindOptimizeFunctions(m);
 }

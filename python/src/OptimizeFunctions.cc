@@ -1,0 +1,115 @@
+/// @file OptimizeFunctions.cc
+/// hexex._core.optimize: HexEx::optimizeHexMesh() on a hex mesh given as arrays, with an
+/// optional boundary surface (points, triangles).
+
+#include "ArrayConversions.hh"
+#include "Bindings.hh"
+
+#include <HexEx/Untangling/HexOptimizer.hh>
+
+#include <nanobind/stl/optional.h>
+#include <nanobind/stl/string.h>
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+namespace HexExPython {
+
+namespace {
+
+/// A list of the counts of a histogram.
+nb::list histogramToList(const std::vector<long>& h) {
+    nb::list l;
+    for (const long c : h) l.append(c);
+    return l;
+}
+
+/// The report as a dict with the field names of HexEx::OptimizeReport.
+nb::dict optimizeReportToDict(const HexEx::OptimizeReport& r) {
+    nb::dict d;
+    d["hexes"] = r.hexes;
+    d["min_scaled_jacobian_before"] = r.min_scaled_jacobian_before;
+    d["mean_scaled_jacobian_before"] = r.mean_scaled_jacobian_before;
+    d["min_scaled_jacobian_projected"] = r.min_scaled_jacobian_projected;
+    d["min_scaled_jacobian_after"] = r.min_scaled_jacobian_after;
+    d["mean_scaled_jacobian_after"] = r.mean_scaled_jacobian_after;
+    d["invalid_before"] = r.invalid_before;
+    d["invalid_after"] = r.invalid_after;
+    d["histogram_before"] = histogramToList(r.histogram_before);
+    d["histogram_after"] = histogramToList(r.histogram_after);
+    d["free_vertices"] = r.free_vertices;
+    d["surface_vertices"] = r.surface_vertices;
+    d["curve_vertices"] = r.curve_vertices;
+    d["corner_vertices"] = r.corner_vertices;
+    d["fixed_vertices"] = r.fixed_vertices;
+    d["unprojected_vertices"] = r.unprojected_vertices;
+    d["feature_curves"] = r.feature_curves;
+    d["feature_corners"] = r.feature_corners;
+    d["diagonal"] = r.diagonal;
+    d["max_surface_distance"] = r.max_surface_distance;
+    d["mean_surface_distance"] = r.mean_surface_distance;
+    d["max_feature_distance"] = r.max_feature_distance;
+    d["mean_feature_distance"] = r.mean_feature_distance;
+    d["global_blocks"] = r.global_blocks;
+    d["accepted_blocks"] = r.accepted_blocks;
+    d["lbfgs_iterations"] = r.lbfgs_iterations;
+    d["local_passes"] = r.local_passes;
+    d["local_moves"] = r.local_moves;
+    d["seconds"] = r.seconds;
+    d["reached_target"] = r.reached_target;
+    d["success"] = r.success;
+    d["message"] = r.message;
+    return d;
+}
+
+/// Optimises a copy of the mesh; returns (points, hexes, polyhedra, report dict).
+nb::tuple optimize(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
+                   const std::optional<DoubleArray>& surface_points, const std::optional<Int32Array>& surface_triangles,
+                   bool fixed_boundary, int threads, double target, double feature_angle, int max_blocks,
+                   int max_passes) {
+    HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+    HexEx::TriangleSurface surface;
+    const bool has_surface = surface_points.has_value() && surface_triangles.has_value();
+    if (has_surface) {
+        requireArrayShape("surface points", *surface_points, {-1, 3});
+        requireArrayShape("surface triangles", *surface_triangles, {-1, 3});
+        const std::size_t np = surface_points->shape(0), nt = surface_triangles->shape(0);
+        const double* p = surface_points->data();
+        for (std::size_t i = 0; i < np; ++i) surface.points.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+        const std::int32_t* t = surface_triangles->data();
+        for (std::size_t i = 0; i < nt; ++i) {
+            for (int k = 0; k < 3; ++k)
+                if (t[3 * i + k] < 0 || static_cast<std::size_t>(t[3 * i + k]) >= np)
+                    throw std::invalid_argument("surface triangle " + std::to_string(i) + " references point " +
+                                                std::to_string(t[3 * i + k]) + " of " + std::to_string(np));
+            surface.triangles.push_back({{t[3 * i], t[3 * i + 1], t[3 * i + 2]}});
+        }
+    }
+    HexEx::OptimizeOptions opt;
+    opt.boundary = fixed_boundary ? HexEx::BoundaryMode::Fixed : HexEx::BoundaryMode::Surface;
+    opt.threads = threads;
+    opt.target = target;
+    opt.feature_angle_deg = feature_angle;
+    opt.max_global_blocks = max_blocks;
+    opt.max_local_passes = max_passes;
+    HexEx::OptimizeReport r;
+    {
+        nb::gil_scoped_release release;
+        r = HexEx::optimizeHexMesh(hm, opt, has_surface ? &surface : nullptr);
+    }
+    nb::tuple mesh = hexMeshToArrays(std::move(hm));
+    return nb::make_tuple(mesh[0], mesh[1], mesh[2], optimizeReportToDict(r));
+}
+
+} // namespace
+
+void bindOptimizeFunctions(nb::module_& m) {
+    m.def("optimize", &optimize, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
+          nb::arg("surface_points").none(), nb::arg("surface_triangles").none(), nb::arg("fixed_boundary"),
+          nb::arg("threads"), nb::arg("target"), nb::arg("feature_angle"), nb::arg("max_blocks"), nb::arg("max_passes"),
+          "Raises the worst scaled Jacobian of a hex mesh (HexEx::optimizeHexMesh); returns (points, hexes, "
+          "polyhedra, report dict).");
+}
+
+} // namespace HexExPython
