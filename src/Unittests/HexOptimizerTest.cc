@@ -2,9 +2,13 @@
 /// optimizeHexMesh(): the worst scaled Jacobian rises on perturbed cubes, never decreases,
 /// every hex stays certified valid, the boundary stays on the surface (a cube's feature
 /// edges and corners exactly, a curved surface read from OBJ), thread-count independence,
-/// refusal of inverted input; readTriangleSurface() errors.
+/// refusal of inverted input; readTriangleSurface() errors; `hexex optimize --json` and its usage errors.
+
+#include "ToolPath.hh"
 
 #include <HexEx/Core/Error.hh>
+#include <HexEx/IO/HexMeshReaders.hh>
+#include <HexEx/IO/HexMeshWriters.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/HexOptimizer.hh>
 #include <HexEx/Untangling/LocalSurfaceProjection.hh>
@@ -12,11 +16,16 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <iterator>
+#include <string>
 
 using namespace HexEx;
 
@@ -292,4 +301,35 @@ TEST(HexOptimizer, ReadTriangleSurfaceErrors) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/dir/s.obj: cannot open"), std::string::npos) << e.what();
     }
+}
+
+TEST(HexOptimizer, CommandLineWritesReportAndChecksUsage) {
+    const std::string tool = HexExTest::hexexBinary();
+    if (tool.empty()) GTEST_SKIP() << "hexex tool not found next to the test binary";
+    const auto dir = std::filesystem::temp_directory_path() / "hexex_optimize_cli";
+    std::filesystem::create_directories(dir);
+    const std::string in = (dir / "in.vtu").string(), out = (dir / "out.vtu").string(), js = (dir / "r.json").string();
+    writeHexMesh(in, perturbedCube(4, 0.22, 5));
+    auto run = [&](const std::string& args) {
+        const int st = std::system((tool + " " + args + " > " + js + " 2> " + (dir / "err.txt").string()).c_str());
+        return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    };
+    auto slurp = [](const std::string& p) {
+        std::ifstream f(p);
+        return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    };
+    ASSERT_EQ(run("optimize " + in + " -o " + out + " --json --threads 2"), 0) << slurp((dir / "err.txt").string());
+    const std::string json = slurp(js);
+    EXPECT_NE(json.find("\"histogram_after\": ["), std::string::npos) << json;
+    EXPECT_NE(json.find("\"feature_corners\": 8"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"invalid_after\": 0"), std::string::npos) << json;
+    const HexMesh result = readHexMesh(out);
+    EXPECT_EQ(result.hexes.size(), 64u);
+    EXPECT_GT(computeQuality(result, 1).min_scaled_jacobian, computeQuality(readHexMesh(in), 1).min_scaled_jacobian);
+    EXPECT_EQ(run("optimize " + in + " -o " + out + " --fixed-boundary --surface s.obj"), 2);
+    EXPECT_NE(slurp((dir / "err.txt").string()).find("--surface, --surface-from and --fixed-boundary exclude each other"),
+              std::string::npos);
+    EXPECT_EQ(run("optimize " + in + " -o " + out + " --surface " + (dir / "missing.obj").string()), 2);
+    EXPECT_NE(slurp((dir / "err.txt").string()).find("missing.obj: cannot open"), std::string::npos);
+    std::filesystem::remove_all(dir);
 }
