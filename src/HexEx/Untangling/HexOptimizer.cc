@@ -533,6 +533,16 @@ private:
         for (std::size_t c = 0; c < sj_.size(); ++c)
             if (!in[c]) others = std::min(others, sj_[c]);
         if (std::min(new_min, others) < m0) return false;
+        // A block that does not raise the worst SJ must not lower the mean of the hexes it
+        // moved either (the soft minimum alone would trade the mean for nothing).
+        if (std::min(new_min, others) <= m0 + 1e-9) {
+            double old_sum = 0, new_sum = 0;
+            for (std::size_t i = 0; i < elems_.size(); ++i) {
+                old_sum += sj_[static_cast<std::size_t>(elems_[i])];
+                new_sum += new_sj[i];
+            }
+            if (new_sum < old_sum) return false;
+        }
         // Certified validity: threads_ chunks, each hex's test is independent.
         parallelChunks(elems_.size(), th, [&](int, std::size_t b, std::size_t e) {
             for (std::size_t i = b; i < e; ++i) new_valid[i] = classifyHexValidity(corners(elems_[i])) == HexValidity::Valid;
