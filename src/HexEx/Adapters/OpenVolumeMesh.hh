@@ -72,15 +72,21 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
 
 } // namespace detail
 
-/// What the one-call OpenVolumeMesh overloads of extractHexMesh() write back into
-/// properties of the user's tet mesh (each optional: null writes nothing). The properties
-/// are the caller's (e.g. `tetMesh.request_halfface_property<int>("rotation")`) and must
-/// belong to the tet mesh passed to the call.
+/// Properties of the user's tet mesh that the one-call OpenVolumeMesh overloads of
+/// extractHexMesh() read (a given matching) or write back (what the extraction found); each
+/// optional: null reads or writes nothing. The properties are the caller's (e.g.
+/// `tetMesh.request_halfface_property<int>("rotation")`) and must belong to the tet mesh
+/// passed to the call.
 ///
-/// The transitions are those HexEx infers from the corner parameters as given
-/// (computeTransitions(), with ExtractionOptions::given_rotations when set), the singular
-/// edges those of singularityGraph().
-struct OvmTetResults {
+/// The transitions written are those HexEx infers from the corner parameters as given
+/// (computeTransitions()), with the given rotations when set; the singular edges those of
+/// singularityGraph().
+struct OvmTetProperties {
+    /// Read: per halfface, the rotation index (0..23) of the transition into the neighbour
+    /// (same convention as #rotation), used instead of inferring it from the parameters
+    /// (ExtractionOptions::given_rotations; the translations are still inferred). A value
+    /// outside 0..23 on an interior halfface is an InputError.
+    const OpenVolumeMesh::HalfFacePropertyT<int>* given_rotation = nullptr;
     /// Per halfface `h` of cell `c`: the rotation index (0..23, see Rotation) of the
     /// transition from the chart of `c` into the chart of the cell across `h`; 0 (the
     /// identity) on the boundary.
@@ -103,7 +109,7 @@ struct OvmTetResults {
 /// the result written in bulk (see OvmHexOutput; @p hexMesh is cleared first; a hexahedral
 /// kernel skips non-hex cells, which the report still counts). Vertex and cell indices are
 /// the handles' indices: the mesh must not contain deleted entities. @p results names
-/// properties of @p tetMesh that receive the transitions and singular edges (OvmTetResults).
+/// properties of @p tetMesh that receive the transitions and singular edges (OvmTetProperties).
 ///
 /// Throws InputError if a cell is not a tetrahedron, lacks the parameter of one of its
 /// vertices, or the input is otherwise unusable (see the built-in extractHexMesh()).
@@ -112,7 +118,7 @@ template <class TetMeshT, class VecT, class HexMeshT,
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
                                 HexMeshT& hexMesh, const ExtractionOptions& options = {},
-                                const OvmTetResults& results = {});
+                                const OvmTetProperties& results = {});
 
 /// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
 /// hexahedral or polyhedral mesh @p hexMesh, the map given as in HexHex: the value on a
@@ -125,7 +131,7 @@ template <class TetMeshT, class VecT, class HexMeshT,
           std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
                                 HexMeshT& hexMesh, const ExtractionOptions& options = {},
-                                const OvmTetResults& results = {});
+                                const OvmTetProperties& results = {});
 
 /// Input view of an OpenVolumeMesh tet mesh (any kernel with `Vec3d` geometry whose cells
 /// are tetrahedra: TetrahedralMeshTopologyKernel or the polyhedral TopologyKernel) with its

@@ -61,9 +61,12 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
 
 /// Copies the tets of @p mesh into the built-in kernel, corners as OvmTetMesh reads them, the
 /// parameter of corner `v` opposite halfface `hf` of cell `c` being `paramOf(hf, c, v)`
-/// (indexable by 0..2), and builds the adjacency with @p threads threads.
+/// (indexable by 0..2), and builds the adjacency with @p threads threads. With @p given,
+/// fills @p givenOut with its value per built-in halfface (4 c + corner).
 template <class Mesh, class ParamOf>
-ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf, int threads) {
+ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf, int threads,
+                                             const OpenVolumeMesh::HalfFacePropertyT<int>* given = nullptr,
+                                             std::vector<int>* givenOut = nullptr) {
     if (mesh.needs_garbage_collection())
         throw InputError("OpenVolumeMesh mesh has deleted entities: call collect_garbage() first");
     const std::size_t nv = mesh.n_vertices(), nc = mesh.n_cells();
@@ -74,6 +77,7 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     ParametrizedTetMesh pm;
     pm.mesh.reserve(nv, nc);
     pm.params.resize(nc);
+    if (given) givenOut->assign(4 * nc, 0);
     for (std::size_t v = 0; v < nv; ++v) {
         const auto& p = mesh.vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
         pm.mesh.add_vertex(Vec3d(p[0], p[1], p[2]));
@@ -89,6 +93,14 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
             h[i] = VertexHandle(cv[i].idx());
             const auto& u = paramOf(opposite[i], ch, cv[i]);
             pm.params[c][i] = Vec3d(u[0], u[1], u[2]);
+            if (given) {
+                const int r = (*given)[opposite[i]];
+                const bool interior = mesh.incident_cell(mesh.opposite_halfface_handle(opposite[i])).is_valid();
+                if (interior && (r < 0 || r > 23))
+                    throw InputError("OpenVolumeMesh halfface " + std::to_string(opposite[i].idx()) + ": given rotation " +
+                                     std::to_string(r) + " is not a rotation index (0..23)");
+                (*givenOut)[4 * c + i] = interior ? r : 0;
+            }
         }
         const Vec3d a = pm.mesh.position(h[0]);
         const Vec3d e1 = pm.mesh.position(h[1]) - a, e2 = pm.mesh.position(h[2]) - a, e3 = pm.mesh.position(h[3]) - a;
@@ -100,16 +112,17 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
         for (std::size_t c = 0; c < nc; ++c) {
             pm.mesh.swap_corners(CellHandle(static_cast<int>(c)), 1, 2);
             std::swap(pm.params[c][1], pm.params[c][2]);
+            if (given) std::swap((*givenOut)[4 * c + 1], (*givenOut)[4 * c + 2]);
         }
     pm.mesh.build_adjacency(threads);
     return pm;
 }
 
 /// Writes the transitions and singular edges of @p pm (read from @p tetMesh by
-/// ovmToParametrizedTetMesh()) into the properties named by @p results.
+/// ovmToParametrizedTetMesh()) into the properties named by @p results (written entries only).
 template <class TetMeshT>
-void writeOvmTetResults(const TetMeshT& tetMesh, const ParametrizedTetMesh& pm, const ExtractionOptions& options,
-                        const OvmTetResults& results) {
+void writeOvmTetProperties(const TetMeshT& tetMesh, const ParametrizedTetMesh& pm, const ExtractionOptions& options,
+                        const OvmTetProperties& results) {
     if (!results.rotation && !results.translation && !results.singular_valence) return;
     const int threads = resolveThreadCount(options.threads);
     const Transitions tr = computeTransitions(pm.mesh, pm.params, options.given_rotations, threads);
@@ -147,13 +160,17 @@ void writeOvmTetResults(const TetMeshT& tetMesh, const ParametrizedTetMesh& pm, 
 /// write the hex mesh in bulk.
 template <class TetMeshT, class HexMeshT, class ParamOf>
 ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT& hexMesh,
-                            const ExtractionOptions& options, const OvmTetResults& results) {
+                            const ExtractionOptions& options, const OvmTetProperties& results) {
     HexMesh hm;
     ExtractionReport report;
     {
-        const ParametrizedTetMesh pm = ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads);
-        report = extractHexMesh(pm, hm, options);
-        writeOvmTetResults(tetMesh, pm, options, results);
+        std::vector<int> given;
+        ExtractionOptions opt = options;
+        const ParametrizedTetMesh pm =
+            ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads, results.given_rotation, &given);
+        if (results.given_rotation) opt.given_rotations = &given;
+        report = extractHexMesh(pm, hm, opt);
+        writeOvmTetProperties(tetMesh, pm, opt, results);
     }  // the copy of the input is freed before the output is written
     OvmHexOutput<HexMeshT> out(hexMesh);
     fromHexMesh(hm, out);
@@ -165,7 +182,7 @@ ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetResults& results) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle&, const OpenVolumeMesh::CellHandle& ch,
@@ -182,7 +199,7 @@ ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
 
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetResults& results) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,

@@ -235,7 +235,7 @@ TEST(OvmNativeCall, TransitionsAndSingularEdgesWrittenIntoTheTetMesh) {
     auto rotation = tets.request_halfface_property<int>("rotation", -1);
     auto translation = tets.request_halfface_property<OpenVolumeMesh::Geometry::Vec3i>("translation");
     auto valence = tets.request_edge_property<int>("valence", -1);
-    HexEx::OvmTetResults results;
+    HexEx::OvmTetProperties results;
     results.rotation = &rotation;
     results.translation = &translation;
     results.singular_valence = &valence;
@@ -299,4 +299,48 @@ TEST(OvmNativeCall, TransitionsAndSingularEdgesWrittenIntoTheTetMesh) {
     const HexEx::SingularityGraph graph = HexEx::singularityGraph(pm);
     EXPECT_EQ(graph.segments.size(), singular);
     for (int v : graph.valences) EXPECT_EQ(v, 3);
+}
+
+TEST(OvmNativeCall, GivenRotationsAreHonoured) {
+    HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(3, 2, 3, 1, 1);
+    TetMesh tets;
+    ASSERT_EQ(HexExTestSupport::buildOvmTets(pm, tets), 0u);
+    const auto igm = *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    // The rotations HexEx infers, written by one call and given to the next: the same hexes.
+    auto rotation = tets.request_halfface_property<int>("rotation");
+    HexEx::OvmTetProperties write;
+    write.rotation = &rotation;
+    HexMeshOvm first, second;
+    const HexEx::ExtractionReport r1 = HexEx::extractHexMesh(tets, igm, first, HexEx::ExtractionOptions{}, write);
+    HexEx::OvmTetProperties read;
+    read.given_rotation = &rotation;
+    const HexEx::ExtractionReport r2 = HexEx::extractHexMesh(tets, igm, second, HexEx::ExtractionOptions{}, read);
+    EXPECT_TRUE(r2.valid_all_hex);
+    EXPECT_EQ(r2.input.singular_edges, r1.input.singular_edges);
+    EXPECT_GT(r1.input.singular_edges, 0);
+    expectSameOvmMesh(second, first);
+    // All-identity rotations given: the transitions around the axis compose to the identity,
+    // so the extraction sees no singular edge (the given matching is used, not inferred).
+    auto identity = tets.request_halfface_property<int>("identity", 0);
+    read.given_rotation = &identity;
+    HexMeshOvm third;
+    const HexEx::ExtractionReport r3 = HexEx::extractHexMesh(tets, igm, third, HexEx::ExtractionOptions{}, read);
+    EXPECT_EQ(r3.input.singular_edges, 0);
+    // A value that is no rotation index names the halfface.
+    auto bad = tets.request_halfface_property<int>("bad", 0);
+    OpenVolumeMesh::HalfFaceHandle interior;
+    for (std::size_t h = 0; h < tets.n_halffaces() && !interior.is_valid(); ++h) {
+        const OpenVolumeMesh::HalfFaceHandle hf{int(h)};
+        if (tets.incident_cell(hf).is_valid() && tets.incident_cell(tets.opposite_halfface_handle(hf)).is_valid()) interior = hf;
+    }
+    ASSERT_TRUE(interior.is_valid());
+    bad[interior] = 24;
+    read.given_rotation = &bad;
+    try {
+        HexEx::extractHexMesh(tets, igm, third, HexEx::ExtractionOptions{}, read);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_EQ(std::string(e.what()), "OpenVolumeMesh halfface " + std::to_string(interior.idx()) +
+                                             ": given rotation 24 is not a rotation index (0..23)");
+    }
 }
