@@ -124,7 +124,7 @@ void edgeUses(const HexMesh& mesh, const CornerStars& st, std::size_t v, std::ve
 
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     const std::size_t nHex = mesh.hexes.size(), nLoops = 6 * nHex, nv = mesh.vertices.size();
-    if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 8)) return false;
+    if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12)) return false;  // halffaces fit in int
     const int chunks = chunksFor(nHex, threads), vChunks = chunksFor(nv, threads);
     const auto loopVertex = [&](std::size_t l, int j) {
         return mesh.hexes[l / 6][static_cast<std::size_t>(kOvmHexFaces[l % 6][j & 3])];

@@ -31,7 +31,7 @@ constexpr int kOvmHexOrder[6] = {0, 1, 5, 3, 4, 2};
 /// Same result for any @p threads.
 /// @return false (and @p out unspecified) if the mesh is outside what it covers: a hex with a
 /// repeated vertex, a quad whose vertices bound quads of more than two hexes, or more than
-/// INT_MAX / 8 hexes; buildOvmFaces() must be used then.
+/// INT_MAX / 12 hexes; buildOvmFaces() must be used then.
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out);
 
 } // namespace HexEx
