@@ -26,6 +26,10 @@ struct AssembleOutput {
     GMapValidation validation;          ///< validator result on the map
     AssemblyStats stats;                ///< counts of the assembly
     std::vector<std::string> warnings;  ///< warnings of this stage
+    /// False if the map is valid and all-hex but the assembled mesh is not what it describes
+    /// (checkAssembledHexes(): vertex identification merged distinct quads or corners);
+    /// a warning then names what is wrong.
+    bool mesh_agrees = true;
     /// With AssembleInput::want_hex_darts: per hex built from darts, its dart at corner 0
     /// whose frame points to corners 1, 3 and 4 (see assembleHexMesh()).
     std::vector<int> hex_darts;

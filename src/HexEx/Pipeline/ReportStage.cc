@@ -49,7 +49,7 @@ void addToReport(const AssembleOutput& out, ExtractionReport& rep) {
     rep.output.quads = out.stats.quads;
     rep.output.boundary_quads = out.stats.boundary_quads;
     appendWarnings(out.warnings, rep);
-    rep.valid_all_hex = rep.validation.valid() && out.stats.non_hex_cells == 0 && rep.darts.remaining_anti == 0;
+    rep.valid_all_hex = rep.validation.valid() && out.stats.non_hex_cells == 0 && rep.darts.remaining_anti == 0 && out.mesh_agrees;
 }
 
 void addToReport(const HexArcs& arcs, ExtractionReport& rep) {

@@ -1,0 +1,74 @@
+// checkAssembledHexes(): the linear check of an assembled all-hex mesh that keeps the report
+// from calling a mesh valid that checkHexMesh() rejects (vertex identification merging
+// distinct quads or corners of a valid map).
+
+#include <HexEx/Mesh/HexMeshCheck.hh>
+#include <HexEx/Postprocessing/AssembledMeshCheck.hh>
+
+#include <gtest/gtest.h>
+
+using namespace HexEx;
+
+namespace {
+
+/// A column of @p n unit hexes along z (vertices 4k..4k+3 at height k).
+HexMesh column(int n) {
+    HexMesh m;
+    for (int k = 0; k <= n; ++k)
+        for (auto xy : {std::array<double, 2>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) m.vertices.push_back(Vec3d(xy[0], xy[1], k));
+    for (int k = 0; k < n; ++k) m.hexes.push_back({4 * k, 4 * k + 1, 4 * k + 2, 4 * k + 3, 4 * k + 4, 4 * k + 5, 4 * k + 6, 4 * k + 7});
+    return m;
+}
+
+} // namespace
+
+TEST(AssembledMeshCheck, AValidColumnAgreesWithItsQuadCounts) {
+    const AssembledMeshCheck c = checkAssembledHexes(column(3));
+    EXPECT_EQ(c.quads, 16);
+    EXPECT_EQ(c.boundary_quads, 14);
+    EXPECT_EQ(c.repeated_corner_hexes, 0);
+    EXPECT_EQ(c.quads_shared_by_more_than_two, 0);
+    EXPECT_EQ(c.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(c.nonmanifold_boundary_vertices, 0);
+    EXPECT_TRUE(c.agrees(16, 14));
+    EXPECT_EQ(c.warning(16, 14), "");
+    EXPECT_FALSE(c.agrees(17, 14));  // a map with one quad more: two of its quads were merged
+    EXPECT_EQ(c.warning(17, 14), "the vertex identification broke the mesh the valid map describes: 16 distinct quads (14 on the "
+                                 "boundary) where the map has 17 (14) (distinct vertices of the map were merged)");
+}
+
+TEST(AssembledMeshCheck, AgreesWithCheckHexMeshOnAQuadInThreeHexes) {
+    HexMesh m = column(2);
+    // A third hex on the top of the first one (vertices 4..7), going down through new vertices.
+    for (auto xy : {std::array<double, 2>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) m.vertices.push_back(Vec3d(xy[0] + 3, xy[1], 0));
+    m.hexes.push_back({12, 13, 14, 15, 4, 5, 6, 7});
+    const AssembledMeshCheck c = checkAssembledHexes(m);
+    const HexMeshCheckResult w = checkHexMesh(m);
+    EXPECT_EQ(c.quads_shared_by_more_than_two, 1);
+    EXPECT_EQ(w.quads_shared_by_more_than_two, 1);
+    EXPECT_EQ(c.quads, w.quads);
+    EXPECT_EQ(c.boundary_quads, w.boundary_quads);
+    EXPECT_EQ(c.nonmanifold_boundary_edges, w.nonmanifold_boundary_edges);
+    EXPECT_EQ(c.nonmanifold_boundary_vertices, w.nonmanifold_boundary_vertices);
+    EXPECT_FALSE(c.agrees(c.quads, c.boundary_quads));
+    EXPECT_FALSE(w.valid_all_hex);
+}
+
+TEST(AssembledMeshCheck, FindsRepeatedCornersAndPinchedBoundaries) {
+    HexMesh m = column(1);
+    m.hexes[0][6] = 5;
+    EXPECT_EQ(checkAssembledHexes(m).repeated_corner_hexes, 1);
+    EXPECT_EQ(checkAssembledHexes(HexMesh{m.vertices, {{0, 1, 2, 3, 4, 5, 6, 99}}, {}}).repeated_corner_hexes, 1);
+    // Two hexes touching in one vertex (vertex 6 of the first is vertex 0 of the second).
+    HexMesh p = column(1);
+    for (int k = 0; k < 2; ++k)
+        for (auto xy : {std::array<double, 2>{1, 1}, {2, 1}, {2, 2}, {1, 2}}) p.vertices.push_back(Vec3d(xy[0], xy[1], 1 + k));
+    p.hexes.push_back({8, 9, 10, 11, 12, 13, 14, 15});
+    p.hexes[1][0] = 6;
+    const AssembledMeshCheck c = checkAssembledHexes(p);
+    EXPECT_EQ(c.nonmanifold_boundary_vertices, checkHexMesh(p).nonmanifold_boundary_vertices);
+    EXPECT_EQ(c.nonmanifold_boundary_vertices, 1);
+    EXPECT_EQ(c.nonmanifold_boundary_edges, 0);
+    EXPECT_EQ(c.quads, 12);
+    EXPECT_FALSE(c.agrees(12, 12));
+}
