@@ -84,9 +84,18 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh) {
         std::sort(k.begin(), k.end());
         return k;
     };
-    auto quadBucket = [&](long q) { return good[static_cast<std::size_t>(q / 6)] ? quadKey(q)[0] : 0; };
+    std::vector<int> smallest(static_cast<std::size_t>(6 * nh), 0);  // bucket of each quad item
+    for (long h = 0; h < nh; ++h) {
+        if (!good[static_cast<std::size_t>(h)]) continue;
+        const auto& c = H[static_cast<std::size_t>(h)];
+        for (int f = 0; f < 6; ++f) {
+            const int* l = kHexFaces[f];
+            smallest[static_cast<std::size_t>(6 * h + f)] = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
+        }
+    }
     std::vector<long> start, order;
-    bucketByVertex(nv, 6 * nh, quadBucket, start, order);
+    bucketByVertex(nv, 6 * nh, [&](long q) { return smallest[static_cast<std::size_t>(q)]; }, start, order);
+    std::vector<int>().swap(smallest);
     std::vector<std::pair<std::array<int, 4>, long>> bucket;
     std::vector<long> boundary;  // quad items in exactly one hex
     for (long v = 0; v < nv; ++v) {
