@@ -52,6 +52,8 @@ void setUntangleValues(hexex_result* r, const HexEx::UntangleReport& u) {
     r->values[HEXEX_VALUE_UNTANGLE_MOVED_VERTICES] = static_cast<double>(u.moved_vertices);
     r->values[HEXEX_VALUE_UNTANGLE_MAX_DISPLACEMENT] = u.max_displacement;
     r->values[HEXEX_VALUE_UNTANGLE_SECONDS] = u.seconds;
+    r->values[HEXEX_VALUE_UNTANGLE_INVALID_BEFORE] = static_cast<double>(u.invalid_before);
+    r->values[HEXEX_VALUE_UNTANGLE_INVALID_AFTER] = static_cast<double>(u.invalid_after);
 }
 
 void flattenPolyhedra(hexex_result* r) {

@@ -8,6 +8,7 @@
 #include <HexEx/Extraction/ExtractionReport.hh>
 #include <HexEx/IO/ReportJson.hh>
 #include <HexEx/Mesh/HexMesh.hh>
+#include <HexEx/Untangling/HexOptimizer.hh>
 #include <HexEx/Untangling/Untangler.hh>
 
 #include <cstdint>
@@ -30,6 +31,7 @@ struct hexex_result {
     std::optional<HexEx::ExtractionReport> extraction;  ///< the extraction report (extraction results)
     HexEx::ReportExtras extras;                 ///< quality etc. for the extraction report's JSON
     std::optional<HexEx::UntangleReport> untangle;      ///< the last untangling run, if any
+    std::optional<HexEx::OptimizeReport> optimize;      ///< the last optimisation run, if any
 };
 
 namespace HexExC {

@@ -112,14 +112,26 @@ typedef enum hexex_value {
     HEXEX_VALUE_INVALID_CELLS = 47,         /**< cells with an out-of-range or repeated vertex index (skipped) */
     HEXEX_VALUE_EULER_CHARACTERISTIC = 48,  /**< V - E + F - C */
     /* Untangling (hexex_untangle(), hexex_result_untangle()). */
-    HEXEX_VALUE_UNTANGLE_SUCCESS = 60,              /**< 1 if no hex is inverted afterwards, else 0 */
+    HEXEX_VALUE_UNTANGLE_SUCCESS = 60,              /**< 1 if every hex is certified valid afterwards (no invalid or undecided hex), else 0 */
     HEXEX_VALUE_UNTANGLE_INVERTED_BEFORE = 61,      /**< inverted hexes before */
     HEXEX_VALUE_UNTANGLE_INVERTED_AFTER = 62,       /**< inverted hexes after */
     HEXEX_VALUE_UNTANGLE_MIN_SCALED_JACOBIAN_BEFORE = 63, /**< minimum scaled Jacobian before */
     HEXEX_VALUE_UNTANGLE_MIN_SCALED_JACOBIAN_AFTER = 64,  /**< minimum scaled Jacobian after */
     HEXEX_VALUE_UNTANGLE_MOVED_VERTICES = 65,       /**< vertices whose position changed */
     HEXEX_VALUE_UNTANGLE_MAX_DISPLACEMENT = 66,     /**< largest displacement / bounding-box diagonal */
-    HEXEX_VALUE_UNTANGLE_SECONDS = 67               /**< wall-clock seconds of the untangling */
+    HEXEX_VALUE_UNTANGLE_SECONDS = 67,              /**< wall-clock seconds of the untangling */
+    HEXEX_VALUE_UNTANGLE_INVALID_BEFORE = 68,       /**< hexes not certified valid (invalid) before */
+    HEXEX_VALUE_UNTANGLE_INVALID_AFTER = 69,        /**< and after */
+    /* Optimisation (hexex_optimize(), hexex_result_optimize()). */
+    HEXEX_VALUE_OPTIMIZE_SUCCESS = 80,              /**< 1 if the input was accepted (no inverted hex), else 0 */
+    HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_BEFORE = 81,  /**< worst scaled Jacobian before */
+    HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_AFTER = 82,   /**< worst scaled Jacobian after (never lower) */
+    HEXEX_VALUE_OPTIMIZE_MEAN_SCALED_JACOBIAN_BEFORE = 83, /**< mean scaled Jacobian before */
+    HEXEX_VALUE_OPTIMIZE_MEAN_SCALED_JACOBIAN_AFTER = 84,  /**< mean scaled Jacobian after */
+    HEXEX_VALUE_OPTIMIZE_REACHED_TARGET = 85,       /**< 1 if the worst scaled Jacobian reached the target */
+    HEXEX_VALUE_OPTIMIZE_INVALID_AFTER = 86,        /**< hexes not certified valid afterwards */
+    HEXEX_VALUE_OPTIMIZE_MAX_SURFACE_DISTANCE = 87, /**< largest distance of a boundary vertex to the surface */
+    HEXEX_VALUE_OPTIMIZE_SECONDS = 88               /**< wall-clock seconds of the optimisation */
 } hexex_value;
 
 /** Options of hexex_extract(); set the defaults with hexex_extraction_options_init(). The
@@ -160,6 +172,24 @@ typedef struct hexex_untangle_options {
     int64_t n_surface_triangles;       /**< triangles in surface_triangles */
 } hexex_untangle_options;
 
+/** Options of hexex_optimize() and hexex_result_optimize(); set the defaults with
+ *  hexex_optimize_options_init(). The fields mirror HexEx::OptimizeOptions. */
+typedef struct hexex_optimize_options {
+    size_t size;                /**< sizeof(hexex_optimize_options), set by the init function */
+    int threads;                /**< worker threads, 0 = all (default 0); the result does not depend on it */
+    int fixed_boundary;         /**< non-zero: boundary vertices stay; 0: they slide on the surface (default 0) */
+    double target;              /**< stop once the worst scaled Jacobian reaches this (default 0.9, in (-1, 1]) */
+    double feature_angle_deg;   /**< surface edges sharper than this are feature curves (default 40) */
+    int max_global_blocks;      /**< L-BFGS blocks of the global phase at most (default 40, 0 = none) */
+    int max_local_passes;       /**< vertex-by-vertex passes at most (default 60, 0 = none) */
+    /** Optional boundary surface (3 doubles per point) the boundary vertices stay on; NULL
+     *  (default): the boundary of the hex mesh itself. */
+    const double* surface_points;
+    int64_t n_surface_points;          /**< points in surface_points */
+    const int32_t* surface_triangles;  /**< 3 point indices per triangle (with surface_points) */
+    int64_t n_surface_triangles;       /**< triangles in surface_triangles */
+} hexex_optimize_options;
+
 /** Opaque result of a call: a hex mesh as flat arrays, values, a JSON report, or an error. */
 typedef struct hexex_result hexex_result;
 
@@ -177,6 +207,9 @@ HEXEX_C_API void hexex_extraction_options_init(hexex_extraction_options* options
 
 /** Fills @p options with the defaults (does nothing if @p options is NULL). */
 HEXEX_C_API void hexex_untangle_options_init(hexex_untangle_options* options);
+
+/** Fills @p options with the defaults (does nothing if @p options is NULL). */
+HEXEX_C_API void hexex_optimize_options_init(hexex_optimize_options* options);
 
 /** Extracts the hex mesh of a tet mesh with an integer-grid map.
  *  @param points   3 doubles (x, y, z) per vertex
@@ -235,6 +268,30 @@ HEXEX_C_API hexex_status hexex_untangle(double* points, int64_t n_points, const 
  *  @p result is NULL, failed or bad options were given; the error is also stored in
  *  @p result (its mesh is then unchanged). */
 HEXEX_C_API hexex_status hexex_result_untangle(hexex_result* result, const hexex_untangle_options* options);
+
+/** Raises the worst scaled Jacobian of a hex mesh in place (HexEx::optimizeHexMesh()): every
+ *  accepted step keeps every hex certified valid and never lowers the worst scaled Jacobian;
+ *  boundary vertices stay on the surface, feature curves and corners are kept.
+ *  @param points   3 doubles per vertex, overwritten with the new positions
+ *  @param n_points number of vertices
+ *  @param hexes    8 vertex indices per hex, VTK order
+ *  @param n_hexes  number of hexes
+ *  @param options  NULL for the defaults
+ *  @param result   receives the report (HEXEX_VALUE_OPTIMIZE_* and the quality values, JSON
+ *                  with the field names of HexEx::OptimizeReport), no mesh
+ *  @return HEXEX_OK also when the input is refused because a hex is inverted (then
+ *  HEXEX_VALUE_OPTIMIZE_SUCCESS is 0, the points are unchanged and
+ *  hexex_result_error_message() is empty; the JSON's "message" says why: untangle first);
+ *  HEXEX_ERROR_INPUT for an index out of range (points unchanged). */
+HEXEX_C_API hexex_status hexex_optimize(double* points, int64_t n_points, const int32_t* hexes, int64_t n_hexes,
+                                        const hexex_optimize_options* options, hexex_result** result);
+
+/** Optimises the mesh held by @p result (e.g. from hexex_extract(), after
+ *  hexex_result_untangle() if it has inverted hexes) in place; vertices of polyhedra do not
+ *  move. Adds the HEXEX_VALUE_OPTIMIZE_* values, updates the quality values and adds the
+ *  key "optimize" to the JSON report of an extraction. Pointers obtained before stay valid.
+ *  @return as hexex_result_untangle(). */
+HEXEX_C_API hexex_status hexex_result_optimize(hexex_result* result, const hexex_optimize_options* options);
 
 /** Frees @p result and all arrays it owns (NULL is allowed). */
 HEXEX_C_API void hexex_result_free(hexex_result* result);

@@ -231,6 +231,8 @@ static void test_untangle(void) {
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_INVERTED_BEFORE) == 1); /* the hex [1,2]^3 */
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_MIN_SCALED_JACOBIAN_BEFORE) < 0);
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_INVERTED_AFTER) == 0);
+    CHECK(value(r, HEXEX_VALUE_UNTANGLE_INVALID_BEFORE) == 1);
+    CHECK(value(r, HEXEX_VALUE_UNTANGLE_INVALID_AFTER) == 0);
     CHECK(value(r, HEXEX_VALUE_UNTANGLE_SUCCESS) == 1);
     CHECK(value(r, HEXEX_VALUE_INVERTED_HEXES) == 0);
     CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 0);
@@ -255,6 +257,71 @@ static void test_untangle(void) {
     CHECK(hexex_untangle(points, 27, hexes, 8, &opt, &r) == HEXEX_ERROR_INVALID_ARGUMENT);
     CHECK(strcmp(hexex_result_error_message(r), "untangle options: rings must be >= 1, got 0") == 0);
     hexex_result_free(r);
+}
+
+/* The optimiser on a 3x3x3 grid whose centre vertex was moved: the worst scaled Jacobian
+ * rises, every hex stays certified valid, the boundary (fixed) does not move. */
+static void test_optimize(void) {
+    double points[64 * 3], before[64 * 3];
+    int32_t hexes[27 * 8];
+    hexex_result* r = NULL;
+    hexex_optimize_options opt;
+    int x, y, z, i, n = 0;
+    static const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                                     {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+    for (z = 0; z < 4; ++z)
+        for (y = 0; y < 4; ++y)
+            for (x = 0; x < 4; ++x) {
+                points[3 * (x + 4 * y + 16 * z) + 0] = x;
+                points[3 * (x + 4 * y + 16 * z) + 1] = y;
+                points[3 * (x + 4 * y + 16 * z) + 2] = z;
+            }
+    for (z = 0; z < 3; ++z)
+        for (y = 0; y < 3; ++y)
+            for (x = 0; x < 3; ++x, ++n)
+                for (i = 0; i < 8; ++i)
+                    hexes[8 * n + i] = (x + corner[i][0]) + 4 * (y + corner[i][1]) + 16 * (z + corner[i][2]);
+    /* Interior vertices (1,1,1) .. (2,2,2): pull two of them towards each other. */
+    points[3 * (1 + 4 * 1 + 16 * 1) + 0] = 1.3;
+    points[3 * (1 + 4 * 1 + 16 * 1) + 1] = 1.25;
+    points[3 * (2 + 4 * 2 + 16 * 2) + 2] = 1.75;
+    for (i = 0; i < 64 * 3; ++i) before[i] = points[i];
+
+    hexex_optimize_options_init(&opt);
+    CHECK(opt.size == sizeof opt && opt.target == 0.9 && opt.fixed_boundary == 0);
+    opt.fixed_boundary = 1;
+    opt.threads = 1;
+    CHECK(hexex_optimize(points, 64, hexes, 27, &opt, &r) == HEXEX_OK);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_SUCCESS) == 1);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_BEFORE) > 0);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_AFTER) >
+          value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_BEFORE) + 0.1);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_INVALID_AFTER) == 0);
+    CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 0);
+    CHECK(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) == value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_AFTER));
+    CHECK(strstr(hexex_result_report_json(r), "\"min_scaled_jacobian_after\"") != NULL);
+    /* Boundary vertices (a coordinate 0 or 3) stayed bit for bit. */
+    for (i = 0; i < 64; ++i) {
+        const int ix = i % 4, iy = (i / 4) % 4, iz = i / 16;
+        if (ix == 0 || ix == 3 || iy == 0 || iy == 3 || iz == 0 || iz == 3)
+            CHECK(points[3 * i] == before[3 * i] && points[3 * i + 1] == before[3 * i + 1] &&
+                  points[3 * i + 2] == before[3 * i + 2]);
+    }
+    hexex_result_free(r);
+
+    /* Bad options and indices: clear errors, the points unchanged. */
+    hexex_optimize_options_init(&opt);
+    opt.target = 2;
+    CHECK(hexex_optimize(points, 64, hexes, 27, &opt, &r) == HEXEX_ERROR_INVALID_ARGUMENT);
+    CHECK(strcmp(hexex_result_error_message(r), "optimize options: target must be in (-1, 1], got 2") == 0);
+    hexex_result_free(r);
+    for (i = 0; i < 64 * 3; ++i) before[i] = points[i];
+    hexes[5] = 64;
+    CHECK(hexex_optimize(points, 64, hexes, 27, NULL, &r) == HEXEX_ERROR_INPUT);
+    CHECK(strcmp(hexex_result_error_message(r), "hex 0: vertex index 64 out of range (the mesh has 64 vertices)") == 0);
+    for (i = 0; i < 64 * 3; ++i) CHECK(points[i] == before[i]);
+    hexex_result_free(r);
+    CHECK(hexex_result_optimize(NULL, NULL) == HEXEX_ERROR_INVALID_ARGUMENT);
 }
 
 /* Reads a .hexex file into flat arrays (returns 0 on failure). */
@@ -341,6 +408,7 @@ int main(int argc, char** argv) {
     test_cube();
     test_errors();
     test_untangle();
+    test_optimize();
     if (argc > 1)
         test_sphere(argv[1]);
     else
