@@ -50,7 +50,7 @@ def _check_float(value, name: str) -> float:
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
             rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False,
-            annihilation_retries: bool = True) -> ExtractionResult:
+            annihilation_retries: bool = True, optimize: bool = False) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
     Args:
@@ -82,6 +82,10 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             :func:`untangle`), boundary vertices on the boundary of the input tet mesh
             (``hexex extract --untangle``). The report then has the key ``untangle`` (the
             untangling report) and its ``quality`` is measured after untangling.
+        optimize: afterwards raise the worst scaled Jacobian (see :func:`optimize`),
+            boundary vertices on the boundary of the input tet mesh; implies ``untangle``
+            (``hexex extract --optimize``). The report then also has the key ``optimize``
+            and its ``quality`` is measured after optimising.
 
     Returns:
         ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
@@ -105,13 +109,19 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     pts, hexes, polyhedra, report = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
                                                   max_memory, bool(cheap_folds), bool(annihilation_retries))
     report = json.loads(report)
-    if untangle:
-        pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, _boundary_triangles(tets), False,
+    if untangle or optimize:
+        boundary = _boundary_triangles(tets)
+        pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, boundary, False,
                                                   threads, 1, 40.0, False, 10)
         report["untangle"] = u
-        report["quality"] = {"min_scaled_jacobian": u["min_scaled_jacobian_after"],
-                             "mean_scaled_jacobian": u["mean_scaled_jacobian_after"],
-                             "inverted_hexes": u["inverted_after"]}
+        if optimize:
+            pts, hexes, polyhedra, o = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
+                                                      0.9, 40.0, 40, 60)
+            report["optimize"] = o
+        # The quality keys of the report, measured on the moved mesh (as hexex extract does).
+        quality = _core.validate(pts, hexes, polyhedra)["quality"]
+        report["quality"] = {k: quality[k] for k in ("min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes",
+                                                     "invalid_hexes", "undecided_hexes", "certified_valid")}
     return ExtractionResult(pts, hexes, polyhedra, report)
 
 

@@ -101,3 +101,21 @@ def test_untangle_quality_iterations():
     assert better.report["min_scaled_jacobian_after"] > plain.report["min_scaled_jacobian_after"] > 0
     with pytest.raises(ValueError, match="quality_iterations must be >= 0"):
         hexex.untangle(mesh.points, mesh.hexes, quality_iterations=-1)
+
+
+def test_extract_untangle_and_optimize_agree_with_the_cli(cli, tmp_path):
+    # extract(..., optimize=True) runs what `hexex extract --optimize` runs: the same points.
+    m = hexex.perturb(hexex.generate_cylinder(4, 3, 2, 3, 2), 0.8, seed=1)
+    r = hexex.extract(*m, optimize=True, threads=2)
+    q = r.report["quality"]
+    assert q["inverted_hexes"] == 0 and q["invalid_hexes"] == 0 and q["certified_valid"] is True
+    assert r.report["optimize"]["success"] is True
+    assert r.report["optimize"]["min_scaled_jacobian_after"] >= r.report["untangle"]["min_scaled_jacobian_after"]
+    assert q["min_scaled_jacobian"] == r.report["optimize"]["min_scaled_jacobian_after"]
+    untangled = hexex.extract(*m, untangle=True, threads=2)
+    assert untangled.report["quality"]["certified_valid"] is True
+    assert "optimize" not in untangled.report
+    path = tmp_path / "m.hexex"
+    hexex.write_map(path, *m)
+    cli("extract", path, "-o", tmp_path / "o.vtu", "--optimize", "--threads", "2")
+    assert np.array_equal(hexex.read_hex_mesh(tmp_path / "o.vtu").points, r.points)
