@@ -11,7 +11,7 @@ See Documentation/python.md for the whole API.
 
 from . import _core
 from ._api import (HexExWarning, extract, generate_cube, generate_cylinder, generate_ring, generate_twisted_ring,
-                   map_statistics, optimize, parameter_noise, perturb, random_charts, read_hex_mesh, read_map,
+                   map_statistics, optimize, parameter_noise, perturb, perturb_hex_mesh, random_charts, read_hex_mesh, read_map,
                    untangle, validate, write_hex_mesh, write_map)
 from ._types import ExtractionResult, HexMesh, OptimizeResult, TetMap, UntangleResult
 
@@ -21,7 +21,7 @@ __version__ = _core.version()
 __all__ = [
     "ExtractionResult", "HexExWarning", "HexMesh", "TetMap", "__version__", "extract", "generate_cube",
     "generate_cylinder", "generate_ring", "generate_twisted_ring", "map_statistics", "OptimizeResult", "optimize",
-    "parameter_noise", "perturb",
+    "parameter_noise", "perturb", "perturb_hex_mesh",
     "random_charts", "read_hex_mesh", "read_map", "UntangleResult", "untangle", "validate", "write_hex_mesh",
     "write_map",
 ]

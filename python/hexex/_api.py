@@ -338,6 +338,22 @@ def parameter_noise(tet_map: TetMap, amplitude: float, seed: int = 1) -> TetMap:
                                          _check_seed(seed)))
 
 
+def perturb_hex_mesh(mesh: HexMesh, fraction: float, seed: int = 1, *, return_stats: bool = False):
+    """A tangled copy of the hex mesh ``mesh`` (``hexex perturb HEX.vtu -a fraction``), to test
+    the untangler: every interior vertex moves by a vector uniform in [-d, d]^3, d =
+    ``fraction`` times the mean length of its edges; boundary vertices and vertices of
+    polyhedra keep their positions bit for bit, so the input stays a valid placement with the
+    same boundary. A fraction around 1 inverts most hexes of a regular mesh. The same seed
+    gives the same result on every platform. With ``return_stats=True`` returns
+    ``(HexMesh, stats dict)`` (vertices, interior_vertices, moved_vertices, inverted_before,
+    inverted_after, max_displacement)."""
+    points, hexes, polyhedra = _as_hex_mesh(mesh)
+    *arrays, stats = _core.perturb_hex_mesh(points, hexes, polyhedra, _check_float(fraction, "fraction"),
+                                            _check_seed(seed))
+    result = HexMesh(*arrays)
+    return (result, stats) if return_stats else result
+
+
 def perturb(tet_map: TetMap, amplitude: float, seed: int = 1, *, return_stats: bool = False):
     """A copy of ``tet_map`` whose vertex parameters are moved by uniform noise in
     [-amplitude, amplitude] consistently in all charts (paper section 5.1; boundary planes

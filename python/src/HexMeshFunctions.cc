@@ -7,6 +7,7 @@
 
 #include <HexEx/IO/HexMeshReaders.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
+#include <HexEx/Generators/Perturbation.hh>
 #include <HexEx/Mesh/HexMeshCheck.hh>
 
 #include <nanobind/stl/string.h>
@@ -83,6 +84,26 @@ void bindHexMeshFunctions(nb::module_& m) {
           nb::arg("polyhedra"), nb::arg("encoding"), "Writes a hex mesh (format by extension); returns warnings.");
     m.def("validate", &validateHexMesh, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
           "Checks a hex mesh (HexMeshCheck); returns a dict of counts.");
+    m.def(
+        "perturb_hex_mesh",
+        [](const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra, double fraction,
+           unsigned seed) {
+            HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+            HexEx::HexPerturbStats stats;
+            HexEx::perturbHexMesh(hm, fraction, seed, &stats);
+            nb::dict d;
+            d["vertices"] = stats.vertices;
+            d["interior_vertices"] = stats.interior_vertices;
+            d["moved_vertices"] = stats.moved_vertices;
+            d["inverted_before"] = stats.inverted_before;
+            d["inverted_after"] = stats.inverted_after;
+            d["max_displacement"] = stats.max_displacement;
+            nb::tuple mesh = hexMeshToArrays(std::move(hm));
+            return nb::make_tuple(mesh[0], mesh[1], mesh[2], d);
+        },
+        nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"), nb::arg("fraction"), nb::arg("seed"),
+        "Tangles a hex mesh (HexEx::perturbHexMesh: interior vertices moved by up to fraction x their "
+        "mean edge length, boundary bit for bit); returns (points, hexes, polyhedra, stats).");
 }
 
 } // namespace HexExPython

@@ -119,3 +119,22 @@ def test_extract_untangle_and_optimize_agree_with_the_cli(cli, tmp_path):
     hexex.write_map(path, *m)
     cli("extract", path, "-o", tmp_path / "o.vtu", "--optimize", "--threads", "2")
     assert np.array_equal(hexex.read_hex_mesh(tmp_path / "o.vtu").points, r.points)
+
+
+def test_perturb_hex_mesh_tangles_and_untangle_certifies():
+    points, hexes = grid_cube(6)
+    mesh = hexex.HexMesh(points, hexes)
+    tangled, stats = hexex.perturb_hex_mesh(mesh, 1.5, seed=2, return_stats=True)
+    boundary = np.any((points == 0) | (points == 1), axis=1)
+    assert stats["vertices"] == 343 and stats["interior_vertices"] == 125 and stats["moved_vertices"] == 125
+    assert np.array_equal(tangled.points[boundary], points[boundary])  # the boundary bit for bit
+    assert not np.array_equal(tangled.points[~boundary], points[~boundary])
+    assert stats["inverted_after"] > 0.8 * len(hexes)
+    again = hexex.perturb_hex_mesh(mesh, 1.5, seed=2)
+    assert np.array_equal(again.points, tangled.points)  # seeded
+    assert hexex.validate(tangled)["quality"]["inverted_hexes"] == stats["inverted_after"]
+    r = hexex.untangle(tangled.points, tangled.hexes, fixed_boundary=True, threads=2)
+    assert r.report["success"] is True and r.report["invalid_after"] == 0
+    assert hexex.validate(hexex.HexMesh(r.points, r.hexes))["quality"]["certified_valid"] is True
+    with pytest.raises(ValueError, match="fraction"):
+        hexex.perturb_hex_mesh(mesh, -1.0)
