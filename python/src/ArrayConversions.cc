@@ -159,4 +159,23 @@ HexEx::HexMesh hexMeshFromArrays(const DoubleArray& points, const Int32Array& he
     return hm;
 }
 
+bool surfaceFromArrays(const std::optional<DoubleArray>& points, const std::optional<Int32Array>& triangles,
+                       HexEx::TriangleSurface& surface) {
+    if (!points.has_value() || !triangles.has_value()) return false;
+    requireArrayShape("surface points", *points, {-1, 3});
+    requireArrayShape("surface triangles", *triangles, {-1, 3});
+    const std::size_t np = points->shape(0), nt = triangles->shape(0);
+    const double* p = points->data();
+    for (std::size_t i = 0; i < np; ++i) surface.points.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
+    const std::int32_t* t = triangles->data();
+    for (std::size_t i = 0; i < nt; ++i) {
+        for (int k = 0; k < 3; ++k)
+            if (t[3 * i + k] < 0 || static_cast<std::size_t>(t[3 * i + k]) >= np)
+                throw std::invalid_argument("surface triangle " + std::to_string(i) + " references point " +
+                                            std::to_string(t[3 * i + k]) + " of " + std::to_string(np));
+        surface.triangles.push_back({{t[3 * i], t[3 * i + 1], t[3 * i + 2]}});
+    }
+    return true;
+}
+
 } // namespace HexExPython

@@ -7,6 +7,7 @@
 #include <HexEx/Mesh/HexMesh.hh>
 #include <HexEx/Mesh/MeshTraits.hh>
 #include <HexEx/Mesh/ParametrizedTetMesh.hh>
+#include <HexEx/Untangling/TriangleSurface.hh>
 
 #include <nanobind/nanobind.h>
 #include <nanobind/ndarray.h>
@@ -14,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <initializer_list>
+#include <optional>
 #include <vector>
 
 namespace HexExPython {
@@ -81,6 +83,12 @@ nb::tuple hexMeshToArrays(HexEx::HexMesh&& mesh);
 /// Builds a HexMesh from arrays and a sequence of polyhedra (list of faces, each a
 /// sequence of vertex indices). Index ranges are checked by the consumers (writers, checker).
 HexEx::HexMesh hexMeshFromArrays(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra);
+
+/// Fills @p surface from optional (n, 3) points and (t, 3) triangles (the `surface=` argument
+/// of untangle and optimize); returns false (and leaves @p surface empty) unless both are
+/// given. @throws std::invalid_argument for a wrong shape or a point index out of range.
+bool surfaceFromArrays(const std::optional<DoubleArray>& points, const std::optional<Int32Array>& triangles,
+                       HexEx::TriangleSurface& surface);
 
 } // namespace HexExPython
 

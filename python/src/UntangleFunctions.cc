@@ -56,22 +56,7 @@ nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb:
                    int quality_iterations) {
     HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
     HexEx::TriangleSurface surface;
-    const bool has_surface = surface_points.has_value() && surface_triangles.has_value();
-    if (has_surface) {
-        requireArrayShape("surface points", *surface_points, {-1, 3});
-        requireArrayShape("surface triangles", *surface_triangles, {-1, 3});
-        const std::size_t np = surface_points->shape(0), nt = surface_triangles->shape(0);
-        const double* p = surface_points->data();
-        for (std::size_t i = 0; i < np; ++i) surface.points.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
-        const std::int32_t* t = surface_triangles->data();
-        for (std::size_t i = 0; i < nt; ++i) {
-            for (int k = 0; k < 3; ++k)
-                if (t[3 * i + k] < 0 || static_cast<std::size_t>(t[3 * i + k]) >= np)
-                    throw std::invalid_argument("surface triangle " + std::to_string(i) + " references point " +
-                                                std::to_string(t[3 * i + k]) + " of " + std::to_string(np));
-            surface.triangles.push_back({{t[3 * i], t[3 * i + 1], t[3 * i + 2]}});
-        }
-    }
+    const bool has_surface = surfaceFromArrays(surface_points, surface_triangles, surface);
     HexEx::UntangleOptions opt;
     opt.boundary = fixed_boundary ? HexEx::BoundaryMode::Fixed : HexEx::BoundaryMode::Surface;
     opt.threads = threads;
