@@ -172,7 +172,9 @@ TEST(PerturbHexMesh, MovesInteriorVerticesOnlyAndIsSeeded) {
     long moved = 0;
     for (std::size_t v = 0; v < grid.vertices.size(); ++v) {
         const bool boundary = onBoxBoundary(grid.vertices[v], 6);
-        if (boundary) EXPECT_TRUE(a.vertices[v] == grid.vertices[v]) << "boundary vertex " << v << " moved";
+        if (boundary) {
+            EXPECT_TRUE(a.vertices[v] == grid.vertices[v]) << "boundary vertex " << v << " moved";
+        }
         moved += !(a.vertices[v] == grid.vertices[v]);
         for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(a.vertices[v][k] - grid.vertices[v][k]), 1.5);
     }
