@@ -34,19 +34,12 @@ hexex_optimize_options defaultOptimizeOptions() {
 /// optional surface arrays (the same rules as the untangling options).
 HexEx::OptimizeOptions optimizeOptions(const hexex_optimize_options& o, HexEx::TriangleSurface& surface,
                                        bool& has_surface) {
-    auto atLeast = [](const char* name, int v, int min) {
-        if (v < min)
-            throw ArgumentError(std::string("optimize options: ") + name + " must be >= " + std::to_string(min) +
-                                ", got " + std::to_string(v));
-    };
-    atLeast("threads", o.threads, 0);
-    atLeast("max_global_blocks", o.max_global_blocks, 0);
-    atLeast("max_local_passes", o.max_local_passes, 0);
+    requireAtLeast("optimize", "threads", o.threads, 0);
+    requireAtLeast("optimize", "max_global_blocks", o.max_global_blocks, 0);
+    requireAtLeast("optimize", "max_local_passes", o.max_local_passes, 0);
     if (!(o.target > -1 && o.target <= 1))
         throw ArgumentError("optimize options: target must be in (-1, 1], got " + HexEx::jsonNumber(o.target));
-    if (!(o.feature_angle_deg >= 0 && o.feature_angle_deg <= 180))
-        throw ArgumentError("optimize options: feature_angle_deg must be in [0, 180], got " +
-                            HexEx::jsonNumber(o.feature_angle_deg));
+    requireFeatureAngle("optimize", o.feature_angle_deg);
     // The surface arrays are read by the untangling options' converter (one place for them).
     hexex_untangle_options u = defaultUntangleOptions();
     u.surface_points = o.surface_points;

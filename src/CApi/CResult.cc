@@ -72,6 +72,18 @@ void flattenPolyhedra(hexex_result* r) {
     }
 }
 
+void requireAtLeast(const char* what, const char* name, int v, int min) {
+    if (v < min)
+        throw ArgumentError(std::string(what) + " options: " + name + " must be >= " + std::to_string(min) + ", got " +
+                            std::to_string(v));
+}
+
+void requireFeatureAngle(const char* what, double deg) {
+    if (!(deg >= 0 && deg <= 180))
+        throw ArgumentError(std::string(what) + " options: feature_angle_deg must be in [0, 180], got " +
+                            HexEx::jsonNumber(deg));
+}
+
 hexex_untangle_options defaultUntangleOptions() {
     const HexEx::UntangleOptions d;
     hexex_untangle_options o;
@@ -94,19 +106,12 @@ hexex_untangle_options defaultUntangleOptions() {
 
 HexEx::UntangleOptions untangleOptions(const hexex_untangle_options& o, HexEx::TriangleSurface& surface,
                                        bool& has_surface) {
-    auto atLeast = [](const char* name, int v, int min) {
-        if (v < min)
-            throw ArgumentError(std::string("untangle options: ") + name + " must be >= " + std::to_string(min) +
-                                ", got " + std::to_string(v));
-    };
-    atLeast("threads", o.threads, 0);
-    atLeast("rings", o.rings, 1);
-    atLeast("max_outer_iterations", o.max_outer_iterations, 1);
-    atLeast("max_lbfgs_iterations", o.max_lbfgs_iterations, 1);
-    atLeast("quality_iterations", o.quality_iterations, 0);
-    if (!(o.feature_angle_deg >= 0 && o.feature_angle_deg <= 180))
-        throw ArgumentError("untangle options: feature_angle_deg must be in [0, 180], got " +
-                            HexEx::jsonNumber(o.feature_angle_deg));
+    requireAtLeast("untangle", "threads", o.threads, 0);
+    requireAtLeast("untangle", "rings", o.rings, 1);
+    requireAtLeast("untangle", "max_outer_iterations", o.max_outer_iterations, 1);
+    requireAtLeast("untangle", "max_lbfgs_iterations", o.max_lbfgs_iterations, 1);
+    requireAtLeast("untangle", "quality_iterations", o.quality_iterations, 0);
+    requireFeatureAngle("untangle", o.feature_angle_deg);
     HexEx::UntangleOptions u;
     u.boundary = o.fixed_boundary ? HexEx::BoundaryMode::Fixed : HexEx::BoundaryMode::Surface;
     u.threads = o.threads;

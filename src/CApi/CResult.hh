@@ -62,6 +62,12 @@ void requireArray(const void* p, std::int64_t n, const char* name);
 template <class Options>
 Options readOptions(const Options* in, const Options& defaults);
 
+/// Throws ArgumentError "<what> options: <name> must be >= <min>, got <v>" if @p v < @p min.
+void requireAtLeast(const char* what, const char* name, int v, int min);
+
+/// Throws ArgumentError unless @p deg (a feature angle of the @p what options) is in [0, 180].
+void requireFeatureAngle(const char* what, double deg);
+
 /// Sets the values the quality gives (HEXEX_VALUE_INVERTED_HEXES, ...) on @p r.
 void setQualityValues(hexex_result* r, const HexEx::QualityStats& q);
 
