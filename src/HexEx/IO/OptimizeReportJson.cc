@@ -54,6 +54,10 @@ std::string optimizeReportToJson(const OptimizeReport& r, int indent) {
     count("local_passes", r.local_passes);
     count("local_moves", r.local_moves);
     num("seconds", r.seconds);
+    count("pillowed_hexes", r.pillowed_hexes);
+    count("pillow_vertices", r.pillow_vertices);
+    num("min_scaled_jacobian_pillowed", r.min_scaled_jacobian_pillowed);
+    count("pillow_invalid", r.pillow_invalid);
     key("reached_target"), out << (r.reached_target ? "true" : "false");
     key("success"), out << (r.success ? "true" : "false");
     key("message"), out << jsonQuote(r.message);

@@ -5,6 +5,7 @@
 #include "HexOptimizer.hh"
 
 #include "../Core/Parallel.hh"
+#include "BoundaryPillowing.hh"
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexMeshQuality.hh"
 #include "../Mesh/HexValidity.hh"
@@ -705,12 +706,55 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
             if (v < 0 || static_cast<std::size_t>(v) >= nv)
                 throw std::invalid_argument("optimize: a hex references vertex " + std::to_string(v) + " of " +
                                             std::to_string(nv));
+    std::vector<double> sj_input;
+    long invalid_input = 0;
+    if (options.pillow && !mesh.hexes.empty()) {
+        sj_input = scaledJacobians(mesh);
+        if (*std::min_element(sj_input.begin(), sj_input.end()) > 0) {
+            for (const auto v : hexValidities(mesh, options.threads)) invalid_input += v != HexValidity::Valid;
+            PillowOptions po;
+            po.depth = options.pillow_depth;
+            po.threads = options.threads;
+            po.allow_invalid = true;  // untangled below; undone if that fails
+            const HexMesh input = mesh;
+            const PillowReport pr = pillowBoundary(mesh, po);
+            if (!pr.success) {
+                rep.message = pr.message;
+            } else {
+                rep.pillowed_hexes = pr.hexes_added;
+                rep.pillow_vertices = pr.vertices_added;
+                rep.pillow_invalid = pr.invalid_after;
+                if (pr.invalid_after > 0) {
+                    UntangleOptions uo;
+                    uo.boundary = options.boundary;
+                    uo.threads = options.threads;
+                    uo.feature_angle_deg = options.feature_angle_deg;
+                    const UntangleReport ur = untangleHexMesh(mesh, uo, surface);
+                    if (ur.inverted_after > 0 || ur.invalid_after + ur.undecided_after > invalid_input) {
+                        rep.message = "pillowing undone: " + std::to_string(ur.invalid_after + ur.undecided_after) +
+                                      " hexes were still not certified valid after untangling the layer";
+                        mesh = input;
+                        rep.pillowed_hexes = rep.pillow_vertices = 0;
+                    }
+                }
+            }
+        } else {
+            sj_input.clear();  // refused below by Optimizer::start()
+        }
+    }
     rep.hexes = static_cast<long>(mesh.hexes.size());
     Optimizer opt(mesh, options, rep);
     const bool accepted = opt.start();
     rep.min_scaled_jacobian_before = opt.minSJ();
     rep.mean_scaled_jacobian_before = mean(opt.sj());
     rep.histogram_before = scaledJacobianHistogram(opt.sj());
+    rep.min_scaled_jacobian_pillowed = opt.minSJ();
+    if (!sj_input.empty()) {  // "before" is the input, not the pillowed mesh
+        rep.min_scaled_jacobian_before = *std::min_element(sj_input.begin(), sj_input.end());
+        rep.mean_scaled_jacobian_before = mean(sj_input);
+        rep.histogram_before = scaledJacobianHistogram(sj_input);
+        rep.invalid_before = invalid_input;
+    }
     auto finish = [&]() {
         rep.min_scaled_jacobian_after = opt.minSJ();
         rep.mean_scaled_jacobian_after = mean(opt.sj());

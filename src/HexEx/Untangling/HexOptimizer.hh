@@ -57,6 +57,13 @@ struct OptimizeOptions {
     /// Boundary vertices closer than this (relative to the bounding-box diagonal, or 10 % of
     /// their shortest edge if larger) to a surface corner or curve are held on it.
     double feature_tolerance = 1e-6;
+    /// Before optimising, insert one layer of hexes along the whole boundary
+    /// (pillowBoundary(), BoundaryPillowing.hh): removes the bound sin(dihedral angle) on hexes
+    /// with two boundary faces meeting almost flat, at the cost of one hex per boundary quad.
+    /// Hexes left not certified valid by it are untangled (untangleHexMesh()) before the
+    /// optimisation. Needs an all-hex mesh with a manifold boundary.
+    bool pillow = false;
+    double pillow_depth = 0.3;  ///< PillowOptions::depth of the layer (fraction of the local edge length)
 };
 
 /// What optimizeHexMesh() did. Scaled Jacobians are per hex (minimum over its 8 corners).
@@ -93,6 +100,10 @@ struct OptimizeReport {
     long local_moves = 0;                    ///< accepted vertex moves of the local phase
     double seconds = 0;                      ///< wall time
     bool reached_target = false;             ///< min_scaled_jacobian_after >= OptimizeOptions::target
+    long pillowed_hexes = 0;                 ///< hexes added by OptimizeOptions::pillow (one per boundary quad; 0 without)
+    long pillow_vertices = 0;                ///< vertices added by the pillowing (one per boundary vertex)
+    double min_scaled_jacobian_pillowed = 0; ///< worst SJ right after the pillowing (and the untangling it may need)
+    long pillow_invalid = 0;                 ///< hexes not certified valid right after the pillowing (the untangler then runs)
     bool success = true;                     ///< false if the input was refused (see message)
     std::string message;                     ///< why the input was refused, or notes; empty if none
 };
@@ -103,7 +114,10 @@ struct OptimizeReport {
 /// the report has success = false and a message, the mesh is unchanged (untangle it first).
 /// Hexes that are not certified valid although their corners are positive may stay; they
 /// are not counted as touched-and-valid, and every hex that was Valid stays Valid.
-/// @throws std::invalid_argument if a hex references a vertex out of range.
+/// With OptimizeOptions::pillow the mesh first gets a boundary layer (hexes and vertices
+/// appended, see pillowBoundary()); `hexes` then counts the result's hexes.
+/// @throws std::invalid_argument if a hex references a vertex out of range, or, with
+/// OptimizeOptions::pillow, the mesh is not all-hex or its boundary not manifold.
 OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options = {},
                                const TriangleSurface* surface = nullptr);
 

@@ -36,6 +36,7 @@
 #include <map>
 #include <utility>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace HexExTool {
@@ -69,6 +70,9 @@ const char* kExtractUsage =
     "                          vertices on the input's boundary surface, its feature curves and\n"
     "                          corners kept, every hex certified valid); prints a report\n"
     "  --target SJ             with --optimize: stop once the worst scaled Jacobian reaches SJ (default 0.9)\n"
+    "  --pillow                before optimising, insert a layer of hexes along the boundary (one per\n"
+    "                          boundary quad; patches with flat corners along feature curves get a strip\n"
+    "                          of quads instead; implies --optimize; needs an all-hex result)\n"
     "  -q, --quiet             print nothing but errors\n"
     "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
@@ -204,7 +208,7 @@ int runExtract(const Args& args) {
         {"--encoding", true, ""},         {"--max-memory", true, ""},      {"--full-annihilation", false, ""},
         {"--no-annihilation-retries", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
-        {"--optimize", false, ""},        {"--target", true, ""},
+        {"--optimize", false, ""},        {"--target", true, ""},           {"--pillow", false, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
     HexEx::HexArcs arcs;
@@ -251,7 +255,8 @@ int runExtract(const Args& args) {
             }
         }
         quiet = pa.has("--quiet");
-        optimize = pa.has("--optimize");
+        optimize = pa.has("--optimize") || pa.has("--pillow");
+        optimize_opt.pillow = pa.has("--pillow");
         untangle = pa.has("--untangle") || optimize;
         optimize_opt.target = pa.getDouble("--target", optimize_opt.target, -1, 1);
         surface_path = pa.get("--surface");
@@ -327,8 +332,18 @@ int runExtract(const Args& args) {
         extras.untangle = &untangle_rep;
         if (optimize) {
             optimize_opt.threads = opt.threads;
-            optimize_rep = HexEx::optimizeHexMesh(hm, optimize_opt, &input_boundary);
+            try {
+                optimize_rep = HexEx::optimizeHexMesh(hm, optimize_opt, &input_boundary);
+            } catch (const std::invalid_argument& e) {
+                progress.finish();
+                std::cerr << "hexex extract: error: " << (optimize_opt.pillow ? "--pillow: " : "") << e.what() << "\n";
+                return 2;
+            }
             extras.optimize = &optimize_rep;
+            if (optimize_rep.pillowed_hexes > 0) {  // the written mesh has the layer
+                rep.output.hexes = static_cast<long>(hm.hexes.size());
+                rep.output.vertices = static_cast<long>(hm.vertices.size());
+            }
         }
         extras.quality = HexEx::computeQuality(hm, opt.threads);
     }

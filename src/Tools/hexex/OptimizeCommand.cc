@@ -37,6 +37,10 @@ const char* kOptimizeUsage =
     "  --feature-angle DEG    surface edges sharper than this are feature curves (default 40); curve\n"
     "                         vertices stay on their curve, corner vertices at their corner\n"
     "  --target SJ            stop once the worst scaled Jacobian reaches SJ (default 0.9)\n"
+    "  --pillow               first insert a layer of hexes along the boundary (one per boundary\n"
+    "                         quad; the boundary vertices stay bit for bit; patches with flat corners\n"
+    "                         along feature curves get a strip of quads instead): lifts the bound\n"
+    "                         sin(angle) of hexes with two boundary faces meeting almost flat\n"
     "  --blocks N             L-BFGS blocks of the global phase at most (default 40)\n"
     "  --passes N             vertex-by-vertex passes of the local phase at most (default 60)\n"
     "  --threads N            worker threads (0 = all, default); the output is identical\n"
@@ -53,6 +57,7 @@ int runOptimize(const Args& args) {
         {"--fixed-boundary", false, ""}, {"--feature-angle", true, ""}, {"--target", true, ""},
         {"--blocks", true, ""},        {"--passes", true, ""},   {"--threads", true, ""},
         {"--json", false, ""},         {"--encoding", true, ""}, {"--quiet", false, "-q"},
+        {"--pillow", false, ""},
     };
     std::string input, output, surface_path, map_path;
     HexEx::OptimizeOptions opt;
@@ -81,6 +86,7 @@ int runOptimize(const Args& args) {
         opt.threads = static_cast<int>(pa.getInt("--threads", 0, 0, 4096));
         quiet = pa.has("--quiet");
         json = pa.has("--json");
+        opt.pillow = pa.has("--pillow");
         try {
             encoding = HexEx::vtuEncodingFromName(pa.get("--encoding", "binary"));
             HexEx::hexMeshFormatFromPath(output);

@@ -15,6 +15,10 @@ void printOptimizeReport(std::ostream& os, const HexEx::OptimizeReport& r) {
     os << "optimize: scaled Jacobian min " << r.min_scaled_jacobian_before << " -> " << r.min_scaled_jacobian_after
        << ", mean " << r.mean_scaled_jacobian_before << " -> " << r.mean_scaled_jacobian_after << " (" << r.hexes
        << " hexes)\n";
+    if (r.pillowed_hexes > 0)
+        os << "optimize: pillowed: " << r.pillowed_hexes << " hexes and " << r.pillow_vertices
+           << " vertices added along the boundary (min " << r.min_scaled_jacobian_pillowed << " after, "
+           << r.pillow_invalid << " hexes not certified valid before untangling)\n";
     if (r.min_scaled_jacobian_projected != r.min_scaled_jacobian_before)
         os << "optimize: min " << r.min_scaled_jacobian_projected << " after putting the boundary on the surface\n";
     os << "optimize: hexes not certified valid " << r.invalid_before << " -> " << r.invalid_after << "\n"
