@@ -8,6 +8,7 @@
 #include "Core/Version.hh"
 #include "Extraction/ExtractionReport.hh"
 #include "Mesh/HexArcs.hh"
+#include "Mesh/HexProvenance.hh"
 #include "Mesh/HexMesh.hh"
 #include "Mesh/ParametrizedTetMesh.hh"
 #include "Pipeline/Extractor.hh"

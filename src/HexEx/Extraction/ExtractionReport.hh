@@ -19,6 +19,7 @@ namespace HexEx {
 inline constexpr const char* kGivenRotationProperty = "hexex:rotation";
 
 struct HexArcs;  // Mesh/HexArcs.hh
+struct HexProvenance;  // Mesh/HexProvenance.hh
 
 /// Options of extractHexMesh().
 struct ExtractionOptions {
@@ -61,6 +62,10 @@ struct ExtractionOptions {
     /// hex face (a triangulated "patch") in the input (Documentation/arcs.md). Off (null) by
     /// default, and then costs nothing.
     HexArcs* arcs = nullptr;
+    /// Optional: if set, receives per hex its source tet and integer grid cell, and per
+    /// vertex a tet and its grid coordinates (HexProvenance). Off (null) by default, and then
+    /// costs nothing; when set, the darts are kept until the end of the extraction.
+    HexProvenance* provenance = nullptr;
     /// Optional progress callback: (phase name, fraction done in [0, 1]).
     std::function<void(const std::string&, double)> progress;
 };

@@ -13,6 +13,7 @@
 #include "MemoryBudget.hh"
 #include "PlacementStage.hh"
 #include "PreprocessStage.hh"
+#include "ProvenanceStage.hh"
 #include "ReportStage.hh"
 
 #include <chrono>
@@ -114,19 +115,23 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     rep.timings_s.vertices = clock.lap();
     // The arcs stage (optional) walks from the darts of the hexes: keep them until then.
     const bool arcs = opt.arcs != nullptr;
+    const bool provenance = opt.provenance != nullptr;
     std::vector<int> origin;
-    if (arcs) origin = mapDartOrigins(survivors.new_index, survivors.n_alive);
+    if (arcs || provenance) origin = mapDartOrigins(survivors.new_index, survivors.n_alive);
     // The extracted darts are not needed any more (the implicit cells keep the dense
     // index): free them before the assembly allocates its labels (peak memory).
-    if (!arcs) release(darts.darts.darts);
+    if (!arcs && !provenance) release(darts.darts.darts);
     release(darts.sign);
     release(survivors.alive);
     release(survivors.new_index);
 
     enter("assemble");
-    AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads, arcs});
+    AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads, arcs || provenance});
     addToReport(assembled, rep);
     output = std::move(assembled.mesh);
+    if (provenance)
+        *opt.provenance = provenanceStage({&mesh, &pre.transitions, &pre.tets, &output, &map.map, &assembled.hex_darts,
+                                           &darts.darts, &origin, implicit ? &cells : nullptr, threads});
     rep.timings_s.assemble = clock.lap();
 
     if (arcs) {
