@@ -6,6 +6,7 @@
 #include <HexEx/Postprocessing/DartAnnihilation.hh>
 #include <HexEx/Postprocessing/FaceConnectionRepair.hh>
 #include <HexEx/Postprocessing/LocalHexCheck.hh>
+#include <HexEx/Postprocessing/LocalVertexCheck.hh>
 
 #include <gtest/gtest.h>
 
@@ -297,6 +298,31 @@ TEST(LocalHexCheck, FindsMergedAndSelfGluedCells) {
         dead[7] = 0;  // its partners now point at a removed dart
         EXPECT_EQ(countDefectiveHexCells(a, dead, {0, 48}, mark, 1, 2), 1);
     }
+}
+
+// Merged vertices that the per-cell check cannot see (LocalVertexCheck.hh): two hexes glued
+// along one face are two cells with 12 vertices and no repeated quad; glued along the opposite
+// face too (every cell still passes countDefectiveHexCells(), eq2 holds), their 8 vertices
+// are shared and each of A's four side quads has the same four vertices as one of B's.
+TEST(LocalVertexCheck, FindsQuadsWithTheSameVertices) {
+    const auto hex = makeHex().links();
+    std::vector<std::array<int, 4>> a(hex.begin(), hex.end());
+    for (const auto& l : hex) a.push_back({l[0] + 48, l[1] + 48, l[2] + 48, l[3] + 48});
+    for (int d = 0; d < 96; ++d) a[d][3] = d;  // boundary
+    for (int d = 8; d < 16; ++d) a[d][3] = 48 + d, a[48 + d][3] = d;  // face {4, 5, 6, 7} of A onto that of B
+    const std::vector<char> alive(96, 1);
+    std::vector<int> all(96);
+    std::iota(all.begin(), all.end(), 0);
+    EXPECT_EQ(countMergedVertexQuads(a, alive, all), 0);
+    EXPECT_EQ(countMergedVertexQuads(a, alive, {9}), 0);
+    for (int d = 0; d < 8; ++d) a[d][3] = 48 + d, a[48 + d][3] = d;  // and face {0, 3, 2, 1}
+    std::vector<std::uint8_t> mark(96, 0);
+    EXPECT_EQ(countDefectiveHexCells(a, alive, all, mark, 1, 2), 0);
+    EXPECT_EQ(countMergedVertexQuads(a, alive, all), 4);
+    EXPECT_EQ(countMergedVertexQuads(a, alive, {0}), 2);  // corner 0: the side quads {0, 1, 5, 4} and {3, 0, 4, 7} of A and B
+    std::vector<char> dead(96, 1);
+    for (int d = 48; d < 96; ++d) dead[d] = 0;  // B removed: A alone, glued to nothing alive
+    EXPECT_EQ(countMergedVertexQuads(a, dead, all), 0);
 }
 
 TEST(UnionFind, ClassesAndSmallestRoot) {

@@ -127,27 +127,21 @@ TEST(ValidatorHonesty, PigAtSixTenthsIsValidAndTheSourceMesh) {
         }
 }
 
-// The pig at a = 1.0, seed 9: the annihilation leaves no broken cell and the map validates,
-// but alpha_3 joined two boundary quads that share an edge into one interior quad, so the
-// vertex identification merges two pairs of distinct vertices (16387 of 16389) and the
-// written mesh has a quad in three hexes and 6 inverted hexes. The report must say so
-// (checkAssembledHexes()), agreeing with the independent check of the written mesh.
-TEST(ValidatorHonesty, PigAtOneSeedNineReportAgreesWithTheWrittenMesh) {
+// The pig at a = 1.0, seed 9: the first pass of the annihilation breaks cells, and the first
+// retry (phase by phase) leaves none, but it crosses alpha_3 links around the valence-6 edge
+// 2103-10741 of the source so that the interior edge 1877-1904 and the edge 10751-2105 become
+// one: every cell a hex, every vertex link a sphere, yet 2 vertices short and a quad in three
+// hexes. The retries now rank such a run below every run that merges no vertices
+// (countMergedVertexQuads()), keep a later order, and the face relinking finishes it: the
+// source mesh back, every vertex in place, and a report that agrees with the written mesh.
+TEST(ValidatorHonesty, PigAtOneSeedNineGivesTheSourceMesh) {
     const HexMesh pig = sharedHexMesh("sss19_pig_in");
     if (pig.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes/sss19_pig_in.vtk.xz not available (or no xz)";
     const FoldedCase c = runFolded(pig, 1.0, 9);
-    const HexMeshCheckResult w = checkWritten(c.out);
-    EXPECT_EQ(w.valid_all_hex, c.report.valid_all_hex) << c.report.validation.summary();
-    EXPECT_EQ(w.hexes, c.report.output.hexes);
-    EXPECT_EQ(c.out.hexes.size(), 13987u);
-    std::cout << "pig a=1.0 seed=9: " << c.out.vertices.size() << " vertices, written mesh " << (w.valid_all_hex ? "valid" : "invalid")
-              << ", " << w.quads_shared_by_more_than_two << " quads in > 2 hexes, " << w.quality.inverted_hexes << " inverted hexes\n";
-    if (!w.valid_all_hex) {
-        bool named = false;
-        for (const std::string& warning : c.report.warnings)
-            named = named || warning.find(std::to_string(w.quads_shared_by_more_than_two) + " quads shared by more than two hexes") != std::string::npos;
-        EXPECT_TRUE(named) << "no warning names the quads shared by more than two hexes";
-    }
+    expectSourceMeshBack(c, "pig a=1.0 seed=9");
+    EXPECT_EQ(c.out.vertices.size(), 16389u);
+    EXPECT_GT(c.report.darts.annihilation_order, 1);
+    EXPECT_TRUE(checkWritten(c.out).valid_all_hex);
 }
 
 // A sampled subset of the sweep (both meshes, a = 0.6 to 0.8): the source mesh back, with a
@@ -277,7 +271,7 @@ TEST(SharedHexMeshes, DISABLED_FullSweep) {
                 const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
                 const bool written = checkWritten(c.out).valid_all_hex;
                 EXPECT_EQ(written, c.report.valid_all_hex) << name << " a=" << a << " seed=" << seed;
-                const bool good = c.check.ok() && c.out.polyhedra.empty() && c.check.new_inverted == 0 && c.check.off_position == 0;
+                const bool good = written && c.check.ok() && c.out.polyhedra.empty() && c.check.new_inverted == 0 && c.check.off_position == 0;
                 const auto& t = c.report.timings_s;
                 std::cout << name << " a=" << a << " seed=" << seed << " hexes=" << c.out.hexes.size()
                           << " polyhedra=" << c.out.polyhedra.size() << " report_valid=" << c.report.valid_all_hex

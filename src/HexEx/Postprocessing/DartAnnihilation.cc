@@ -3,6 +3,7 @@
 #include "../Core/Prefetch.hh"
 #include "../Core/UnionFind.hh"
 #include "LocalHexCheck.hh"
+#include "LocalVertexCheck.hh"
 
 #include <algorithm>
 #include <cstdint>
@@ -19,6 +20,10 @@ constexpr std::uint8_t kTouched = 2;    // joined some vertex group (heirs)
 constexpr std::uint8_t kSaved = 4;      // links changed at least once; the originals are saved
 constexpr std::uint8_t kInCell = 8;     // scratch of countDefectiveHexCells()
 constexpr std::uint8_t kCellDone = 16;  // scratch of countDefectiveHexCells()
+
+/// Rank of a retry that leaves no broken cell but merges vertices (countMergedVertexQuads()):
+/// above any count of broken cells.
+constexpr long kMergedRank = 1L << 40;
 
 /// A fixed 64-bit mix (splitmix64's finalizer): the alternative orders of the retries.
 std::uint64_t mix(std::uint64_t x) {
@@ -264,12 +269,21 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
         ++st.retry_runs;
         runVariant(k);
         lastRun = k;
-        const long now = brokenCells(changedDarts());
+        const std::vector<int> changed = changedDarts();
+        long now = brokenCells(changed);
+        // A run that leaves no broken cell can still have crossed alpha_3 links around an
+        // edge so that two vertices become one (every cell a hex, every vertex link a
+        // sphere): such a run ranks below every run that merges none.
+        if (now == 0) {
+            const long merged = countMergedVertexQuads(alpha_, alive_, changed);
+            st.merged_vertex_runs += merged > 0 ? 1 : 0;
+            if (merged > 0) now = kMergedRank + merged;
+        }
         if (now < best) {
             best = now;
             bestOrder = k;
         }
-        if (k == 1 && now > 0 && opt.repair && opt.repair()) {
+        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair()) {
             // The cells phase by phase leaves broken were re-linked into hexes: keep that.
             st.repaired = true;
             st.reordered = 1;
@@ -279,7 +293,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
     }
     if (lastRun != bestOrder) runVariant(bestOrder);
     st.reordered = bestOrder;
-    st.broken_cells_after = best;
+    st.broken_cells_after = best >= kMergedRank ? 0 : best;
 }
 
 void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const std::function<bool(int, int)>& same_place) {

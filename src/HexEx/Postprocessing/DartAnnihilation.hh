@@ -21,6 +21,7 @@ struct AnnihilationStats {
     long retry_runs = 0;          ///< runs in other orders
     bool repaired = false;        ///< AnnihilationRetry::repair left no broken cell after the first retry
     int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 phase by phase, 2 descending, k > 2 hashed
+    long merged_vertex_runs = 0;  ///< retries that left no broken cell but merged vertices (LocalVertexCheck.hh), ranked below every other
 };
 
 /// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.

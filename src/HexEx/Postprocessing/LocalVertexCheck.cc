@@ -1,0 +1,99 @@
+#include "LocalVertexCheck.hh"
+
+#include <algorithm>
+#include <cstddef>
+#include <map>
+
+namespace HexEx {
+
+namespace {
+
+/// Labels of orbits, filled on demand (one int per dart, -1 unlabelled).
+class OrbitLabels {
+public:
+    OrbitLabels(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, std::array<int, 3> links)
+        : alpha_(alpha), alive_(alive), links_(links), label_(alpha.size(), -1) {}
+
+    /// The label of @p d's orbit; labels the orbit (and appends its darts to @p darts, if given) the first time.
+    int of(int d, std::vector<int>* darts = nullptr) {
+        if (label_[static_cast<std::size_t>(d)] >= 0) return label_[static_cast<std::size_t>(d)];
+        const int id = next_++;
+        stack_.assign(1, d);
+        label_[static_cast<std::size_t>(d)] = id;
+        while (!stack_.empty()) {
+            const int x = stack_.back();
+            stack_.pop_back();
+            if (darts) darts->push_back(x);
+            for (int i : links_) {
+                const int p = alpha_[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)];
+                if (p < 0 || p == x || !alive_[static_cast<std::size_t>(p)] || label_[static_cast<std::size_t>(p)] >= 0) continue;
+                label_[static_cast<std::size_t>(p)] = id;
+                stack_.push_back(p);
+            }
+        }
+        return id;
+    }
+
+private:
+    const std::vector<std::array<int, 4>>& alpha_;
+    const std::vector<char>& alive_;
+    const std::array<int, 3> links_;
+    std::vector<int> label_;
+    std::vector<int> stack_;
+    int next_ = 0;
+};
+
+} // namespace
+
+long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const std::vector<int>& seeds) {
+    OrbitLabels vertex(alpha, alive, {{1, 2, 3}}), face(alpha, alive, {{0, 1, 3}});
+    std::map<std::array<int, 4>, int> faceOfQuad;  // sorted vertex labels -> face label
+    std::vector<char> vertexDone;                 // per vertex label: its quads were looked at
+    std::vector<int> atVertex, inFace;
+    long merged = 0;
+    for (int s : seeds) {
+        if (s < 0 || !alive[static_cast<std::size_t>(s)]) continue;
+        atVertex.clear();
+        const int v = vertex.of(s, &atVertex);
+        if (static_cast<std::size_t>(v) >= vertexDone.size()) vertexDone.resize(static_cast<std::size_t>(v) + 1, 0);
+        if (vertexDone[static_cast<std::size_t>(v)]) continue;
+        vertexDone[static_cast<std::size_t>(v)] = 1;
+        if (atVertex.empty()) {  // labelled earlier as the corner of a quad: list its darts now
+            // (a vertex has a few dozen darts: a linear search keeps the list free of repeats)
+            atVertex.push_back(s);
+            for (std::size_t k = 0; k < atVertex.size(); ++k)
+                for (int i = 1; i < 4; ++i) {
+                    const int p = alpha[static_cast<std::size_t>(atVertex[k])][static_cast<std::size_t>(i)];
+                    if (p < 0 || !alive[static_cast<std::size_t>(p)] || std::find(atVertex.begin(), atVertex.end(), p) != atVertex.end()) continue;
+                    atVertex.push_back(p);
+                }
+        }
+        for (int x : atVertex) {
+            inFace.clear();
+            const int f = face.of(x, &inFace);
+            if (inFace.empty()) continue;  // this quad was looked at before
+            std::array<int, 4> corners{{-1, -1, -1, -1}};
+            int n = 0;
+            bool repeated = false;
+            for (int y : inFace) {
+                const int c = vertex.of(y);
+                if (std::find(corners.begin(), corners.begin() + n, c) != corners.begin() + n) continue;
+                if (n == 4) {
+                    repeated = true;  // more than four vertices: not a quad of a valid hex
+                    break;
+                }
+                corners[static_cast<std::size_t>(n++)] = c;
+            }
+            if (repeated || n != 4) {
+                ++merged;
+                continue;
+            }
+            std::sort(corners.begin(), corners.end());
+            const auto ins = faceOfQuad.emplace(corners, f);
+            if (!ins.second && ins.first->second != f) ++merged;
+        }
+    }
+    return merged;
+}
+
+} // namespace HexEx
