@@ -322,8 +322,7 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
     checkManifold(quads, vq, vq_off);
     std::vector<char> in_layer = layerQuads(mesh, quads, options, rep);
     // Vertices of layer quads get copies; "rim" vertices are also in a skipped quad. The
-    // layer and the skipped quads must each form one fan at a rim vertex, else the whole
-    // boundary is pillowed.
+    // layer and the skipped quads must each form one fan at a rim vertex.
     std::vector<char> rim(nv, 0);
     auto fansAt = [&](std::size_t v, bool layer) {
         std::vector<int> local;
@@ -351,22 +350,43 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
         for (std::size_t i = 0; i < local.size(); ++i) fans += findRoot(parent, static_cast<int>(i)) == static_cast<int>(i);
         return fans;
     };
-    if (rep.skipped_patches > 0) {
-        bool ok = true;
-        for (std::size_t v = 0; v < nv && ok; ++v) {
-            int n_in = 0, n_out = 0;
-            for (int k = vq_off[v]; k < vq_off[v + 1]; ++k) (in_layer[static_cast<std::size_t>(vq[static_cast<std::size_t>(k)])] ? n_in : n_out)++;
-            if (n_in == 0 || n_out == 0) continue;
+    // Marks the rim vertices; false if the layer would end on itself at a vertex.
+    auto rimOk = [&]() {
+        std::fill(rim.begin(), rim.end(), 0);
+        for (std::size_t v = 0; v < nv; ++v) {
+            int n_in = 0, n_skip = 0;
+            for (int k = vq_off[v]; k < vq_off[v + 1]; ++k) (in_layer[static_cast<std::size_t>(vq[static_cast<std::size_t>(k)])] ? n_in : n_skip)++;
+            if (n_in == 0 || n_skip == 0) continue;
             rim[v] = 1;
-            ok = fansAt(v, true) == 1 && fansAt(v, false) == 1;
+            if (fansAt(v, true) != 1 || fansAt(v, false) != 1) return false;
         }
-        if (!ok) {
-            std::fill(in_layer.begin(), in_layer.end(), 1);
-            std::fill(rim.begin(), rim.end(), 0);
-            rep.skipped_patches = 0;
-            rep.message = "the layer would end on itself at a vertex: the whole boundary is pillowed";
+        return true;
+    };
+    if (rep.skipped_patches > 0 && !rimOk()) {
+        std::fill(in_layer.begin(), in_layer.end(), 1);
+        std::fill(rim.begin(), rim.end(), 0);
+        rep.skipped_patches = 0;
+        rep.message = "the layer would end on itself at a vertex: the whole boundary is pillowed";
+    }
+    // Validity of the input (old hexes that were not Valid need not become so). Their
+    // boundary quads get no new hex if the layer can end there: a new hex on a quad of a hex
+    // that is not valid inherits that quad, often the cause (a fold of the boundary quads).
+    const std::vector<HexValidity> before = hexValidities(mesh, threads);
+    for (const auto v : before) rep.invalid_before += v != HexValidity::Valid;
+    {
+        const std::vector<char> saved = in_layer;
+        for (std::size_t i = 0; i < quads.size(); ++i)
+            if (in_layer[i] && before[static_cast<std::size_t>(owner[i])] != HexValidity::Valid) {
+                in_layer[i] = 0;
+                ++rep.skipped_quads;
+            }
+        if (rep.skipped_quads > 0 && !rimOk()) {
+            in_layer = saved;
+            rep.skipped_quads = 0;
+            rimOk();
         }
     }
+
     std::vector<int> copy(nv, -1);
     for (std::size_t i = 0; i < quads.size(); ++i)
         if (in_layer[i])
@@ -378,9 +398,6 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
             bverts.push_back(static_cast<int>(v));
         }
 
-    // Validity of the input (old hexes that were not Valid need not become so).
-    const std::vector<HexValidity> before = hexValidities(mesh, threads);
-    for (const auto v : before) rep.invalid_before += v != HexValidity::Valid;
 
     // Mean edge length at each boundary vertex (hex edges, counted once per hex).
     std::vector<double> edge_sum(nv, 0);

@@ -22,7 +22,8 @@
 /// distance below each of those quads), by PillowOptions::depth times the mean length of
 /// the edges at v; where a hex is then not certified valid (classifyHexValidity()), the depths of its copies are halved, up to
 /// PillowOptions::max_halvings times. Old hexes that were not certified valid before need
-/// not become so, nor the new hexes on their boundary faces; every other hex is certified
+/// not become so, and their boundary quads get no new hex (the layer ends there as on a
+/// skipped patch); every other hex is certified
 /// valid afterwards, or the mesh is left unchanged and the report says why.
 ///
 /// Example:
@@ -67,6 +68,7 @@ struct PillowReport {
     long vertices_added = 0;      ///< new vertices (one inner copy per boundary vertex)
     long boundary_patches = 0;    ///< patches of the boundary (bounded by feature edges)
     long skipped_patches = 0;     ///< patches that got no layer (PillowOptions::skip_patch_angle_deg)
+    long skipped_quads = 0;       ///< boundary quads of hexes that were not certified valid: no new hex on them
     long shrunk_vertices = 0;     ///< inner copies placed at less than the full depth
     double min_depth_fraction = 1;///< smallest depth used, relative to the full depth
     long invalid_before = 0;      ///< hexes of the input that were not certified valid
