@@ -98,6 +98,36 @@ struct OvmTetProperties {
     OpenVolumeMesh::EdgePropertyT<int>* singular_valence = nullptr;
 };
 
+/// Names of the properties that the one-call OpenVolumeMesh overloads of extractHexMesh()
+/// create in the user's hex mesh with the provenance of the output (HexProvenance); an empty
+/// name writes nothing, and when all are empty the provenance is not computed (no cost).
+/// The properties are persistent: they stay in the mesh after the call, found by name
+/// (`get_cell_property<int>("hexex:source_tet")`).
+struct OvmHexProperties {
+    /// `int` cell property: per hex, the tet mesh cell whose parameter image contains the
+    /// hex's centre (HexProvenance::hex_source_tet); -1 on non-hex cells.
+    std::string source_tet;
+    /// `Vec3i` cell property: per hex, the smallest corner of its integer grid cell in the
+    /// chart of its source tet (HexProvenance::hex_grid_cell); (0, 0, 0) on non-hex cells.
+    std::string grid_cell;
+    /// `Vec3i` vertex property: per vertex, its integer grid coordinates in the chart of the
+    /// tet in #vertex_source_tet (HexProvenance::vertex_grid_coords).
+    std::string grid_coords;
+    /// `int` vertex property: per vertex, a tet mesh cell whose closed parameter image
+    /// contains its grid point (HexProvenance::vertex_source_tet; -1 for a vertex of no hex).
+    std::string vertex_source_tet;
+
+    /// All four, named "hexex:source_tet", "hexex:grid_cell", "hexex:grid_coords" and
+    /// "hexex:vertex_source_tet".
+    static OvmHexProperties all() {
+        return {"hexex:source_tet", "hexex:grid_cell", "hexex:grid_coords", "hexex:vertex_source_tet"};
+    }
+    /// True if any property is named.
+    bool any() const {
+        return !source_tet.empty() || !grid_cell.empty() || !grid_coords.empty() || !vertex_source_tet.empty();
+    }
+};
+
 /// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
 /// hexahedral or polyhedral mesh @p hexMesh, the map given as in the reference HexEx
 /// implementation: per cell, a map from each of its vertices to its parameter in the cell's
@@ -109,7 +139,9 @@ struct OvmTetProperties {
 /// the result written in bulk (see OvmHexOutput; @p hexMesh is cleared first; a hexahedral
 /// kernel skips non-hex cells, which the report still counts). Vertex and cell indices are
 /// the handles' indices: the mesh must not contain deleted entities. @p results names
-/// properties of @p tetMesh that receive the transitions and singular edges (OvmTetProperties).
+/// properties of @p tetMesh that receive the transitions and singular edges (OvmTetProperties),
+/// @p hexResults the properties of @p hexMesh that receive the hexes' source tets and grid
+/// cells and the vertices' grid coordinates (OvmHexProperties).
 ///
 /// Throws InputError if a cell is not a tetrahedron, lacks the parameter of one of its
 /// vertices, or the input is otherwise unusable (see the built-in extractHexMesh()).
@@ -118,7 +150,7 @@ template <class TetMeshT, class VecT, class HexMeshT,
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
                                 HexMeshT& hexMesh, const ExtractionOptions& options = {},
-                                const OvmTetProperties& results = {});
+                                const OvmTetProperties& results = {}, const OvmHexProperties& hexResults = {});
 
 /// Extracts the hex mesh of the OpenVolumeMesh tet mesh @p tetMesh into the OpenVolumeMesh
 /// hexahedral or polyhedral mesh @p hexMesh, the map given as in HexHex: the value on a
@@ -131,7 +163,7 @@ template <class TetMeshT, class VecT, class HexMeshT,
           std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int> = 0>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
                                 HexMeshT& hexMesh, const ExtractionOptions& options = {},
-                                const OvmTetProperties& results = {});
+                                const OvmTetProperties& results = {}, const OvmHexProperties& hexResults = {});
 
 /// Input view of an OpenVolumeMesh tet mesh (any kernel with `Vec3d` geometry whose cells
 /// are tetrahedra: TetrahedralMeshTopologyKernel or the polyhedral TopologyKernel) with its

@@ -9,6 +9,7 @@
 #include "../Core/Parallel.hh"
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
+#include "../Mesh/HexProvenance.hh"
 
 #include <algorithm>
 #include <array>
@@ -156,24 +157,64 @@ void writeOvmTetProperties(const TetMeshT& tetMesh, const ParametrizedTetMesh& p
     }
 }
 
+/// Writes @p prov into the properties of @p out's mesh named by @p names (hexes are the
+/// first cells of @p out, vertices numbered as extracted).
+template <class HexMeshT>
+void writeOvmHexProperties(OvmHexOutput<HexMeshT>& out, const HexProvenance& prov, const OvmHexProperties& names) {
+    HexMeshT& mesh = out.mesh();
+    using Vec3i = OpenVolumeMesh::Geometry::Vec3i;
+    const auto vec = [](const std::array<int, 3>& z) { return Vec3i(z[0], z[1], z[2]); };
+    const std::vector<OpenVolumeMesh::CellHandle>& cells = out.cells();
+    const std::size_t nh = std::min(prov.hex_source_tet.size(), cells.size());
+    if (!names.source_tet.empty()) {
+        auto p = mesh.template request_cell_property<int>(names.source_tet, -1);
+        mesh.set_persistent(p, true);
+        for (std::size_t h = 0; h < nh; ++h)
+            if (cells[h].is_valid()) p[cells[h]] = prov.hex_source_tet[h];
+    }
+    if (!names.grid_cell.empty()) {
+        auto p = mesh.template request_cell_property<Vec3i>(names.grid_cell, Vec3i(0, 0, 0));
+        mesh.set_persistent(p, true);
+        for (std::size_t h = 0; h < nh; ++h)
+            if (cells[h].is_valid()) p[cells[h]] = vec(prov.hex_grid_cell[h]);
+    }
+    const std::size_t nv = std::min(prov.vertex_source_tet.size(), mesh.n_vertices());
+    if (!names.grid_coords.empty()) {
+        auto p = mesh.template request_vertex_property<Vec3i>(names.grid_coords, Vec3i(0, 0, 0));
+        mesh.set_persistent(p, true);
+        for (std::size_t v = 0; v < nv; ++v)
+            p[OpenVolumeMesh::VertexHandle(static_cast<int>(v))] = vec(prov.vertex_grid_coords[v]);
+    }
+    if (!names.vertex_source_tet.empty()) {
+        auto p = mesh.template request_vertex_property<int>(names.vertex_source_tet, -1);
+        mesh.set_persistent(p, true);
+        for (std::size_t v = 0; v < nv; ++v)
+            p[OpenVolumeMesh::VertexHandle(static_cast<int>(v))] = prov.vertex_source_tet[v];
+    }
+}
+
 /// Body of both one-call overloads: read, extract (and write @p results), free the copy,
-/// write the hex mesh in bulk.
+/// write the hex mesh in bulk (and @p hexResults into it).
 template <class TetMeshT, class HexMeshT, class ParamOf>
 ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT& hexMesh,
-                            const ExtractionOptions& options, const OvmTetProperties& results) {
+                            const ExtractionOptions& options, const OvmTetProperties& results,
+                            const OvmHexProperties& hexResults) {
     HexMesh hm;
     ExtractionReport report;
+    HexProvenance prov;
     {
         std::vector<int> given;
         ExtractionOptions opt = options;
         const ParametrizedTetMesh pm =
             ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads, results.given_rotation, &given);
         if (results.given_rotation) opt.given_rotations = &given;
+        if (hexResults.any() && !opt.provenance) opt.provenance = &prov;
         report = extractHexMesh(pm, hm, opt);
         writeOvmTetProperties(tetMesh, pm, opt, results);
     }  // the copy of the input is freed before the output is written
     OvmHexOutput<HexMeshT> out(hexMesh);
     fromHexMesh(hm, out);
+    if (hexResults.any()) writeOvmHexProperties(out, options.provenance ? *options.provenance : prov, hexResults);
     return report;
 }
 
@@ -182,7 +223,8 @@ ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                 const OpenVolumeMesh::CellPropertyT<std::map<OpenVolumeMesh::VertexHandle, VecT>>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results,
+                                const OvmHexProperties& hexResults) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle&, const OpenVolumeMesh::CellHandle& ch,
@@ -194,17 +236,18 @@ ExtractionReport extractHexMesh(const TetMeshT& tetMesh,
                                  parameters.name() + "' has no parameter for vertex " + std::to_string(v.idx()));
             return it->second;
         },
-        hexMesh, options, results);
+        hexMesh, options, results, hexResults);
 }
 
 template <class TetMeshT, class VecT, class HexMeshT, std::enable_if_t<detail::isOvmMeshPair<TetMeshT, HexMeshT>, int>>
 ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::HalfFacePropertyT<VecT>& parameters,
-                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results) {
+                                HexMeshT& hexMesh, const ExtractionOptions& options, const OvmTetProperties& results,
+                                const OvmHexProperties& hexResults) {
     return detail::extractOvm(
         tetMesh,
         [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
             const OpenVolumeMesh::VertexHandle&) -> const VecT& { return parameters[hf]; },
-        hexMesh, options, results);
+        hexMesh, options, results, hexResults);
 }
 
 } // namespace HexEx

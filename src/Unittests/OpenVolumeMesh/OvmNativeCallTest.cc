@@ -344,3 +344,57 @@ TEST(OvmNativeCall, GivenRotationsAreHonoured) {
                                              ": given rotation 24 is not a rotation index (0..23)");
     }
 }
+
+TEST(OvmNativeCall, ProvenanceWrittenIntoTheHexMesh) {
+    HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(3, 2, 3, 1, 1);
+    pm.mesh.build_adjacency();
+    TetMesh tets;
+    ASSERT_EQ(HexExTestSupport::buildOvmTets(pm, tets), 0u);
+    const auto igm = *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    HexMeshOvm hexes;
+    const HexEx::OvmHexProperties names = HexEx::OvmHexProperties::all();
+    const HexEx::ExtractionReport r =
+        HexEx::extractHexMesh(tets, igm, hexes, HexEx::ExtractionOptions{}, HexEx::OvmTetProperties{}, names);
+    EXPECT_TRUE(r.valid_all_hex);
+    // The built-in kernel's provenance from the same map: OVM cell i is tet i, vertices and
+    // hexes in the same order.
+    HexEx::HexProvenance ref;
+    HexEx::ExtractionOptions opt;
+    opt.provenance = &ref;
+    HexEx::HexMesh hm;
+    HexEx::extractHexMesh(pm, hm, opt);
+    ASSERT_EQ(hexes.n_cells(), hm.hexes.size());
+    ASSERT_EQ(hexes.n_vertices(), hm.vertices.size());
+    auto sourceTet = hexes.get_cell_property<int>("hexex:source_tet");
+    auto gridCell = hexes.get_cell_property<OpenVolumeMesh::Geometry::Vec3i>("hexex:grid_cell");
+    auto gridCoords = hexes.get_vertex_property<OpenVolumeMesh::Geometry::Vec3i>("hexex:grid_coords");
+    auto vertexTet = hexes.get_vertex_property<int>("hexex:vertex_source_tet");
+    ASSERT_TRUE(sourceTet && gridCell && gridCoords && vertexTet);
+    for (std::size_t h = 0; h < hm.hexes.size(); ++h) {
+        const OpenVolumeMesh::CellHandle ch{int(h)};
+        EXPECT_EQ((*sourceTet)[ch], ref.hex_source_tet[h]) << "hex " << h;
+        const auto& c = ref.hex_grid_cell[h];
+        EXPECT_EQ((*gridCell)[ch], OpenVolumeMesh::Geometry::Vec3i(c[0], c[1], c[2])) << "hex " << h;
+    }
+    for (std::size_t v = 0; v < hm.vertices.size(); ++v) {
+        const OpenVolumeMesh::VertexHandle vh{int(v)};
+        ASSERT_GE((*vertexTet)[vh], 0);
+        EXPECT_EQ((*vertexTet)[vh], ref.vertex_source_tet[v]);
+        const auto& z = ref.vertex_grid_coords[v];
+        EXPECT_EQ((*gridCoords)[vh], OpenVolumeMesh::Geometry::Vec3i(z[0], z[1], z[2]));
+        // Independently: the grid point is one of the source cell's corner parameters or
+        // inside its parameter image (the cylinder's charts are exact).
+        const auto& p = pm.params[std::size_t((*vertexTet)[vh])];
+        double lo[3], hi[3];
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min({p[0][k], p[1][k], p[2][k], p[3][k]});
+            hi[k] = std::max({p[0][k], p[1][k], p[2][k], p[3][k]});
+            EXPECT_LE(lo[k] - 1e-9, z[std::size_t(k)]);
+            EXPECT_GE(hi[k] + 1e-9, z[std::size_t(k)]);
+        }
+    }
+    // Not asked for: no property.
+    HexMeshOvm plain;
+    HexEx::extractHexMesh(tets, igm, plain);
+    EXPECT_FALSE(plain.get_cell_property<int>("hexex:source_tet"));
+}
