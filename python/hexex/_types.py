@@ -61,12 +61,16 @@ class HexMesh:
 class ExtractionResult(HexMesh):
     """The output of :func:`hexex.extract`: the hex mesh plus the extraction report."""
 
-    def __init__(self, points, hexes, polyhedra, report: dict):
+    def __init__(self, points, hexes, polyhedra, report: dict, provenance=None):
         super().__init__(points, hexes, polyhedra)
         self.report = report
         """The extraction report: a dict with the keys of the JSON report of
         ``hexex extract --report`` (input, output, darts, valid_all_hex, quality,
         timings_s, threads, version, validation, warnings)."""
+        self.provenance = provenance
+        """With ``extract(..., provenance=True)``: a dict of int32 arrays ``hex_source_tet``
+        (h,), ``hex_grid_cell`` (h, 3), ``vertex_source_tet`` (k,), ``vertex_grid_coords``
+        (k, 3); otherwise None."""
 
     @property
     def valid_all_hex(self) -> bool:
