@@ -1,7 +1,6 @@
 """extract(..., provenance=True): source tet and grid cell per hex, grid coordinates per vertex."""
 
 import numpy as np
-import pytest
 
 import hexex
 
@@ -41,8 +40,6 @@ def test_singular_cylinder_grid_coords_map_back_to_the_positions():
         assert np.array_equal(p[key], r2.provenance[key])
 
 
-def test_off_by_default_and_not_with_pillow():
+def test_off_by_default():
     r = hexex.extract(*hexex.generate_cube(2, 2))
     assert r.provenance is None
-    with pytest.raises(ValueError, match="provenance=True cannot be combined with pillow=True"):
-        hexex.extract(*hexex.generate_cube(2, 2), provenance=True, pillow=True)
