@@ -50,7 +50,7 @@ def _check_float(value, name: str) -> float:
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
             rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False,
-            annihilation_retries: bool = True, optimize: bool = False,
+            annihilation_retries: bool = True, optimize: bool = False, pillow: bool = False,
             provenance: bool = False) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
@@ -87,12 +87,15 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             boundary vertices on the boundary of the input tet mesh; implies ``untangle``
             (``hexex extract --optimize``). The report then also has the key ``optimize``
             and its ``quality`` is measured after optimising.
+        pillow: before optimising, insert a layer of hexes along the boundary (see
+            :func:`optimize`); implies ``optimize`` (``hexex extract --pillow``).
         provenance: also return where each hex and vertex comes from, as
             ``result.provenance``: a dict of int32 arrays ``hex_source_tet`` (h,) (the tet
             whose parameter image contains the hex's centre), ``hex_grid_cell`` (h, 3) (the
             smallest corner of the hex's integer grid cell in that tet's chart),
             ``vertex_source_tet`` (k,) and ``vertex_grid_coords`` (k, 3) (the vertex's grid
-            point in the chart of that tet; -1 / 0 for a vertex of no hex).
+            point in the chart of that tet; -1 / 0 for a vertex of no hex). Not with
+            ``pillow`` (which adds hexes).
 
     Returns:
         ExtractionResult with ``points`` (k, 3), ``hexes`` (h, 8) in VTK order,
@@ -113,10 +116,13 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     if rotations is not None:
         rotations = as_index_array(rotations, "rotations", (tets.shape[0], 4), dtypes=(np.int32,))
     max_memory = _check_int(max_memory, "max_memory", 0, maximum=2**64 - 1)
+    if provenance and pillow:
+        raise ValueError("provenance=True cannot be combined with pillow=True (pillowing adds hexes)")
     pts, hexes, polyhedra, report, prov = _core.extract(points, tets, params, threads, epsilon, bool(merge), rotations,
                                                         max_memory, bool(cheap_folds), bool(annihilation_retries),
                                                         bool(provenance))
     report = json.loads(report)
+    optimize = optimize or pillow
     if untangle or optimize:
         boundary = _boundary_triangles(tets)
         pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, boundary, False,
@@ -124,7 +130,7 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
         report["untangle"] = u
         if optimize:
             pts, hexes, polyhedra, o = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
-                                                      0.9, 40.0, 40, 60)
+                                                      0.9, 40.0, 40, 60, bool(pillow))
             report["optimize"] = o
         # The quality keys of the report, measured on the moved mesh (as hexex extract does).
         quality = _core.validate(pts, hexes, polyhedra)["quality"]
@@ -197,7 +203,7 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
 
 def optimize(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
              target: float = 0.9, feature_angle: float = 40.0, max_blocks: int = 40,
-             max_passes: int = 60) -> OptimizeResult:
+             max_passes: int = 60, pillow: bool = False) -> OptimizeResult:
     """Raises the worst scaled Jacobian of a valid hex mesh (``hexex optimize``): L-BFGS on a
     soft minimum of the corner scaled Jacobians, then vertex-by-vertex max-min moves; every
     accepted step keeps every hex certified valid and never lowers the worst scaled Jacobian
@@ -218,6 +224,13 @@ def optimize(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
         feature_angle: surface edges sharper than this (degrees) are feature curves.
         max_blocks: L-BFGS blocks of the global phase at most (0: none).
         max_passes: vertex-by-vertex passes of the local phase at most (0: none).
+        pillow: first insert a layer of hexes along the boundary, one per boundary quad
+            (patches with flat corners along feature curves get a strip of quads instead;
+            ``hexex optimize --pillow``): lifts the bound sin(angle) of hexes with two
+            boundary faces meeting almost flat. The result has more hexes and vertices
+            (``report["pillowed_hexes"]``, ``report["pillow_vertices"]``); the input's
+            vertices come first, unchanged in number. Needs an all-hex mesh with a
+            manifold boundary (ValueError otherwise).
 
     Returns:
         OptimizeResult: ``points``, ``hexes``, ``polyhedra`` and ``report`` (dict).
@@ -240,7 +253,7 @@ def optimize(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
         surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
     pts, hx, poly, report = _core.optimize(points, hexes, polyhedra, surface_points, surface_triangles,
                                            bool(fixed_boundary), threads, target, feature_angle, max_blocks,
-                                           max_passes)
+                                           max_passes, bool(pillow))
     return OptimizeResult(pts, hx, poly, report)
 
 

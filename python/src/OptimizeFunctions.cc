@@ -57,6 +57,10 @@ nb::dict optimizeReportToDict(const HexEx::OptimizeReport& r) {
     d["local_passes"] = r.local_passes;
     d["local_moves"] = r.local_moves;
     d["seconds"] = r.seconds;
+    d["pillowed_hexes"] = r.pillowed_hexes;
+    d["pillow_vertices"] = r.pillow_vertices;
+    d["min_scaled_jacobian_pillowed"] = r.min_scaled_jacobian_pillowed;
+    d["pillow_invalid"] = r.pillow_invalid;
     d["reached_target"] = r.reached_target;
     d["success"] = r.success;
     d["message"] = r.message;
@@ -67,7 +71,7 @@ nb::dict optimizeReportToDict(const HexEx::OptimizeReport& r) {
 nb::tuple optimize(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
                    const std::optional<DoubleArray>& surface_points, const std::optional<Int32Array>& surface_triangles,
                    bool fixed_boundary, int threads, double target, double feature_angle, int max_blocks,
-                   int max_passes) {
+                   int max_passes, bool pillow) {
     HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
     HexEx::TriangleSurface surface;
     const bool has_surface = surfaceFromArrays(surface_points, surface_triangles, surface);
@@ -78,6 +82,7 @@ nb::tuple optimize(const DoubleArray& points, const Int32Array& hexes, const nb:
     opt.feature_angle_deg = feature_angle;
     opt.max_global_blocks = max_blocks;
     opt.max_local_passes = max_passes;
+    opt.pillow = pillow;
     HexEx::OptimizeReport r;
     {
         nb::gil_scoped_release release;
@@ -93,6 +98,7 @@ void bindOptimizeFunctions(nb::module_& m) {
     m.def("optimize", &optimize, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
           nb::arg("surface_points").none(), nb::arg("surface_triangles").none(), nb::arg("fixed_boundary"),
           nb::arg("threads"), nb::arg("target"), nb::arg("feature_angle"), nb::arg("max_blocks"), nb::arg("max_passes"),
+          nb::arg("pillow"),
           "Raises the worst scaled Jacobian of a hex mesh (HexEx::optimizeHexMesh); returns (points, hexes, "
           "polyhedra, report dict).");
 }

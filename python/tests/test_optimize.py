@@ -67,3 +67,39 @@ def test_optimize_refuses_inverted_and_bad_arguments():
         hexex.optimize(points, hexes, fixed_boundary=True, surface=(points, np.zeros((1, 3), np.int32)))
     with pytest.raises(ValueError):
         hexex.optimize(points, hexes, surface=(points, np.array([[0, 1, 999]], np.int32)))
+
+
+def test_optimize_pillow_adds_a_boundary_layer():
+    # 2x2x2 grid: 24 boundary quads -> 24 new hexes, 26 boundary vertices -> 26 copies; the
+    # old vertices keep their places (a cube: all boundary vertices are on features or flat).
+    points, hexes = grid_cube(2)
+    r = hexex.optimize(points, hexes, pillow=True, threads=2)
+    assert r.success
+    assert r.report["pillowed_hexes"] == 24 and r.report["pillow_vertices"] == 26
+    assert r.hexes.shape == (8 + 24, 8) and r.points.shape == (27 + 26, 3)
+    assert r.report["hexes"] == 32 and r.report["invalid_after"] == 0
+    assert np.abs(r.points[:27] - points).max() <= 1e-12
+    assert hexex.validate(r)["quality"]["certified_valid"]
+    # Without the option nothing is added.
+    r0 = hexex.optimize(points, hexes, threads=2)
+    assert r0.report["pillowed_hexes"] == 0 and r0.hexes.shape == (8, 8)
+
+
+def test_optimize_pillow_lifts_a_flat_corner():
+    # One hex whose side faces meet at 170 degrees: SJ = sin(170) = 0.174 with its topology.
+    a = np.radians(10)
+    base = np.array([[-1, 0, 0], [0, 0, 0], [np.cos(a), np.sin(a), 0], [-0.3, 1.2, 0]])
+    points = np.vstack([base, base + [0, 0, 1]])
+    hexes = np.array([[0, 1, 2, 3, 4, 5, 6, 7]], dtype=np.int32)
+    plain = hexex.optimize(points, hexes, threads=1)
+    assert plain.report["min_scaled_jacobian_after"] <= np.sin(np.radians(170)) + 1e-9
+    r = hexex.optimize(points, hexes, pillow=True, threads=1)
+    assert r.report["pillowed_hexes"] > 0
+    assert r.report["min_scaled_jacobian_after"] >= 0.3
+    assert r.report["invalid_after"] == 0
+
+
+def test_optimize_pillow_refuses_polyhedra():
+    points, hexes = grid_cube(1)
+    with pytest.raises(ValueError, match="pillowing needs an all-hex mesh: the mesh has 1 polyhedra"):
+        hexex.optimize(points, hexes, polyhedra=[[[0, 1, 2]]], pillow=True)

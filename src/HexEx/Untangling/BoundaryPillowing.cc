@@ -45,9 +45,9 @@ int findRoot(std::vector<int>& parent, int i) {
 }
 
 /// Outward boundary quads of @p mesh (loops oriented outward), in hex then face order;
-/// @p owner gets the hex of each.
+/// @p owner gets the hex of each, @p owner_face its face number (HexArcs::kHexFaces).
 /// Throws std::invalid_argument on the input errors listed in pillowBoundary().
-std::vector<std::array<int, 4>> boundaryQuads(const HexMesh& mesh, std::vector<int>& owner) {
+std::vector<std::array<int, 4>> boundaryQuads(const HexMesh& mesh, std::vector<int>& owner, std::vector<int>& owner_face) {
     const long nv = static_cast<long>(mesh.vertices.size());
     std::vector<FaceRecord> rec;
     rec.reserve(mesh.hexes.size() * 6);
@@ -88,8 +88,10 @@ std::vector<std::array<int, 4>> boundaryQuads(const HexMesh& mesh, std::vector<i
     std::vector<std::array<int, 4>> quads;
     quads.reserve(bnd.size());
     owner.clear();
+    owner_face.clear();
     for (const auto& hf : bnd) {
         owner.push_back(hf.first);
+        owner_face.push_back(hf.second);
         std::array<int, 4> q;
         for (int k = 0; k < 4; ++k)
             q[static_cast<std::size_t>(k)] = mesh.hexes[static_cast<std::size_t>(hf.first)][static_cast<std::size_t>(HexArcs::kHexFaces[hf.second][k])];
@@ -296,7 +298,12 @@ Vec3d inwardDirection(const HexMesh& mesh, const std::vector<std::array<int, 4>>
 
 } // namespace
 
-PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
+namespace {
+
+/// One layer (see pillowBoundary()). With @p layered_from >= 0 the patch rule is off and the
+/// layer goes on every boundary quad except the outer quads (face 1) of the hexes from
+/// @p layered_from on (a layer that is already there).
+PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layered_from) {
     const auto t0 = std::chrono::steady_clock::now();
     PillowReport rep;
     if (!mesh.polyhedra.empty())
@@ -308,8 +315,8 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
     rep.hexes_before = static_cast<long>(nh);
     rep.vertices_before = static_cast<long>(nv);
 
-    std::vector<int> owner;
-    const std::vector<std::array<int, 4>> quads = boundaryQuads(mesh, owner);
+    std::vector<int> owner, owner_face;
+    const std::vector<std::array<int, 4>> quads = boundaryQuads(mesh, owner, owner_face);
     std::vector<int> vq_off(nv + 1, 0), vq(quads.size() * 4);
     for (const auto& q : quads)
         for (const int v : q) ++vq_off[static_cast<std::size_t>(v) + 1];
@@ -320,7 +327,14 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
             for (const int v : quads[i]) vq[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] = static_cast<int>(i);
     }
     checkManifold(quads, vq, vq_off);
-    std::vector<char> in_layer = layerQuads(mesh, quads, options, rep);
+    std::vector<char> in_layer;
+    if (layered_from < 0) {
+        in_layer = layerQuads(mesh, quads, options, rep);
+    } else {
+        in_layer.assign(quads.size(), 1);
+        for (std::size_t i = 0; i < quads.size(); ++i)
+            if (owner[i] >= layered_from && owner_face[i] == 1) in_layer[i] = 0;
+    }
     // Vertices of layer quads get copies; "rim" vertices are also in a skipped quad. The
     // layer and the skipped quads must each form one fan at a rim vertex.
     std::vector<char> rim(nv, 0);
@@ -362,6 +376,11 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
         }
         return true;
     };
+    if (layered_from >= 0 && !rimOk()) {
+        rep.message = "the second layer would end on itself at a vertex: not placed";
+        rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        return rep;
+    }
     if (rep.skipped_patches > 0 && !rimOk()) {
         std::fill(in_layer.begin(), in_layer.end(), 1);
         std::fill(rim.begin(), rim.end(), 0);
@@ -375,14 +394,31 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
     for (const auto v : before) rep.invalid_before += v != HexValidity::Valid;
     {
         const std::vector<char> saved = in_layer;
+        std::vector<char> skip(quads.size(), 0);
+        long n_skip = 0;
         for (std::size_t i = 0; i < quads.size(); ++i)
             if (in_layer[i] && before[static_cast<std::size_t>(owner[i])] != HexValidity::Valid) {
-                in_layer[i] = 0;
-                ++rep.skipped_quads;
+                skip[i] = 1;
+                ++n_skip;
             }
-        if (rep.skipped_quads > 0 && !rimOk()) {
+        // Where the layer would end on itself, grow the skipped region by the quads around it
+        // (vertex neighbours), at most 3 times.
+        bool ok = n_skip == 0;
+        for (int grow = 0; n_skip > 0 && grow <= 3; ++grow) {
+            for (std::size_t i = 0; i < quads.size(); ++i) in_layer[i] = saved[i] && !skip[i];
+            if ((ok = rimOk())) break;
+            std::vector<char> near(nv, 0);
+            for (std::size_t i = 0; i < quads.size(); ++i)
+                if (skip[i])
+                    for (const int v : quads[i]) near[static_cast<std::size_t>(v)] = 1;
+            for (std::size_t i = 0; i < quads.size(); ++i)
+                for (const int v : quads[i])
+                    if (near[static_cast<std::size_t>(v)]) skip[i] = 1;
+        }
+        if (ok) {
+            for (std::size_t i = 0; i < quads.size(); ++i) rep.skipped_quads += saved[i] && !in_layer[i];
+        } else {
             in_layer = saved;
-            rep.skipped_quads = 0;
             rimOk();
         }
     }
@@ -545,6 +581,29 @@ PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
     for (const auto v : hexValidities(out, threads)) rep.invalid_after += v != HexValidity::Valid;
     mesh = std::move(out);
     rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return rep;
+}
+
+} // namespace
+
+PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
+    const long nh = static_cast<long>(mesh.hexes.size());
+    PillowReport rep = pillowPass(mesh, options, -1);
+    if (!rep.success || rep.skipped_patches == 0 || !options.second_layer || rep.hexes_added == 0) return rep;
+    // The skipped patches now have their strips: give them (and the strips) a layer too.
+    const PillowReport second = pillowPass(mesh, options, nh);
+    if (!second.success || second.hexes_added == 0) {
+        if (!second.message.empty()) rep.message = second.message;
+        return rep;
+    }
+    rep.hexes_added += second.hexes_added;
+    rep.vertices_added += second.vertices_added;
+    rep.second_layer_hexes = second.hexes_added;
+    rep.shrunk_vertices += second.shrunk_vertices;
+    rep.min_depth_fraction = std::min(rep.min_depth_fraction, second.min_depth_fraction);
+    rep.invalid_after = second.invalid_after;
+    rep.seconds += second.seconds;
+    if (!second.message.empty()) rep.message = second.message;
     return rep;
 }
 

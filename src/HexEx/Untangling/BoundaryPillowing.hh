@@ -57,6 +57,11 @@ struct PillowOptions {
     /// Keep the layer even if some hexes are still not certified valid after the halvings
     /// (PillowReport::invalid_after counts them; for a caller that untangles afterwards).
     bool allow_invalid = false;
+    /// After a layer that skipped patches, a second pass gives the skipped patches (with
+    /// their new strips) a layer too, so that their hexes with two flat boundary faces are
+    /// also relieved (the other patches then have no second layer). Off by default: on the
+    /// cylinders it doubles the added hexes for the same worst SJ.
+    bool second_layer = false;
     int threads = 0;  ///< worker threads for the validity tests (0 = all); the result does not depend on it
 };
 
@@ -69,6 +74,7 @@ struct PillowReport {
     long boundary_patches = 0;    ///< patches of the boundary (bounded by feature edges)
     long skipped_patches = 0;     ///< patches that got no layer (PillowOptions::skip_patch_angle_deg)
     long skipped_quads = 0;       ///< boundary quads of hexes that were not certified valid: no new hex on them
+    long second_layer_hexes = 0;  ///< of hexes_added, those of the second pass (PillowOptions::second_layer)
     long shrunk_vertices = 0;     ///< inner copies placed at less than the full depth
     double min_depth_fraction = 1;///< smallest depth used, relative to the full depth
     long invalid_before = 0;      ///< hexes of the input that were not certified valid

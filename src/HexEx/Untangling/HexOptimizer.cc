@@ -714,6 +714,7 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
             for (const auto v : hexValidities(mesh, options.threads)) invalid_input += v != HexValidity::Valid;
             PillowOptions po;
             po.depth = options.pillow_depth;
+            po.skip_patch_angle_deg = options.pillow_skip_patch_angle_deg;
             po.threads = options.threads;
             po.allow_invalid = true;  // untangled below; undone if that fails
             const HexMesh input = mesh;

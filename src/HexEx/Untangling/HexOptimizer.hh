@@ -64,6 +64,7 @@ struct OptimizeOptions {
     /// optimisation. Needs an all-hex mesh with a manifold boundary.
     bool pillow = false;
     double pillow_depth = 0.3;  ///< PillowOptions::depth of the layer (fraction of the local edge length)
+    double pillow_skip_patch_angle_deg = 150;  ///< PillowOptions::skip_patch_angle_deg (180: a layer on every patch)
 };
 
 /// What optimizeHexMesh() did. Scaled Jacobians are per hex (minimum over its 8 corners).
