@@ -299,3 +299,117 @@ TEST(CgalLccAdapter, OneCallOverloadsWithDartInfoAndPointAccessor) {
     }
     EXPECT_EQ(out.number_of_darts(), 12u);
 }
+
+TEST(CgalLccAdapter, TransitionsSingularEdgesAndGivenMatching) {
+    // A cylinder of three wedges around a singular edge chain of valence 3.
+    const HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(3, 2, 3, 1, 1);
+    const TetLcc tets = toLcc(pm);
+    using Dart = TetLcc::Dart_const_handle;
+    using Results = HexEx::LccResults<TetLcc, HexLcc>;
+    std::map<const void*, std::pair<int, std::array<int, 3>>> transition;  // face dart -> (R, t)
+    std::vector<std::pair<Dart, int>> singular;
+    Results results;
+    results.transition = [&](Dart f, int r, const std::array<int, 3>& t) {
+        EXPECT_TRUE(transition.emplace(&*f, std::make_pair(r, t)).second) << "face reported twice";
+    };
+    results.singular_edge = [&](Dart e, int valence) { singular.emplace_back(e, valence); };
+    HexLcc first;
+    const HexEx::ExtractionReport r1 = HexEx::extractHexMesh(tets, first, HexEx::ExtractionOptions{}, results);
+    EXPECT_TRUE(r1.valid_all_hex);
+    EXPECT_EQ(transition.size(), 4 * pm.mesh.n_cells());
+    // Each transition maps this volume's parameters of the face's vertices onto the
+    // neighbour's (read from the darts' info, independently of the adapter).
+    std::size_t rotated = 0, checked = 0;
+    for (auto it = tets.darts().begin(); it != tets.darts().end(); ++it) {
+        const auto found = transition.find(&*it);
+        if (found == transition.end()) continue;
+        const auto& [rot, t] = found->second;
+        rotated += rot != 0 ? 1 : 0;
+        if (tets.is_free<3>(it)) {
+            EXPECT_EQ(rot, 0);
+            continue;
+        }
+        const HexEx::GridTransform g(HexEx::Rotation(rot), HexEx::Vec3i(t[0], t[1], t[2]));
+        Dart x = it;
+        for (int k = 0; k < 3; ++k, x = tets.beta(x, 1)) {
+            Dart y = tets.beta(Dart(it), 3);
+            for (int j = 0; j < 3 && tets.vertex_attribute(y) != tets.vertex_attribute(x); ++j) y = tets.beta(y, 1);
+            ASSERT_EQ(tets.vertex_attribute(y), tets.vertex_attribute(x));
+            const auto& a = tets.info(x);
+            const auto& b = tets.info(y);
+            const HexEx::Vec3d mapped = g.apply(HexEx::Vec3d(a[0], a[1], a[2]));
+            for (int d = 0; d < 3; ++d) EXPECT_NEAR(mapped[d], b[std::size_t(d)], 1e-9);
+            ++checked;
+        }
+    }
+    EXPECT_GT(rotated, 0u);
+    EXPECT_GT(checked, 0u);
+    // Singular edges: on the axis, valence 3, as many as the report counts.
+    EXPECT_EQ(long(singular.size()), r1.input.singular_edges);
+    EXPECT_GT(singular.size(), 0u);
+    for (const auto& [e, valence] : singular) {
+        EXPECT_EQ(valence, 3);
+        for (Dart d : {e, tets.beta(e, 1)}) {
+            EXPECT_NEAR(tets.point(d).x(), 0.0, 1e-12);
+            EXPECT_NEAR(tets.point(d).y(), 0.0, 1e-12);
+        }
+    }
+    // The reported rotations given back: the same hexes; all-identity: no singular edge.
+    Results given;
+    given.given_rotation = [&](const TetLcc&, Dart f) { return transition.at(&*f).first; };
+    HexLcc second;
+    const HexEx::ExtractionReport r2 = HexEx::extractHexMesh(tets, second, HexEx::ExtractionOptions{}, given);
+    EXPECT_EQ(r2.input.singular_edges, r1.input.singular_edges);
+    HexExTest::expectSameMesh(readBack(second, volumeDarts(second)), readBack(first, volumeDarts(first)));
+    given.given_rotation = [](const TetLcc&, Dart) { return 0; };
+    HexLcc third;
+    EXPECT_EQ(HexEx::extractHexMesh(tets, third, HexEx::ExtractionOptions{}, given).input.singular_edges, 0);
+    given.given_rotation = [](const TetLcc&, Dart) { return 24; };
+    try {
+        HexEx::extractHexMesh(tets, third, HexEx::ExtractionOptions{}, given);
+        FAIL() << "no exception";
+    } catch (const HexEx::InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("given rotation 24 of the face opposite corner"), std::string::npos) << e.what();
+    }
+}
+
+TEST(CgalLccAdapter, ProvenanceThroughCallables) {
+    HexEx::ParametrizedTetMesh pm = HexEx::generateCylinder(3, 2, 3, 1, 1);
+    const TetLcc tets = toLcc(pm);
+    pm.mesh.build_adjacency();
+    HexEx::HexProvenance ref;
+    HexEx::ExtractionOptions opt;
+    opt.provenance = &ref;
+    HexEx::HexMesh hm;
+    HexEx::extractHexMesh(pm, hm, opt);
+    using Dart = TetLcc::Dart_const_handle;
+    std::vector<std::size_t> hexTet, vertexTet;
+    std::vector<std::array<int, 3>> cells, coords;
+    std::vector<HexEx::Vec3d> points;
+    std::vector<const void*> hexDarts;
+    HexEx::LccResults<TetLcc, HexLcc> results;
+    results.hex_provenance = [&](HexLcc::Dart_handle d, std::size_t t, Dart td, const std::array<int, 3>& c) {
+        hexDarts.push_back(&*d);
+        hexTet.push_back(t);
+        cells.push_back(c);
+        EXPECT_TRUE(tets.is_volume_combinatorial_tetrahedron(td));
+    };
+    results.vertex_provenance = [&](HexLcc::Vertex_attribute_handle v, std::size_t t, Dart, const std::array<int, 3>& z) {
+        points.push_back(HexEx::detail::lccToVec3d(v->point()));
+        vertexTet.push_back(t);
+        coords.push_back(z);
+    };
+    HexLcc hexes;
+    HexEx::extractHexMesh(tets, hexes, HexEx::ExtractionOptions{}, results);
+    ASSERT_EQ(hexTet.size(), hm.hexes.size());
+    ASSERT_EQ(vertexTet.size(), hm.vertices.size());
+    for (std::size_t h = 0; h < hm.hexes.size(); ++h) {
+        EXPECT_EQ(int(hexTet[h]), ref.hex_source_tet[h]);
+        EXPECT_EQ(cells[h], ref.hex_grid_cell[h]);
+    }
+    for (std::size_t v = 0; v < hm.vertices.size(); ++v) {
+        EXPECT_EQ(int(vertexTet[v]), ref.vertex_source_tet[v]);
+        EXPECT_EQ(coords[v], ref.vertex_grid_coords[v]);
+        EXPECT_EQ(points[v], hm.vertices[v]);
+    }
+}

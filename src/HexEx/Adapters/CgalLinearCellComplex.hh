@@ -17,6 +17,7 @@
 #include "../Core/Error.hh"
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
+#include "../Mesh/HexProvenance.hh"
 
 #include <CGAL/number_utils.h>
 
@@ -24,6 +25,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <type_traits>
 #include <unordered_map>
@@ -112,6 +114,49 @@ std::size_t lccVertexOf(const LCC& lcc, const std::unordered_map<const void*, st
 
 } // namespace detail
 
+/// What the one-call CGAL overloads of extractHexMesh() read (a given matching) or report
+/// (what the extraction found) besides the hex mesh, through callables (each optional: an
+/// empty one reads or reports nothing, and the extraction computes only what is asked for).
+/// A Linear_cell_complex has no named properties, so results are handed to the caller with
+/// the darts and vertex attributes they belong to; the caller stores them where it likes
+/// (dart info, attributes, its own maps).
+///
+/// A tet face is named by a dart of it in its volume ("face dart"); the tet numbers are
+/// those of the extraction (the order of `one_dart_per_cell<3>()`), passed together with
+/// the first dart of the tet's volume in that order.
+template <class TetLcc, class HexLcc>
+struct LccResults {
+    /// Dart of the tet LCC.
+    using TetDart = typename TetLcc::Dart_const_handle;
+    /// Dart of the hex LCC.
+    using HexDart = typename HexLcc::Dart_handle;
+    /// Vertex attribute of the hex LCC.
+    using HexVertex = typename HexLcc::Vertex_attribute_handle;
+
+    /// Read: called once per interior tet face (face dart) of every tet, it returns the
+    /// rotation index (0..23, see Rotation) of the transition from the chart of the dart's
+    /// volume into the chart of the volume across the face, used instead of inferring it
+    /// (ExtractionOptions::given_rotations). A value outside 0..23 is an InputError.
+    std::function<int(const TetLcc&, TetDart)> given_rotation;
+    /// Report: per tet face (face dart, every face of every tet): the transition `u' = R u + t`
+    /// from the chart of the dart's volume into the chart of the volume across, as the rotation
+    /// index of R and t (identity on the boundary). The transitions HexEx uses
+    /// (computeTransitions(), with #given_rotation when set).
+    std::function<void(TetDart, int rotation, const std::array<int, 3>& translation)> transition;
+    /// Report: per singular edge of the input (singularityGraph()): a dart of the edge (its
+    /// vertex is one end, the vertex of `beta(d, 1)` the other) and its valence.
+    std::function<void(TetDart, int valence)> singular_edge;
+    /// Report: per hex (in order; its dart in LccHexOutput::cellDarts()): its source tet (number
+    /// and first dart) and its integer grid cell in that tet's chart (HexProvenance).
+    std::function<void(HexDart, std::size_t tet, TetDart, const std::array<int, 3>& grid_cell)> hex_provenance;
+    /// Report: per output vertex that belongs to a hex: a tet whose closed parameter image
+    /// contains it (number and first dart) and its integer grid coordinates in that tet's chart.
+    std::function<void(HexVertex, std::size_t tet, TetDart, const std::array<int, 3>& grid_coords)> vertex_provenance;
+
+    /// True if any callable is set.
+    bool any() const { return given_rotation || transition || singular_edge || hex_provenance || vertex_provenance; }
+};
+
 /// Extracts the hex mesh of the CGAL Linear_cell_complex of tets @p tets, whose darts carry
 /// the map (`tets.info(d)`: the parameter of the vertex of `d` in the chart of its volume; a
 /// CGAL point or vector or an indexable triple), into the Linear_cell_complex @p hexes
@@ -119,11 +164,13 @@ std::size_t lccVertexOf(const LCC& lcc, const std::unordered_map<const void*, st
 ///
 /// The tets are read straight into the built-in kernel (vertex and tet order, corner order
 /// as LccTetMesh reads them; no per-tet cache), extracted, and the copy is freed before the
-/// output is written. Throws InputError if a volume is not a closed combinatorial
-/// tetrahedron or the input is otherwise unusable.
+/// output is written. @p results reads a given matching and reports transitions, singular
+/// edges and the hexes' provenance (LccResults). Throws InputError if a volume is not a closed
+/// combinatorial tetrahedron or the input is otherwise unusable.
 template <class TetLcc, class HexLcc,
           std::enable_if_t<detail::IsLcc3<TetLcc>::value && detail::IsLcc3<HexLcc>::value, int> = 0>
-ExtractionReport extractHexMesh(const TetLcc& tets, HexLcc& hexes, const ExtractionOptions& options = {});
+ExtractionReport extractHexMesh(const TetLcc& tets, HexLcc& hexes, const ExtractionOptions& options = {},
+                                const LccResults<TetLcc, HexLcc>& results = {});
 
 /// As the overload above, the map read through @p param: called as `param(tets, d)` with a
 /// dart `d` (Dart_const_handle), it returns the parameter of the vertex of `d` in the chart of
@@ -132,7 +179,7 @@ ExtractionReport extractHexMesh(const TetLcc& tets, HexLcc& hexes, const Extract
 template <class TetLcc, class ParamFn, class HexLcc,
           std::enable_if_t<detail::IsLcc3<TetLcc>::value && detail::IsLcc3<HexLcc>::value, int> = 0>
 ExtractionReport extractHexMesh(const TetLcc& tets, const ParamFn& param, HexLcc& hexes,
-                                const ExtractionOptions& options = {});
+                                const ExtractionOptions& options = {}, const LccResults<TetLcc, HexLcc>& results = {});
 
 /// Input view of a CGAL Linear_cell_complex of dimension 3 whose volumes are tetrahedra,
 /// read by the templated extractHexMesh() through TetMeshTraits.
@@ -227,6 +274,8 @@ public:
     /// One dart per output cell, hexahedra first, then polyhedra (the order of the
     /// extractor's HexMesh::hexes and HexMesh::polyhedra): attach per-cell data to them.
     const std::vector<Dart>& cellDarts() const { return cells_; }
+    /// One vertex attribute per output vertex, in the extractor's vertex order.
+    const std::vector<typename LCC::Vertex_attribute_handle>& vertexAttributes() const { return vertices_; }
     /// Number of faces left 3-free because they could not be paired consistently.
     std::size_t unsewnFaces() const { return unsewn_; }
 
