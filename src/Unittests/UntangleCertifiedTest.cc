@@ -216,6 +216,35 @@ TEST(UntangleCertified, HexPositiveAtItsCornersButNegativeInsideIsRepaired) {
     EXPECT_EQ(notCertified(found), 0);
 }
 
+TEST(UntangleCertified, FruitlessCertifiedAttemptDoesNotGrow) {
+    // A 6 x 6 x 1 layer (every vertex on the boundary, held with BoundaryMode::Fixed) whose
+    // centre hex is positive at its corners but negative inside: no placement can help, and
+    // the certified phase of a light tangle stops after its first neighbourhood left the
+    // count as it was (it used to grow to 4 rings: S1 x2 paid 1,100 L-BFGS iterations there).
+    HexMesh found;
+    std::mt19937 gen(5);
+    for (int t = 0; t < 100000 && found.hexes.empty(); ++t) {
+        HexMesh m = gridBox(6, 6, 1);
+        const auto p = randomHex(gen, 0.45);
+        for (std::size_t k = 0; k < 8; ++k) m.vertices[static_cast<std::size_t>(m.hexes[14][k])] = p[k] + Vec3d(2, 2, 0);
+        const QualityStats q = computeQuality(m, 1);
+        if (q.inverted_hexes == 0 && q.invalid_hexes > 0 && q.invalid_hexes < 9) found = m;
+    }
+    ASSERT_FALSE(found.hexes.empty()) << "no such layer among the hexes tried";
+    const HexMesh before = found;
+    UntangleOptions opt;
+    opt.boundary = BoundaryMode::Fixed;
+    const UntangleReport r = untangleHexMesh(found, opt);
+    EXPECT_EQ(r.inverted_before, 0);
+    EXPECT_GT(r.invalid_before, 0);
+    EXPECT_EQ(r.invalid_after, r.invalid_before);
+    EXPECT_FALSE(r.success);
+    EXPECT_EQ(r.attempts, 1);
+    EXPECT_EQ(r.lbfgs_iterations, 0);
+    EXPECT_EQ(found.vertices, before.vertices);
+    EXPECT_NE(r.message.find("have no vertex that may move"), std::string::npos) << r.message;
+}
+
 TEST(UntangleCertified, HeavyTangleOfAGridFixedAndOnTheSurface) {
     const UntangleReport f = tangleAndUntangle(gridBox(10, 10, 10), 1.5, BoundaryMode::Fixed, 0.9);
     EXPECT_EQ(f.rings, -1);  // a heavy tangle is untangled on the whole mesh
