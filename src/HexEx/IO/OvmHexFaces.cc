@@ -1,12 +1,13 @@
 /// @file OvmHexFaces.cc
 /// Face and edge numbering of all-hex OpenVolumeMesh models (OvmHexFaces.hh). Loop 6h + i is
 /// quad i of hex h. One parallel pass over the vertices, each looking at the corners of the
-/// hexes around it, matches the quads whose smallest vertex it is (the neighbour loop) and
-/// finds the owner of every edge whose smaller vertex it is: the smallest hex with that edge,
-/// whose smaller quad through it is the edge's first occurrence. A face's first loop is the
+/// hexes around it (prefetched a few vertices ahead), matches the quads whose smallest vertex
+/// it is (the neighbour loop) and finds the owner of every edge whose smaller vertex it is:
+/// the smallest hex with that edge, whose smaller quad through it is the edge's first
+/// occurrence; every hex edge keeps a reference to its owner. A face's first loop is the
 /// smaller of its loops; faces are numbered in order of first loops (count per chunk,
-/// prefix, number), edges in order of first loop and position (the same), and a second pass
-/// over the vertices writes every edge's halfedge into the first loops of its faces.
+/// prefix, number), edges in order of first loop and position (the same), and a last pass
+/// over the hexes, in face order, writes the edges and every face's halfedges.
 
 #include "OvmHexFaces.hh"
 
@@ -67,6 +68,10 @@ constexpr HexTables kT;
 /// Fewer hexes than this are handled on one thread.
 constexpr std::size_t kParallelHexes = 20000;
 
+/// How many vertices ahead the per-vertex passes prefetch the hexes around a vertex (4 and 8
+/// gave the same, 0 about 20 % more CPU time in the two per-vertex passes on the cylinder).
+constexpr std::size_t kPrefetchAhead = 4;
+
 int chunksFor(std::size_t n, int threads) { return n >= kParallelHexes ? std::max(1, threads) : 1; }
 
 /// Exclusive prefix sums of per-chunk counts in place; @return the total.
@@ -80,51 +85,102 @@ std::size_t prefix(std::vector<std::size_t>& counts) {
     return sum;
 }
 
-/// One hex edge seen from the smaller of its two vertices: the larger vertex, the hex, its local edge.
-struct EdgeUse {
-    int other;  ///< the larger vertex
-    int hex;    ///< the hex
-    int edge;   ///< its local edge (index into kEdges)
-    /// Order by larger vertex, then hex.
-    bool operator<(const EdgeUse& o) const { return other != o.other ? other < o.other : hex < o.hex; }
-};
-
-/// The corners (8 h + local index) around every vertex, in hex order.
+/// The corners (8 h + local index) around every vertex (in no particular order within a vertex).
 struct CornerStars {
     std::vector<int> start;   ///< per vertex the first entry of corner (and the end)
     std::vector<int> corner;  ///< 8 h + local index, grouped by vertex
-    /// Counting sort of the corners of @p mesh by vertex.
-    explicit CornerStars(const HexMesh& mesh) : start(mesh.vertices.size() + 1, 0), corner(8 * mesh.hexes.size()) {
-        for (const auto& hx : mesh.hexes)
-            for (const int v : hx) ++start[static_cast<std::size_t>(v) + 1];
+    /// Counting sort of the corners of @p mesh by vertex, counted and filled on @p chunks threads
+    /// (atomic slots: the order within a vertex varies, which no caller depends on).
+    CornerStars(const HexMesh& mesh, int chunks) : start(mesh.vertices.size() + 1, 0), corner(8 * mesh.hexes.size()) {
+        const std::size_t nHex = mesh.hexes.size();
+        int* count = start.data() + 1;
+        parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+            for (std::size_t h = h0; h < h1; ++h)
+                for (const int v : mesh.hexes[h]) __atomic_fetch_add(&count[v], 1, __ATOMIC_RELAXED);
+        });
         for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
         std::vector<int> fill(start.begin(), start.end() - 1);
-        for (std::size_t h = 0; h < mesh.hexes.size(); ++h)
-            for (int k = 0; k < 8; ++k)
-                corner[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.hexes[h][static_cast<std::size_t>(k)])]++)] =
-                    static_cast<int>(8 * h) + k;
+        parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+            for (std::size_t h = h0; h < h1; ++h)
+                for (int k = 0; k < 8; ++k) {
+                    const int slot = __atomic_fetch_add(&fill[static_cast<std::size_t>(mesh.hexes[h][static_cast<std::size_t>(k)])], 1,
+                                                        __ATOMIC_RELAXED);
+                    corner[static_cast<std::size_t>(slot)] = static_cast<int>(8 * h) + k;
+                }
+        });
+    }
+    /// Frees both arrays (the stars are needed by the first per-vertex pass only).
+    void release() {
+        std::vector<int>().swap(start);
+        std::vector<int>().swap(corner);
+    }
+    /// Asks the cache for the hexes around vertex @p v (if it exists) ahead of their use: the
+    /// per-vertex passes wait on these scattered loads otherwise.
+    void prefetch(const HexMesh& mesh, std::size_t v) const {
+        if (v + 1 >= start.size()) return;
+        for (int s = start[v]; s < start[v + 1]; ++s)
+            __builtin_prefetch(&mesh.hexes[static_cast<std::size_t>(corner[static_cast<std::size_t>(s)] / 8)]);
     }
 };
 
-/// The hex edges whose smaller vertex is @p v, sorted by (larger vertex, hex): one run per edge.
-void edgeUses(const HexMesh& mesh, const CornerStars& st, std::size_t v, std::vector<EdgeUse>& uses) {
-    uses.clear();
-    for (int s = st.start[v]; s < st.start[v + 1]; ++s) {
-        const int c = st.corner[static_cast<std::size_t>(s)], h = c / 8, k = c % 8;
-        const auto& hx = mesh.hexes[static_cast<std::size_t>(h)];
-        for (const int m : kT.cornerNext[k]) {
-            const int u = hx[static_cast<std::size_t>(m)];
-            if (u > static_cast<int>(v)) uses.push_back({u, h, kT.edgeOf[k][m]});
+/// The hex edges whose smaller vertex is one vertex v: per distinct edge (v, other) the
+/// smallest hex with it and its local edge there, and every use of it.
+struct VertexEdges {
+    /// One hex edge through v: which distinct edge, the hex, its local edge.
+    struct Use {
+        int edgeIndex;  ///< index into other/hex/edge
+        int hex;        ///< the hex
+        int edge;       ///< its local edge (index into kEdges)
+    };
+    std::vector<int> other;  ///< per distinct edge its larger vertex
+    std::vector<int> hex;    ///< per distinct edge the smallest hex with it
+    std::vector<int> edge;   ///< per distinct edge its local edge in that hex
+    std::vector<Use> uses;   ///< every use
+
+    /// Collects the edges of vertex @p v from the corners around it (a linear search among
+    /// the few distinct edges instead of sorting the uses).
+    void collect(const HexMesh& mesh, const CornerStars& st, std::size_t v) {
+        other.clear();
+        hex.clear();
+        edge.clear();
+        uses.clear();
+        for (int s = st.start[v]; s < st.start[v + 1]; ++s) {
+            const int c = st.corner[static_cast<std::size_t>(s)], h = c / 8, k = c % 8;
+            const auto& hx = mesh.hexes[static_cast<std::size_t>(h)];
+            for (const int m : kT.cornerNext[k]) {
+                const int u = hx[static_cast<std::size_t>(m)];
+                if (u <= static_cast<int>(v)) continue;
+                const int e = kT.edgeOf[k][m];
+                std::size_t d = 0;
+                while (d < other.size() && other[d] != u) ++d;
+                if (d == other.size()) {
+                    other.push_back(u);
+                    hex.push_back(h);
+                    edge.push_back(e);
+                } else if (h < hex[d]) {
+                    hex[d] = h;
+                    edge[d] = e;
+                }
+                uses.push_back({static_cast<int>(d), h, e});
+            }
         }
     }
-    std::sort(uses.begin(), uses.end());
+};
+
+/// Position of local edge @p e in its smaller quad kT.edgeFaces[e][0].
+int firstPosition(int e) {
+    const int i = kT.edgeFaces[e][0];
+    int j = 0;
+    while (kT.edgeAt[i][j] != e) ++j;
+    return j;
 }
 
 } // namespace
 
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     const std::size_t nHex = mesh.hexes.size(), nLoops = 6 * nHex, nv = mesh.vertices.size();
-    if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12)) return false;  // halffaces fit in int
+    // Halffaces fit in int, owner references (32 h + bit) in 32 bits.
+    if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12) || nHex > (std::size_t(1) << 27)) return false;
     const int chunks = chunksFor(nHex, threads), vChunks = chunksFor(nv, threads);
     const auto loopVertex = [&](std::size_t l, int j) {
         return mesh.hexes[l / 6][static_cast<std::size_t>(kOvmHexFaces[l % 6][j & 3])];
@@ -139,21 +195,25 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                         ok[static_cast<std::size_t>(c)] = 0;
     });
     if (!allOk()) return false;
-    const CornerStars st(mesh);
+    CornerStars st(mesh, chunks);
 
     // Per vertex v: the quads whose smallest vertex is v, matched by their other three
     // vertices (neighbour loop or -1), and the owner of every edge whose smaller vertex is
     // v: the smallest hex with the edge, whose smaller quad through it is the edge's first
-    // loop (bit 4 i + j of owned[h]: quad i, position j).
+    // loop (bit 4 i + j of owned[h]: quad i, position j). Every hex edge (12 h + local edge)
+    // gets a reference to its owner (32 owner hex + bit), so that the halfedges can then be
+    // filled hex by hex in face order instead of per vertex again (scattered over memory).
     std::vector<int> nb(nLoops);
     std::vector<std::uint32_t> owned(nHex, 0);
+    std::vector<std::uint32_t> ownerRef(12 * nHex);
     parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
         struct Quad {  // a loop and its other three vertices, sorted
             int loop, a, b, d;
         };
         std::vector<Quad> quads;
-        std::vector<EdgeUse> uses;
+        VertexEdges edges;
         for (std::size_t v = v0; v < v1; ++v) {
+            st.prefetch(mesh, v + kPrefetchAhead);
             quads.clear();
             for (int s = st.start[v]; s < st.start[v + 1]; ++s) {
                 const int cr = st.corner[static_cast<std::size_t>(s)], h = cr / 8, k = cr % 8;
@@ -172,27 +232,36 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                     quads.push_back({6 * h + i, q[0], q[1], q[2]});
                 }
             }
-            for (std::size_t x = 0; x < quads.size(); ++x) {
-                int found = -1, matches = 0;
-                for (std::size_t y = 0; y < quads.size(); ++y)
-                    if (y != x && quads[x].a == quads[y].a && quads[x].b == quads[y].b && quads[x].d == quads[y].d) {
-                        found = quads[y].loop;
-                        ++matches;
-                    }
-                if (matches > 1) ok[static_cast<std::size_t>(c)] = 0;
-                nb[static_cast<std::size_t>(quads[x].loop)] = found;
+            // Equal vertex triples lie next to each other once sorted (insertion sort: few quads).
+            const auto less = [](const Quad& p, const Quad& q) {
+                return p.a != q.a ? p.a < q.a : p.b != q.b ? p.b < q.b : p.d < q.d;
+            };
+            for (std::size_t x = 1; x < quads.size(); ++x)
+                for (std::size_t y = x; y > 0 && less(quads[y], quads[y - 1]); --y) std::swap(quads[y], quads[y - 1]);
+            for (std::size_t x = 0; x < quads.size();) {
+                std::size_t y = x + 1;
+                while (y < quads.size() && !less(quads[x], quads[y])) ++y;
+                if (y - x > 2) ok[static_cast<std::size_t>(c)] = 0;
+                const bool pair = y - x == 2;
+                nb[static_cast<std::size_t>(quads[x].loop)] = pair ? quads[x + 1].loop : -1;
+                if (pair) nb[static_cast<std::size_t>(quads[x + 1].loop)] = quads[x].loop;
+                x = y;
             }
-            edgeUses(mesh, st, v, uses);
-            for (std::size_t r = 0; r < uses.size(); ++r) {
-                if (r > 0 && uses[r].other == uses[r - 1].other) continue;
-                const int e = uses[r].edge, i = kT.edgeFaces[e][0];
-                int j = 0;
-                while (kT.edgeAt[i][j] != e) ++j;
-                __atomic_fetch_or(&owned[static_cast<std::size_t>(uses[r].hex)], 1u << (4 * i + j), __ATOMIC_RELAXED);
+            edges.collect(mesh, st, v);
+            for (std::size_t d = 0; d < edges.other.size(); ++d) {
+                const int e = edges.edge[d], bit = 4 * kT.edgeFaces[e][0] + firstPosition(e);
+                __atomic_fetch_or(&owned[static_cast<std::size_t>(edges.hex[d])], 1u << bit, __ATOMIC_RELAXED);
+                edges.edge[d] = bit;  // from here on: the owner's bit
+            }
+            for (const auto& use : edges.uses) {
+                const std::size_t d = static_cast<std::size_t>(use.edgeIndex);
+                ownerRef[12 * static_cast<std::size_t>(use.hex) + static_cast<std::size_t>(use.edge)] =
+                    32u * static_cast<std::uint32_t>(edges.hex[d]) + static_cast<std::uint32_t>(edges.edge[d]);
             }
         }
     });
     if (!allOk()) return false;
+    st.release();
 
     // Faces: number the first loops (no neighbour or a later one) in loop order, then give
     // every second loop its halfface.
@@ -226,10 +295,11 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
         }
     });
+    std::vector<int>().swap(nb);
 
     // Edges: numbered in order of their first loop and position (count, prefix, rank of the
-    // owner bit); per vertex again, every edge writes its halfedge into the first loops of
-    // all faces through it.
+    // owner bit); then hex by hex, every owner writes its edges and every first loop its
+    // halfedges (looked up through the owner references).
     std::vector<std::size_t> edgeBase(nHex + 1);
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
@@ -252,32 +322,26 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     parallelChunks(nFaces + 1, chunksFor(nFaces, threads), [&](int, std::size_t f0, std::size_t f1) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });
-    parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
-        std::vector<EdgeUse> uses;
-        for (std::size_t v = v0; v < v1; ++v) {
-            edgeUses(mesh, st, v, uses);
-            int he = 0, a = 0;
-            for (std::size_t r = 0; r < uses.size(); ++r) {
-                if (r == 0 || uses[r].other != uses[r - 1].other) {
-                    const std::size_t h = static_cast<std::size_t>(uses[r].hex);
-                    const int e = uses[r].edge, i = kT.edgeFaces[e][0];
-                    int j = 0;
-                    while (kT.edgeAt[i][j] != e) ++j;
-                    const int bit = 4 * i + j;
-                    const std::size_t id = edgeBase[h] + static_cast<std::size_t>(__builtin_popcount(owned[h] & ((1u << bit) - 1u)));
-                    const std::size_t l = 6 * h + static_cast<std::size_t>(i);
-                    a = loopVertex(l, j);
-                    out.edges[id] = {{a, loopVertex(l, j + 1)}};
-                    he = static_cast<int>(2 * id);
-                }
-                const int e2 = uses[r].edge;
-                const std::uint8_t fm = firstMask[static_cast<std::size_t>(uses[r].hex)];
-                for (const int i2 : kT.edgeFaces[e2]) {
-                    if (!(fm >> i2 & 1u)) continue;
-                    const std::size_t l2 = 6 * static_cast<std::size_t>(uses[r].hex) + static_cast<std::size_t>(i2);
-                    int j2 = 0;
-                    while (kT.edgeAt[i2][j2] != e2) ++j2;
-                    fh.values[static_cast<std::size_t>(hf[l2]) * 2 + static_cast<std::size_t>(j2)] = he + (loopVertex(l2, j2) == a ? 0 : 1);
+    const auto edgeId = [&](std::size_t h, int bit) {
+        return edgeBase[h] + static_cast<std::size_t>(__builtin_popcount(owned[h] & ((1u << bit) - 1u)));
+    };
+    parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+        for (std::size_t h = h0; h < h1; ++h) {
+            for (std::uint32_t bits = owned[h]; bits != 0; bits &= bits - 1) {
+                const int bit = __builtin_ctz(bits), i = bit / 4, j = bit % 4;
+                const std::size_t l = 6 * h + static_cast<std::size_t>(i);
+                out.edges[edgeId(h, bit)] = {{loopVertex(l, j), loopVertex(l, j + 1)}};
+            }
+            for (int i = 0; i < 6; ++i) {
+                if (!(firstMask[h] >> i & 1u)) continue;
+                const std::size_t l = 6 * h + static_cast<std::size_t>(i);
+                int* values = &fh.values[2 * static_cast<std::size_t>(hf[l])];
+                for (int j = 0; j < 4; ++j) {
+                    const std::uint32_t ref = ownerRef[12 * h + static_cast<std::size_t>(kT.edgeAt[i][j])];
+                    const std::size_t oh = ref / 32;
+                    const int bit = static_cast<int>(ref % 32);
+                    const int start = loopVertex(6 * oh + static_cast<std::size_t>(bit / 4), bit % 4);
+                    values[j] = static_cast<int>(2 * edgeId(oh, bit)) + (loopVertex(l, j) == start ? 0 : 1);
                 }
             }
         }

@@ -27,11 +27,12 @@ constexpr int kOvmHexOrder[6] = {0, 1, 5, 3, 4, 2};
 /// Numbers the faces and edges of the hexes of @p mesh (no polyhedra; vertex indices
 /// checked by the caller) as buildOvmFaces() numbers the hexes' quads in loop order (loop
 /// 6h + i is quad detail::kOvmHexFaces[i] of hex h): per loop its halfface, per face its four
-/// halfedges, the edges' end points. Works per vertex on the hexes around it, in parallel.
+/// halfedges, the edges' end points. Matches quads and finds edge owners per vertex on the
+/// hexes around it, then fills the halfedges hex by hex, in parallel.
 /// Same result for any @p threads.
 /// @return false (and @p out unspecified) if the mesh is outside what it covers: a hex with a
 /// repeated vertex, a quad whose vertices bound quads of more than two hexes, or more than
-/// INT_MAX / 12 hexes; buildOvmFaces() must be used then.
+/// 2^27 hexes; buildOvmFaces() must be used then.
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out);
 
 } // namespace HexEx
