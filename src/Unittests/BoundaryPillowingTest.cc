@@ -3,8 +3,12 @@
 /// vertices bit for bit, every hex certified valid, the boundary quads are the new hexes'
 /// outer quads; a hex with two boundary faces at 170 degrees (worst SJ <= sin 170 with its
 /// topology) above a stated bound after OptimizeOptions::pillow; 1 and 2 threads identical;
-/// clear errors on polyhedra and non-manifold boundaries.
+/// clear errors on polyhedra and non-manifold boundaries; `hexex optimize --pillow`.
 
+#include "ToolPath.hh"
+
+#include <HexEx/IO/HexMeshReaders.hh>
+#include <HexEx/IO/HexMeshWriters.hh>
 #include <HexEx/Mesh/HexMeshCheck.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/BoundaryPillowing.hh>
@@ -12,8 +16,14 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -215,4 +225,71 @@ TEST(BoundaryPillowingTest, BadInputGivesClearErrors) {
     HexMesh rep = grid(1);
     rep.hexes[0][3] = rep.hexes[0][0];
     EXPECT_EQ(message(rep), "pillowing: hex 0 has the vertex 0 twice");
+}
+
+TEST(BoundaryPillowingTest, FlatFeatureCornerGetsAStripAndOptionallyASecondLayer) {
+    // The hex of FlatCornerIsLifted...: its top and bottom quads have the 170-degree corner
+    // between two feature edges, so those two patches get no layer but a strip: 4 side quads
+    // -> 4 new hexes, 8 copies (all 8 vertices are rim vertices).
+    HexMesh m = flatCornerHex();
+    const PillowReport r = pillowBoundary(m);
+    ASSERT_TRUE(r.success) << r.message;
+    EXPECT_EQ(r.boundary_patches, 5);  // top, bottom, the sides AB+BC (170 degrees apart), CD, DA
+    EXPECT_EQ(r.skipped_patches, 2);
+    EXPECT_EQ(r.hexes_added, 4);
+    EXPECT_EQ(r.vertices_added, 8);
+    EXPECT_EQ(notValid(m), 0);
+    // With the second pass the two disks (each now the old quad plus its strip of 4) get a
+    // layer of 5 hexes each.
+    HexMesh m2 = flatCornerHex();
+    PillowOptions o;
+    o.second_layer = true;
+    const PillowReport r2 = pillowBoundary(m2, o);
+    ASSERT_TRUE(r2.success) << r2.message;
+    EXPECT_EQ(r2.second_layer_hexes, 10);
+    EXPECT_EQ(r2.hexes_added, 14);
+    EXPECT_EQ(static_cast<long>(m2.hexes.size()), 15);
+    EXPECT_EQ(notValid(m2), 0);
+}
+
+TEST(BoundaryPillowingTest, CommandLineOptimizePillow) {
+    const std::string tool = HexExTest::hexexBinary();
+    if (tool.empty()) GTEST_SKIP() << "hexex tool not found next to the test binary";
+    const auto dir = std::filesystem::temp_directory_path() / "hexex_pillow_cli";
+    std::filesystem::create_directories(dir);
+    const std::string in = (dir / "in.vtu").string(), out = (dir / "out.vtu").string(), js = (dir / "r.json").string();
+    const std::string err = (dir / "err.txt").string();
+    writeHexMesh(in, grid(2));
+    auto run = [&](const std::string& args) {
+        const int st = std::system((tool + " " + args + " > " + js + " 2> " + err).c_str());
+        return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    };
+    auto slurp = [](const std::string& p) {
+        std::ifstream f(p);
+        return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    };
+    ASSERT_EQ(run("optimize " + in + " -o " + out + " --pillow --json --threads 2"), 0) << slurp(err);
+    const std::string json = slurp(js);
+    EXPECT_NE(json.find("\"pillowed_hexes\": 24"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"pillow_vertices\": 26"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"hexes\": 32"), std::string::npos) << json;
+    EXPECT_NE(slurp(err).find("optimize: pillowed: 24 hexes and 26 vertices added along the boundary"), std::string::npos)
+        << slurp(err);
+    const HexMesh result = readHexMesh(out);
+    EXPECT_EQ(result.hexes.size(), 32u);
+    EXPECT_EQ(result.vertices.size(), 53u);
+    // Two cubes sharing an edge: a clear error, exit status 2.
+    HexMesh two = grid(1);
+    for (std::size_t v = 0; v < 8; ++v) two.vertices.push_back(two.vertices[v] + Vec3d(1, 1, 0));
+    two.hexes.push_back({{8, 9, 10, 11, 12, 13, 14, 15}});
+    // Glue: the second cube's corners (0,0,z) are the first cube's (1,1,z).
+    for (auto& v : two.hexes[1]) {
+        if (v == 8) v = 2;
+        if (v == 12) v = 6;
+    }
+    two.vertices.resize(16);
+    writeHexMesh(in, two);
+    EXPECT_EQ(run("optimize " + in + " -o " + out + " --pillow"), 2);
+    EXPECT_NE(slurp(err).find(") is in 4 boundary quads (expected 2)"), std::string::npos) << slurp(err);
+    std::filesystem::remove_all(dir);
 }

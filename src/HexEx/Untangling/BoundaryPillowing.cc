@@ -402,9 +402,9 @@ PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layere
                 ++n_skip;
             }
         // Where the layer would end on itself, grow the skipped region by the quads around it
-        // (vertex neighbours), at most 3 times.
+        // (vertex neighbours), at most 6 times.
         bool ok = n_skip == 0;
-        for (int grow = 0; n_skip > 0 && grow <= 3; ++grow) {
+        for (int grow = 0; n_skip > 0 && grow <= 6; ++grow) {
             for (std::size_t i = 0; i < quads.size(); ++i) in_layer[i] = saved[i] && !skip[i];
             if ((ok = rimOk())) break;
             std::vector<char> near(nv, 0);
@@ -588,6 +588,11 @@ PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layere
 
 PillowReport pillowBoundary(HexMesh& mesh, const PillowOptions& options) {
     const long nh = static_cast<long>(mesh.hexes.size());
+    if (options.layered_from >= 0) {
+        PillowReport rep = pillowPass(mesh, options, options.layered_from);
+        rep.second_layer_hexes = rep.hexes_added;
+        return rep;
+    }
     PillowReport rep = pillowPass(mesh, options, -1);
     if (!rep.success || rep.skipped_patches == 0 || !options.second_layer || rep.hexes_added == 0) return rep;
     // The skipped patches now have their strips: give them (and the strips) a layer too.

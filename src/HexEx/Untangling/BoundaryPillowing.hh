@@ -62,6 +62,10 @@ struct PillowOptions {
     /// also relieved (the other patches then have no second layer). Off by default: on the
     /// cylinders it doubles the added hexes for the same worst SJ.
     bool second_layer = false;
+    /// The second pass alone (for a caller that untangles between the passes): if >= 0, the
+    /// patch rule is off and every boundary quad gets a new hex except the outer quads
+    /// (top faces) of the hexes from this index on, i.e. of the first pass's layer.
+    long layered_from = -1;
     int threads = 0;  ///< worker threads for the validity tests (0 = all); the result does not depend on it
 };
 

@@ -718,6 +718,22 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
             po.threads = options.threads;
             po.allow_invalid = true;  // untangled below; undone if that fails
             const HexMesh input = mesh;
+            const long nh_input = static_cast<long>(mesh.hexes.size());
+            UntangleOptions uo;
+            uo.boundary = options.boundary;
+            uo.threads = options.threads;
+            uo.feature_angle_deg = options.feature_angle_deg;
+            // Untangles what the layer left not certified valid; false (and the input back) if that fails.
+            auto untangleLayer = [&](long invalid_layer) {
+                if (invalid_layer == 0) return true;
+                const UntangleReport ur = untangleHexMesh(mesh, uo, surface);
+                if (ur.inverted_after == 0 && ur.invalid_after + ur.undecided_after <= invalid_input) return true;
+                rep.message = "pillowing undone: " + std::to_string(ur.invalid_after + ur.undecided_after) +
+                              " hexes were still not certified valid after untangling the layer";
+                mesh = input;
+                rep.pillowed_hexes = rep.pillow_vertices = 0;
+                return false;
+            };
             const PillowReport pr = pillowBoundary(mesh, po);
             if (!pr.success) {
                 rep.message = pr.message;
@@ -725,17 +741,29 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
                 rep.pillowed_hexes = pr.hexes_added;
                 rep.pillow_vertices = pr.vertices_added;
                 rep.pillow_invalid = pr.invalid_after;
-                if (pr.invalid_after > 0) {
-                    UntangleOptions uo;
-                    uo.boundary = options.boundary;
-                    uo.threads = options.threads;
-                    uo.feature_angle_deg = options.feature_angle_deg;
-                    const UntangleReport ur = untangleHexMesh(mesh, uo, surface);
-                    if (ur.inverted_after > 0 || ur.invalid_after + ur.undecided_after > invalid_input) {
-                        rep.message = "pillowing undone: " + std::to_string(ur.invalid_after + ur.undecided_after) +
-                                      " hexes were still not certified valid after untangling the layer";
-                        mesh = input;
-                        rep.pillowed_hexes = rep.pillow_vertices = 0;
+                if (untangleLayer(pr.invalid_after) && pr.skipped_patches > 0 && options.pillow_second_layer) {
+                    // The skipped patches (now with their strips) get a layer too, on the
+                    // untangled mesh; undone alone if it cannot be made valid.
+                    const HexMesh first = mesh;
+                    PillowOptions p2 = po;
+                    p2.layered_from = nh_input;
+                    const PillowReport pr2 = pillowBoundary(mesh, p2);
+                    if (pr2.success && pr2.hexes_added > 0) {
+                        const long before_second = rep.pillowed_hexes, vbefore = rep.pillow_vertices;
+                        rep.pillowed_hexes += pr2.hexes_added;
+                        rep.pillow_vertices += pr2.vertices_added;
+                        rep.pillow_invalid += pr2.invalid_after;
+                        long invalid_first = 0;
+                        for (const auto v : hexValidities(first, options.threads)) invalid_first += v != HexValidity::Valid;
+                        if (pr2.invalid_after > invalid_first) {
+                            const UntangleReport ur = untangleHexMesh(mesh, uo, surface);
+                            if (ur.inverted_after > 0 || ur.invalid_after + ur.undecided_after > invalid_first) {
+                                mesh = first;
+                                rep.pillowed_hexes = before_second;
+                                rep.pillow_vertices = vbefore;
+                                rep.message = "second pillow layer undone: its hexes could not all be made certified valid";
+                            }
+                        }
                     }
                 }
             }

@@ -65,6 +65,10 @@ struct OptimizeOptions {
     bool pillow = false;
     double pillow_depth = 0.3;  ///< PillowOptions::depth of the layer (fraction of the local edge length)
     double pillow_skip_patch_angle_deg = 150;  ///< PillowOptions::skip_patch_angle_deg (180: a layer on every patch)
+    /// After the first layer (and the untangling it may need), give the patches it skipped a
+    /// layer too (PillowOptions::layered_from): relieves their hexes with two flat boundary
+    /// faces at the cost of more hexes.
+    bool pillow_second_layer = false;
 };
 
 /// What optimizeHexMesh() did. Scaled Jacobians are per hex (minimum over its 8 corners).

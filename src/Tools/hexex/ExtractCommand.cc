@@ -406,8 +406,12 @@ int runExtract(const Args& args) {
         if (untangle) printUntangleReport(os, untangle_rep);
         if (optimize) printOptimizeReport(os, optimize_rep);
     }
-    if (untangle && !untangle_rep.success) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
-    if (rep.valid_all_hex) return untangle && !untangle_rep.success ? 3 : 0;
+    // The optimiser (with --pillow: the layer, then the untangler on it) may end certified
+    // valid where the first untangling did not.
+    const bool left_invalid = untangle && !untangle_rep.success &&
+                              !(optimize && optimize_rep.success && optimize_rep.invalid_after == 0);
+    if (left_invalid) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
+    if (rep.valid_all_hex) return left_invalid ? 3 : 0;
 
     // Written, but not all-hex: say why.
     std::cerr << "hexex extract: the output is not a valid all-hex mesh:\n";
