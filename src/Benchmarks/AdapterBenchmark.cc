@@ -8,7 +8,8 @@
 /// CASE: cube40 (generateCube(80, 40): 3.07M tets, 64,000 hexes) or cylinder6
 /// (generateCylinder(6, 64, 64, 1, 1): 36 tets, 1,572,864 hexes); cube20 (generateCube(40,
 /// 20): 384,000 tets, 8,000 hexes) and cylinder6m (generateCylinder(6, 32, 32, 1, 1):
-/// 196,608 hexes) are moderate, cube8/cylinder6s small versions. PATH: builtin, arrays
+/// 196,608 hexes) are moderate, cube8/cylinder6s small versions. PATH: builtin,
+/// builtin-provenance (the same with ExtractionOptions::provenance), arrays
 /// (TetArraysView -> HexArrays), lcc (CGAL Linear_cell_complex both ways through the view
 /// LccTetMesh and LccHexOutput), lcc-native (the one-call overload extractHexMesh(tetLcc,
 /// hexLcc): read straight into the built-in kernel, copy freed before the writing) or, when
@@ -21,7 +22,9 @@
 /// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
 /// the adapter's scan of the input; copy_s: toParametrizedTetMesh() including the
 /// adjacency (for builtin: TetMesh::build_adjacency() alone); extract_s: the extraction;
-/// write_s: fromHexMesh() into the output structure; total_s: all of them.
+/// write_s: fromHexMesh() into the output structure; total_s: all of them. cpu_copy_s,
+/// cpu_extract_s, cpu_write_s: the same stages in CPU seconds of the process (all threads),
+/// which a loaded machine distorts less than the wall times.
 
 #include "../TestSupport/LccTetFixtures.hh"
 
@@ -44,6 +47,7 @@
 #include <iostream>
 #include <malloc.h>
 #include <string>
+#include <time.h>
 
 namespace {
 
@@ -72,6 +76,13 @@ double since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+/// CPU seconds of this process so far (all threads).
+double cpuNow() {
+    timespec ts{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
+
 using HexExTestSupport::HexLcc;
 using HexExTestSupport::TetLcc;
 
@@ -87,6 +98,7 @@ struct Timings {
     double extract = 0;  ///< extractHexMesh() on the built-in kernel
     double write = 0;    ///< fromHexMesh() into the output structure
     double total = 0;    ///< all of them
+    double cpu_copy = 0, cpu_extract = 0, cpu_write = 0;  ///< CPU seconds of copy, extract, write
 };
 
 /// Runs view -> copy -> extraction -> write-back: @p makeView returns the input view,
@@ -98,15 +110,21 @@ Timings timeThroughTraits(MakeView makeView, Output& out) {
     const auto in = makeView();
     r.view = since(t0);
     const auto t1 = std::chrono::steady_clock::now();
+    const double c1 = cpuNow();
     HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
     r.copy = since(t1);
+    const double c2 = cpuNow();
+    r.cpu_copy = c2 - c1;
     const auto t2 = std::chrono::steady_clock::now();
     HexEx::HexMesh hm;
     HexEx::extractHexMesh(copyPm, hm);
     r.extract = since(t2);
+    const double c3 = cpuNow();
+    r.cpu_extract = c3 - c2;
     const auto t3 = std::chrono::steady_clock::now();
     HexEx::fromHexMesh(hm, out);
     r.write = since(t3);
+    r.cpu_write = cpuNow() - c3;
     r.total = since(t0);
     return r;
 }
@@ -118,17 +136,24 @@ template <class Read, class Output>
 Timings timeOneCall(Read read, Output out) {
     Timings r;
     const auto t0 = std::chrono::steady_clock::now();
+    const double c0 = cpuNow();
     HexEx::HexMesh hm;
+    double c3 = 0;
     {
         const HexEx::ParametrizedTetMesh copyPm = read();
         r.copy = since(t0);
+        const double c2 = cpuNow();
+        r.cpu_copy = c2 - c0;
         const auto t2 = std::chrono::steady_clock::now();
         HexEx::extractHexMesh(copyPm, hm);
         r.extract = since(t2);
+        c3 = cpuNow();
+        r.cpu_extract = c3 - c2;
     }
     const auto t3 = std::chrono::steady_clock::now();
     HexEx::fromHexMesh(hm, out);
     r.write = since(t3);
+    r.cpu_write = cpuNow() - c3;
     r.total = since(t0);
     return r;
 }
@@ -138,7 +163,7 @@ Timings timeOneCall(Read read, Output out) {
 int main(int argc, char** argv) {
     if (argc != 3) {
         std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube20|cylinder6m|cube8|cylinder6s "
-                     "builtin|arrays|lcc|lcc-native"
+                     "builtin|builtin-provenance|arrays|lcc|lcc-native"
 #ifdef HEXEX_BENCH_OVM
                      "|ovm|ovm-native"
 #endif
@@ -160,16 +185,23 @@ int main(int argc, char** argv) {
     Timings r;
     std::size_t hexes = 0;
     double inputMb = -1;  // resident memory once the input is built (the user's structure)
-    if (path == "builtin") {
+    if (path == "builtin" || path == "builtin-provenance") {
         inputMb = rssMb();
         // copy_s: the adjacency, which the traits path builds inside its copy.
         auto t0 = std::chrono::steady_clock::now();
+        const double c0 = cpuNow();
         pm.mesh.build_adjacency();
         r.copy = since(t0);
+        const double c1 = cpuNow();
+        r.cpu_copy = c1 - c0;
         HexEx::HexMesh hm;
+        HexEx::HexProvenance prov;
+        HexEx::ExtractionOptions opt;
+        if (path == "builtin-provenance") opt.provenance = &prov;
         auto t1 = std::chrono::steady_clock::now();
-        HexEx::extractHexMesh(pm, hm);
+        HexEx::extractHexMesh(pm, hm, opt);
         r.extract = since(t1);
+        r.cpu_extract = cpuNow() - c1;
         r.total = since(t0);
         hexes = hm.hexes.size();
     } else if (path == "arrays") {
@@ -235,7 +267,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::printf("case=%s path=%s hexes=%zu view_s=%.3f copy_s=%.3f extract_s=%.3f write_s=%.3f total_s=%.3f peak_mb=%.0f "
-                "input_mb=%.0f\n",
-                c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb(), inputMb);
+                "input_mb=%.0f cpu_copy_s=%.3f cpu_extract_s=%.3f cpu_write_s=%.3f\n",
+                c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb(), inputMb, r.cpu_copy,
+                r.cpu_extract, r.cpu_write);
     return 0;
 }

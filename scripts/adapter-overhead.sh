@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Read/write overhead of the framework-native adapter calls against the built-in kernel
+# (issue 34): runs src/Benchmarks/adapter_benchmark for every CASE x PATH, REPEAT times,
+# the paths alternating, one process per measurement, and prints the medians (min-max) of
+# the stages in CPU seconds of the process (cpu_copy_s: read into the built-in kernel
+# including the adjacency, for builtin the adjacency alone; cpu_extract_s; cpu_write_s:
+# writing into the user's mesh), the wall total, the peak (/usr/bin/time -v), and the
+# overhead (adapter copy - builtin copy) / builtin extract.
+#
+#   BENCH=build/src/Benchmarks/adapter_benchmark REPEAT=3 CASES="cube20 cube40 cylinder6" \
+#   PATHS="builtin ovm-native lcc-native" scripts/adapter-overhead.sh
+set -euo pipefail
+BENCH=${BENCH:-build/src/Benchmarks/adapter_benchmark}
+REPEAT=${REPEAT:-3}
+CASES=${CASES:-"cube20 cube40 cylinder6"}
+PATHS=${PATHS:-"builtin ovm-native lcc-native"}
+out=$(mktemp)
+trap 'rm -f "$out" "$out.time"' EXIT
+for r in $(seq "$REPEAT"); do
+  for c in $CASES; do
+    for p in $PATHS; do
+      line=$(/usr/bin/time -v -o "$out.time" "$BENCH" "$c" "$p")
+      rss=$(awk -F: '/Maximum resident set size/ {gsub(/ /, "", $2); print $2}' "$out.time")
+      echo "$line rss_kb=$rss" >> "$out"
+    done
+  done
+done
+python3 - "$out" <<'PY'
+import statistics, sys
+rows = {}
+for line in open(sys.argv[1]):
+    kv = dict(x.split("=", 1) for x in line.split())
+    rows.setdefault((kv["case"], kv["path"]), []).append(kv)
+def med(key, runs):
+    v = sorted(float(r[key]) for r in runs)
+    return statistics.median(v), v[0], v[-1]
+def fmt(t):
+    return f"{t[0]:.2f} ({t[1]:.2f}-{t[2]:.2f})"
+print("| case / path | cpu read | cpu extract | cpu write | wall total | peak MB | input MB | read overhead |")
+print("|---|---|---|---|---|---|---|---|")
+for (c, p), runs in rows.items():
+    base = rows.get((c, "builtin"))
+    over = ""
+    if base and p != "builtin":
+        over = f"{100 * (med('cpu_copy_s', runs)[0] - med('cpu_copy_s', base)[0]) / med('cpu_extract_s', base)[0]:+.0f} %"
+    peak = statistics.median(float(r["rss_kb"]) / 1024 for r in runs)
+    print(f"| {c} {p} | {fmt(med('cpu_copy_s', runs))} | {fmt(med('cpu_extract_s', runs))} | "
+          f"{fmt(med('cpu_write_s', runs))} | {fmt(med('total_s', runs))} | {peak:.0f} | {runs[0]['input_mb']} | {over} |")
+PY
