@@ -29,8 +29,8 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         // re-link them; if that leaves none broken, the other orders are not tried.
         AnnihilationRetry retry = in.retry;
         if (retry.enabled && in.darts)
-            retry.repair = [&]() {
-                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components);
+            retry.repair = [&](const std::vector<int>& changed) {
+                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &changed);
                 const ReconnectionStats& r = out.reconnection;
                 return r.reconnected_cells > 0 && r.unresolved_cells == 0 && r.alpha3_only_groups == 0;
             };

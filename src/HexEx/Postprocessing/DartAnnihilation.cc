@@ -124,8 +124,33 @@ private:
         return c;
     }
 
+    /// Alive darts whose alpha_3 link differs from the traced one (only those can join two
+    /// vertices while every cell stays a hex).
+    std::vector<int> alpha3Changed() const {
+        std::vector<int> c;
+        for (const auto& e : saved_)
+            if (alive_[idx(e.first)] && alpha_[idx(e.first)][3] != e.second[3]) c.push_back(e.first);
+        return c;
+    }
+
     /// Broken cells among the cells of the alive darts in @p c.
     long brokenCells(const std::vector<int>& c) { return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone); }
+
+    /// True if every broken cell among those of @p c is a hex once the alpha_3 links of the
+    /// broken cells' darts are ignored (crossed or partial quads only, which the face repair
+    /// and relinking after the annihilation handle; FaceRelinking.hh).
+    bool brokenOnlyInAlpha3(const std::vector<int>& c) {
+        std::vector<int> bad;
+        if (countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone, &bad) == 0) return true;
+        std::vector<int> a3(bad.size());
+        for (std::size_t k = 0; k < bad.size(); ++k) {
+            a3[k] = A(bad[k])[3];
+            A(bad[k])[3] = bad[k];
+        }
+        const long inside = countDefectiveHexCells(alpha_, alive_, bad, flag_, kInCell, kCellDone);
+        for (std::size_t k = bad.size(); k-- > 0;) A(bad[k])[3] = a3[k];
+        return inside == 0;
+    }
 
     /// The anti darts alive before the first pass in the alternative order @p k (2:
     /// descending, 3 and more: by a fixed hash).
@@ -275,7 +300,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
         // edge so that two vertices become one (every cell a hex, every vertex link a
         // sphere): such a run ranks below every run that merges none.
         if (now == 0) {
-            const long merged = countMergedVertexQuads(alpha_, alive_, changed);
+            const long merged = countMergedVertexQuads(alpha_, alive_, alpha3Changed());
             st.merged_vertex_runs += merged > 0 ? 1 : 0;
             if (merged > 0) now = kMergedRank + merged;
         }
@@ -283,7 +308,15 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             best = now;
             bestOrder = k;
         }
-        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair()) {
+        if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(changed)) {
+            // Only quads are crossed or partial, every cell is a hex inside: the face repair
+            // and relinking finish this run; another order would cost a whole run each.
+            st.alpha3_only_kept = true;
+            st.reordered = k;
+            st.broken_cells_after = now;
+            return;
+        }
+        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair(changed)) {
             // The cells phase by phase leaves broken were re-linked into hexes: keep that.
             st.repaired = true;
             st.reordered = 1;

@@ -22,6 +22,7 @@ struct AnnihilationStats {
     bool repaired = false;        ///< AnnihilationRetry::repair left no broken cell after the first retry
     int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 phase by phase, 2 descending, k > 2 hashed
     long merged_vertex_runs = 0;  ///< retries that left no broken cell but merged vertices (LocalVertexCheck.hh), ranked below every other
+    bool alpha3_only_kept = false; ///< the order kept left broken cells that are hexes once alpha_3 is ignored (AnnihilationRetry::keep_alpha3_only)
 };
 
 /// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.
@@ -43,10 +44,15 @@ struct AnnihilationRetry {
     bool enabled = false;     ///< check and retry at all
     int orders = 16;          ///< other orders tried at most
     int patience = 6;         ///< stop after this many orders in a row that leave no fewer broken cells than the best
-    /// Called once, after the first retry (phase by phase) if it leaves broken cells: may
-    /// re-link the darts of those cells (reconnectBrokenCells()) and returns true if no
-    /// broken cell is left; then no further order is tried and that result is kept.
-    std::function<bool()> repair;
+    /// Keep the first retry whose broken cells are all hexes once their alpha_3 links are
+    /// ignored (only quads crossed or partial: the face repair and relinking handle those)
+    /// instead of trying further orders.
+    bool keep_alpha3_only = true;
+    /// Called once, after the first retry (phase by phase) if it leaves broken cells, with the
+    /// alive darts whose links the run changed (only their cells can be broken): may re-link
+    /// the darts of those cells (reconnectBrokenCells()) and returns true if no broken cell
+    /// is left; then no further order is tried and that result is kept.
+    std::function<bool(const std::vector<int>& changed)> repair;
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the

@@ -290,15 +290,18 @@ long cellsBrokenInside(std::vector<std::array<int, 4>>& alpha, const std::vector
 } // namespace
 
 ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const DartVector& darts,
-                                       const std::function<std::vector<int>()>& chart_components) {
+                                       const std::function<std::vector<int>()>& chart_components, const std::vector<int>* seeds) {
     ReconnectionStats st;
     const std::size_t n = alpha.size();
-    std::vector<int> seeds;
-    for (std::size_t d = 0; d < n; ++d)
-        if (alive[d]) seeds.push_back(static_cast<int>(d));
+    std::vector<int> allAlive;
+    if (!seeds) {
+        for (std::size_t d = 0; d < n; ++d)
+            if (alive[d]) allAlive.push_back(static_cast<int>(d));
+        seeds = &allAlive;
+    }
     std::vector<std::uint8_t> mark(n, 0);
     std::vector<int> bad;
-    if (countDefectiveHexCells(alpha, alive, seeds, mark, 1, 2, &bad) == 0) return st;
+    if (countDefectiveHexCells(alpha, alive, *seeds, mark, 1, 2, &bad) == 0) return st;
     std::vector<int> pieces;
     if (chart_components) pieces = chart_components();
     const std::vector<int>* pieceOfTet = pieces.empty() ? nullptr : &pieces;

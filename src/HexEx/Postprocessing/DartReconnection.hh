@@ -49,7 +49,11 @@ struct ReconnectionStats {
 /// @p darts gives the frames (indices as in @p alpha); @p alive marks the survivors of the
 /// annihilation. Deterministic (groups in order of their smallest dart). Cost: one pass of
 /// the local hex check over all alive darts, plus time in proportion to the broken cells.
+///
+/// @p seeds, if given, limits the search for broken cells to the cells of these darts (the
+/// annihilation passes the darts whose links it changed: no other cell can have broken).
 ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const DartVector& darts,
-                                       const std::function<std::vector<int>()>& chart_components = {});
+                                       const std::function<std::vector<int>()>& chart_components = {},
+                                       const std::vector<int>* seeds = nullptr);
 
 } // namespace HexEx

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <map>
 
 namespace HexEx {
 
@@ -47,7 +46,7 @@ private:
 
 long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const std::vector<int>& seeds) {
     OrbitLabels vertex(alpha, alive, {{1, 2, 3}}), face(alpha, alive, {{0, 1, 3}});
-    std::map<std::array<int, 4>, int> faceOfQuad;  // sorted vertex labels -> face label
+    std::vector<std::array<int, 4>> quads;        // sorted vertex labels of each quad looked at (once per face)
     std::vector<char> vertexDone;                 // per vertex label: its quads were looked at
     std::vector<int> atVertex, inFace;
     long merged = 0;
@@ -70,7 +69,7 @@ long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const 
         }
         for (int x : atVertex) {
             inFace.clear();
-            const int f = face.of(x, &inFace);
+            face.of(x, &inFace);
             if (inFace.empty()) continue;  // this quad was looked at before
             std::array<int, 4> corners{{-1, -1, -1, -1}};
             int n = 0;
@@ -89,10 +88,13 @@ long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const 
                 continue;
             }
             std::sort(corners.begin(), corners.end());
-            const auto ins = faceOfQuad.emplace(corners, f);
-            if (!ins.second && ins.first->second != f) ++merged;
+            quads.push_back(corners);
         }
     }
+    // Each face is listed once: equal vertex sets are different faces on the same vertices.
+    std::sort(quads.begin(), quads.end());
+    for (std::size_t k = 1; k < quads.size(); ++k)
+        if (quads[k] == quads[k - 1]) ++merged;
     return merged;
 }
 
