@@ -72,3 +72,37 @@ TEST(AssembledMeshCheck, FindsRepeatedCornersAndPinchedBoundaries) {
     EXPECT_EQ(c.quads, 12);
     EXPECT_FALSE(c.agrees(12, 12));
 }
+
+TEST(AssembledMeshCheck, SameCountsOnAnyThreadCount) {
+    // 12,000 columns of two hexes side by side (24,000 hexes: the parallel path), the first
+    // hex with a repeated corner, and a third hex on the middle quad of column 7.
+    HexMesh m;
+    const int columns = 12000;
+    for (int c = 0; c < columns; ++c) {
+        HexMesh col = column(2);
+        const int base = static_cast<int>(m.vertices.size());
+        for (const auto& p : col.vertices) m.vertices.push_back(p + Vec3d(2.0 * c, 0, 0));
+        for (auto h : col.hexes) {
+            for (int& v : h) v += base;
+            m.hexes.push_back(h);
+        }
+    }
+    m.hexes[0][6] = m.hexes[0][5];
+    const int top = 12 * 7 + 4;  // vertices 4..7 of column 7: its middle quad
+    for (int k = 0; k < 4; ++k) m.vertices.push_back(Vec3d(100.0 + k, 0, 0));
+    const int nv = static_cast<int>(m.vertices.size());
+    m.hexes.push_back({nv - 4, nv - 3, nv - 2, nv - 1, top, top + 1, top + 2, top + 3});  // a third hex on it
+    const AssembledMeshCheck one = checkAssembledHexes(m, 1);
+    EXPECT_EQ(one.repeated_corner_hexes, 1);
+    EXPECT_EQ(one.quads_shared_by_more_than_two, 1);
+    EXPECT_EQ(one.quads, 11 * (columns - 1) + 6 + 5);  // 11 per column, the bad hex's column has one hex, plus the extra hex's 5 own quads
+    for (const int threads : {2, 3}) {
+        const AssembledMeshCheck r = checkAssembledHexes(m, threads);
+        EXPECT_EQ(r.repeated_corner_hexes, one.repeated_corner_hexes);
+        EXPECT_EQ(r.quads, one.quads);
+        EXPECT_EQ(r.boundary_quads, one.boundary_quads);
+        EXPECT_EQ(r.quads_shared_by_more_than_two, one.quads_shared_by_more_than_two);
+        EXPECT_EQ(r.nonmanifold_boundary_edges, one.nonmanifold_boundary_edges);
+        EXPECT_EQ(r.nonmanifold_boundary_vertices, one.nonmanifold_boundary_vertices);
+    }
+}

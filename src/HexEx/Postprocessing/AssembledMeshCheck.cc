@@ -1,8 +1,10 @@
 /// @file AssembledMeshCheck.cc
-/// Implementation of checkAssembledHexes(): counting sorts by vertex, small sorts per bucket.
+/// Implementation of checkAssembledHexes(): counting sorts by vertex, small sorts per bucket;
+/// the hex and quad passes in parallel chunks.
 
 #include "AssembledMeshCheck.hh"
 
+#include "../Core/Parallel.hh"
 #include "../Mesh/HexMeshCheck.hh"
 
 #include <algorithm>
@@ -26,6 +28,29 @@ void bucketByVertex(long nv, long n, VertexOf vertexOf, std::vector<long>& start
     order.resize(static_cast<std::size_t>(n));
     for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(next[static_cast<std::size_t>(vertexOf(i))]++)] = i;
 }
+
+/// The same as bucketByVertex() on @p chunks threads (atomic slots: the order within a bucket
+/// varies, so callers must not depend on it).
+template <class VertexOf>
+void bucketByVertexParallel(long nv, long n, int chunks, VertexOf vertexOf, std::vector<long>& start, std::vector<long>& order) {
+    start.assign(static_cast<std::size_t>(nv) + 1, 0);
+    long* count = start.data() + 1;
+    parallelChunks(static_cast<std::size_t>(n), chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) __atomic_fetch_add(&count[vertexOf(static_cast<long>(i))], 1L, __ATOMIC_RELAXED);
+    });
+    for (long v = 0; v < nv; ++v) start[static_cast<std::size_t>(v) + 1] += start[static_cast<std::size_t>(v)];
+    std::vector<long> next(start.begin(), start.end() - 1);
+    order.resize(static_cast<std::size_t>(n));
+    parallelChunks(static_cast<std::size_t>(n), chunks, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t i = b; i < e; ++i) {
+            const long slot = __atomic_fetch_add(&next[static_cast<std::size_t>(vertexOf(static_cast<long>(i)))], 1L, __ATOMIC_RELAXED);
+            order[static_cast<std::size_t>(slot)] = static_cast<long>(i);
+        }
+    });
+}
+
+/// Fewer hexes than this are checked on one thread.
+constexpr long kParallelHexes = 20000;
 
 } // namespace
 
@@ -52,7 +77,7 @@ std::string AssembledMeshCheck::warning(long dart_quads, long dart_boundary_quad
     return w;
 }
 
-AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh) {
+AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
     AssembledMeshCheck r;
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
@@ -61,20 +86,25 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh) {
         r.repeated_corner_hexes = nh;
         return r;
     }
+    const int chunks = nh >= kParallelHexes ? std::max(1, threads) : 1;
 
     std::vector<char> good(static_cast<std::size_t>(nh), 0);
-    for (long h = 0; h < nh; ++h) {
-        const auto& c = H[static_cast<std::size_t>(h)];
-        bool ok = true;
-        for (int i = 0; i < 8 && ok; ++i) {
-            ok = c[i] >= 0 && c[i] < nv;
-            for (int j = 0; j < i && ok; ++j) ok = c[i] != c[j];
+    std::vector<long> repeated(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+        for (std::size_t h = h0; h < h1; ++h) {
+            const auto& c = H[h];
+            bool ok = true;
+            for (int i = 0; i < 8 && ok; ++i) {
+                ok = c[i] >= 0 && c[i] < nv;
+                for (int j = 0; j < i && ok; ++j) ok = c[i] != c[j];
+            }
+            if (ok)
+                good[h] = 1;
+            else
+                ++repeated[static_cast<std::size_t>(k)];
         }
-        if (ok)
-            good[static_cast<std::size_t>(h)] = 1;
-        else
-            ++r.repeated_corner_hexes;
-    }
+    });
+    for (const long n : repeated) r.repeated_corner_hexes += n;
 
     // Quads (face f of hex h is item 6h+f; faces of bad hexes go to bucket 0 and are skipped).
     auto quadKey = [&](long q) {
@@ -85,38 +115,57 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh) {
         return k;
     };
     std::vector<int> smallest(static_cast<std::size_t>(6 * nh), 0);  // bucket of each quad item
-    for (long h = 0; h < nh; ++h) {
-        if (!good[static_cast<std::size_t>(h)]) continue;
-        const auto& c = H[static_cast<std::size_t>(h)];
-        for (int f = 0; f < 6; ++f) {
-            const int* l = kHexFaces[f];
-            smallest[static_cast<std::size_t>(6 * h + f)] = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
-        }
-    }
-    std::vector<long> start, order;
-    bucketByVertex(nv, 6 * nh, [&](long q) { return smallest[static_cast<std::size_t>(q)]; }, start, order);
-    std::vector<int>().swap(smallest);
-    std::vector<std::pair<std::array<int, 4>, long>> bucket;
-    std::vector<long> boundary;  // quad items in exactly one hex
-    for (long v = 0; v < nv; ++v) {
-        bucket.clear();
-        for (long i = start[static_cast<std::size_t>(v)]; i < start[static_cast<std::size_t>(v) + 1]; ++i) {
-            const long q = order[static_cast<std::size_t>(i)];
-            if (good[static_cast<std::size_t>(q / 6)]) bucket.push_back({quadKey(q), q});
-        }
-        std::sort(bucket.begin(), bucket.end());
-        for (std::size_t i = 0; i < bucket.size();) {
-            std::size_t j = i + 1;
-            while (j < bucket.size() && bucket[j].first == bucket[i].first) ++j;
-            ++r.quads;
-            if (j - i == 1) {
-                ++r.boundary_quads;
-                boundary.push_back(bucket[i].second);
-            } else if (j - i > 2) {
-                ++r.quads_shared_by_more_than_two;
+    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int, std::size_t h0, std::size_t h1) {
+        for (std::size_t h = h0; h < h1; ++h) {
+            if (!good[h]) continue;
+            const auto& c = H[h];
+            for (int f = 0; f < 6; ++f) {
+                const int* l = kHexFaces[f];
+                smallest[6 * h + static_cast<std::size_t>(f)] = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
             }
-            i = j;
         }
+    });
+    std::vector<long> start, order;
+    bucketByVertexParallel(nv, 6 * nh, chunks, [&](long q) { return smallest[static_cast<std::size_t>(q)]; }, start, order);
+    std::vector<int>().swap(smallest);
+    // Per chunk of vertices: counts and the boundary quads in vertex order (a bucket is sorted
+    // by key and item, so the order within it does not matter); concatenated in chunk order.
+    struct ChunkQuads {
+        long quads = 0, boundary_quads = 0, shared_by_more = 0;
+        std::vector<long> boundary;
+    };
+    std::vector<ChunkQuads> parts(static_cast<std::size_t>(chunks));
+    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
+        ChunkQuads& part = parts[static_cast<std::size_t>(k)];
+        std::vector<std::pair<std::array<int, 4>, long>> bucket;
+        for (std::size_t v = v0; v < v1; ++v) {
+            bucket.clear();
+            for (long i = start[v]; i < start[v + 1]; ++i) {
+                const long q = order[static_cast<std::size_t>(i)];
+                if (good[static_cast<std::size_t>(q / 6)]) bucket.push_back({quadKey(q), q});
+            }
+            std::sort(bucket.begin(), bucket.end());
+            for (std::size_t i = 0; i < bucket.size();) {
+                std::size_t j = i + 1;
+                while (j < bucket.size() && bucket[j].first == bucket[i].first) ++j;
+                ++part.quads;
+                if (j - i == 1) {
+                    ++part.boundary_quads;
+                    part.boundary.push_back(bucket[i].second);
+                } else if (j - i > 2) {
+                    ++part.shared_by_more;
+                }
+                i = j;
+            }
+        }
+    });
+    std::vector<long> boundary;  // quad items in exactly one hex
+    for (auto& part : parts) {
+        r.quads += part.quads;
+        r.boundary_quads += part.boundary_quads;
+        r.quads_shared_by_more_than_two += part.shared_by_more;
+        boundary.insert(boundary.end(), part.boundary.begin(), part.boundary.end());
+        std::vector<long>().swap(part.boundary);
     }
 
     // Boundary edges (item 4b+i: edge i of boundary quad b) by their smaller vertex, and
