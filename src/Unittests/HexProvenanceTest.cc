@@ -3,6 +3,7 @@
 
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/HexEx.hh>
+#include <HexEx/IO/HexExFile.hh>
 
 #include <gtest/gtest.h>
 
@@ -25,9 +26,9 @@ std::array<double, 4> barycentric(const std::array<Vec3d, 4>& p, const Vec3d& u)
     return {1 - l1 - l2 - l3, l1, l2, l3};
 }
 
-bool inside(const std::array<double, 4>& l) {
+bool inside(const std::array<double, 4>& l, double tolerance = 1e-9) {
     for (double x : l)
-        if (x < -1e-9) return false;
+        if (x < -tolerance) return false;
     return true;
 }
 
@@ -130,6 +131,26 @@ TEST(HexProvenance, SingularCylinderMapsBack) {
             const Vec3d c = toVec(prov.hex_grid_cell[h]) + Vec3d(0.5, 0.5, 0.5);
             EXPECT_TRUE(inside(barycentric(pm.params[static_cast<std::size_t>(t)], c))) << "hex " << h;
         }
+    }
+}
+
+/// The sphere example has tets of zero parametric volume, which the walk to the hex centres
+/// crosses: every hex's cell centre lies in its source tet (up to the sanitizer's snapping).
+TEST(HexProvenance, SphereWalksThroughFlatTets) {
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    HexEx::HexMesh hm;
+    HexEx::ExtractionReport rep;
+    const HexEx::HexProvenance prov = extract(pm, hm, 2, true, &rep);
+    ASSERT_EQ(hm.hexes.size(), 216u);
+    EXPECT_GT(rep.input.degenerate_tets, 0);
+    for (std::size_t h = 0; h < hm.hexes.size(); ++h) {
+        const Vec3d c = toVec(prov.hex_grid_cell[h]) + Vec3d(0.5, 0.5, 0.5);
+        EXPECT_TRUE(inside(barycentric(pm.params[std::size_t(prov.hex_source_tet[h])], c), 1e-5)) << "hex " << h;
+    }
+    for (std::size_t v = 0; v < hm.vertices.size(); ++v) {
+        ASSERT_GE(prov.vertex_source_tet[v], 0);
+        EXPECT_TRUE(inside(barycentric(pm.params[std::size_t(prov.vertex_source_tet[v])], toVec(prov.vertex_grid_coords[v])), 1e-5))
+            << "vertex " << v;
     }
 }
 

@@ -13,10 +13,11 @@ namespace HexEx {
 /// when ExtractionOptions::provenance points to it. Entries are indexed like HexMesh::hexes
 /// and HexMesh::vertices; the result does not depend on the thread count.
 struct HexProvenance {
-    /// Per hex: the input tet whose parameter image contains the hex's centre (found by a walk
-    /// from the tet of the hex's corner-0 dart through the transitions; ties broken by the
-    /// symbolic perturbation of the dart ownership). If the walk fails (a boundary or the step
-    /// limit, only on defective maps), the tet of the corner-0 dart.
+    /// Per hex: the input tet whose parameter image contains the hex's centre (found by a
+    /// straight walk from the hex's corner-0 dart to the centre through the transitions,
+    /// crossing tets of zero parametric volume; ties broken by the symbolic perturbation of
+    /// the dart ownership). If the walk fails (it meets the boundary or runs out of steps:
+    /// seen only next to flipped tets), the tet of the corner-0 dart.
     std::vector<int> hex_source_tet;
     /// Per hex: the integer grid cell of the hex in the chart of its source tet, as its
     /// smallest corner `c` (the cell is `[c, c + (1,1,1)]`).

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace HexEx {
 
@@ -26,31 +27,90 @@ void occurrencePoint(const DartSet& darts, long occ, int& tet, Vec3i& z) {
     tet = di.tet;
 }
 
-/// Walks from tet @p tet towards the point @p c (in that tet's chart, perturbed by
-/// e d[0] + e^2 d[1] + e^3 d[2]) through the halfface transitions. Returns the tet whose image
-/// contains it, @p c then in that tet's chart, or -1 (and @p c unspecified) if the walk meets
-/// the boundary or runs out of steps.
-int locate(const ProvenanceInput& in, int tet, Vec3d& c, std::array<AxisDir, 3> d) {
+/// Barycentric coordinates @p l of @p u in the tet with the corner parameters @p p (l[j]
+/// belongs to corner j, negative beyond the face opposite it); false for a flat tet.
+bool barycentric(const Vec3d* p, const Vec3d& u, double l[4]) {
+    const auto det = [](const Vec3d& x, const Vec3d& y, const Vec3d& z) {
+        return x[0] * (y[1] * z[2] - y[2] * z[1]) - x[1] * (y[0] * z[2] - y[2] * z[0]) + x[2] * (y[0] * z[1] - y[1] * z[0]);
+    };
+    const Vec3d a = p[1] - p[0], b = p[2] - p[0], c = p[3] - p[0], r = u - p[0];
+    const double d = det(a, b, c);
+    if (d == 0 || !std::isfinite(d)) return false;
+    l[1] = det(r, b, c) / d;
+    l[2] = det(a, r, c) / d;
+    l[3] = det(a, b, r) / d;
+    l[0] = 1 - l[1] - l[2] - l[3];
+    return true;
+}
+
+/// Walks from tet @p tet along the segment from @p p (a point of that tet's closed image)
+/// to the point @p c (both in that tet's chart; @p c perturbed by e d[0] + e^2 d[1] +
+/// e^3 d[2] for the final containment test) through the halfface transitions: each step
+/// leaves through the face the segment crosses first. Returns the tet whose image contains
+/// @p c, @p c then in that tet's chart, or -1 (and @p c unspecified) if the walk meets the
+/// boundary or runs out of steps. A flat tet (zero parametric volume) is crossed into the
+/// neighbour that holds the segment's continuation best.
+int locate(const ProvenanceInput& in, int tet, Vec3d& c, Vec3d p, std::array<AxisDir, 3> d) {
     int entry = -1;  // local face the walk came in through
     for (int step = 0; step < kMaxWalkSteps; ++step) {
         const TetSoS& T = (*in.tets)[static_cast<std::size_t>(tet)];
         if (!T.p) return -1;
         const std::array<int, 4> oz = T.sides(c);
         if (T.contains(oz, d[0], d[1], d[2])) return tet;
-        // Leave through a face with the point on its outer side; the first face looked at
-        // turns with the step so that the walk cannot cycle between the same faces for ever.
+        double lc[4], lp[4];
         int exit = -1;
-        for (int k = 0; k < 4 && exit < 0; ++k) {
-            const int j = (step + k) & 3;
-            if (j == entry) continue;
-            if (T.vol == 0 || T.sosSide(j, oz[static_cast<std::size_t>(j)], d[0], d[1], d[2]) != T.vol) exit = j;
+        double first = 2, deepest = 0;
+        const bool flat = !barycentric(T.p, c, lc) || !barycentric(T.p, p, lp);
+        if (flat) {
+            // A flat tet (zero parametric volume): the segment passes through it; leave into
+            // the neighbour that holds the point just after p best (largest smallest
+            // barycentric coordinate).
+            const Vec3d q = p + (c - p) * 1e-4;
+            double best = -std::numeric_limits<double>::infinity();
+            for (int j = 0; j < 4; ++j) {
+                if (j == entry) continue;
+                const HalfFaceHandle hf = TetMesh::halfface(CellHandle(tet), j);
+                const HalfFaceHandle opp = in.mesh->opposite_halfface(hf);
+                if (!opp.is_valid()) continue;
+                const TetSoS& N = (*in.tets)[static_cast<std::size_t>(TetMesh::cell(opp).idx())];
+                double l[4];
+                if (!N.p || !barycentric(N.p, in.transitions->halfface[hf.uidx()].apply(q), l)) continue;
+                const double m = std::min(std::min(l[0], l[1]), std::min(l[2], l[3]));
+                if (m > best) {
+                    best = m;
+                    exit = j;
+                }
+            }
+            if (exit < 0) return -1;
+            first = 0;
         }
-        if (exit < 0) return -1;
+        // The face the segment p -> c crosses first among those with c beyond them (ties: the
+        // one c is farthest beyond).
+        for (int j = 0; j < 4 && !flat; ++j) {
+            if (j == entry || !(lc[j] < 0)) continue;
+            const double a = std::max(0.0, lp[j]);
+            const double t = a / (a - lc[j]);
+            if (t < first - 1e-12 || (t <= first + 1e-12 && lc[j] < deepest)) {
+                first = t;
+                deepest = lc[j];
+                exit = j;
+            }
+        }
+        if (exit < 0) {
+            // c lies on the tet in floating point but outside by the exact test: leave through
+            // a face whose perturbed side is wrong.
+            for (int j = 0; j < 4 && exit < 0; ++j)
+                if (j != entry && T.sosSide(j, oz[static_cast<std::size_t>(j)], d[0], d[1], d[2]) != T.vol) exit = j;
+            if (exit < 0) return -1;
+            first = 1;
+        }
+        p = p + (c - p) * std::min(first, 1.0);
         const HalfFaceHandle hf = TetMesh::halfface(CellHandle(tet), exit);
         const HalfFaceHandle opp = in.mesh->opposite_halfface(hf);
         if (!opp.is_valid()) return -1;
         const GridTransform g = in.transitions->halfface[hf.uidx()];
         c = g.apply(c);
+        p = g.apply(p);
         for (AxisDir& x : d) x = g.applyDir(x);
         tet = TetMesh::cell(opp).idx();
         entry = TetMesh::opposite_corner(opp);
@@ -80,7 +140,7 @@ HexProvenance provenanceStage(const ProvenanceInput& in) {
                 const Vec3i s = dirVec(D.d[0]) + dirVec(D.d[1]) + dirVec(D.d[2]);
                 const Vec3d centre(D.z[0] + 0.5 * s[0], D.z[1] + 0.5 * s[1], D.z[2] + 0.5 * s[2]);
                 Vec3d c = centre;
-                int tet = locate(in, D.tet, c, D.d);
+                int tet = locate(in, D.tet, c, toVec3d(D.z), D.d);
                 if (tet < 0) {
                     tet = D.tet;
                     c = centre;
