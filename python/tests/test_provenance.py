@@ -1,6 +1,7 @@
 """extract(..., provenance=True): source tet and grid cell per hex, grid coordinates per vertex."""
 
 import numpy as np
+import pytest
 
 import hexex
 
@@ -43,3 +44,8 @@ def test_singular_cylinder_grid_coords_map_back_to_the_positions():
 def test_off_by_default():
     r = hexex.extract(*hexex.generate_cube(2, 2))
     assert r.provenance is None
+
+
+def test_not_with_pillow():
+    with pytest.raises(ValueError, match="provenance=True cannot be combined with pillow=True"):
+        hexex.extract(*hexex.generate_cube(2, 2), provenance=True, pillow=True)
