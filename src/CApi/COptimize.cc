@@ -5,10 +5,12 @@
 #include "CResult.hh"
 
 #include <HexEx/IO/OptimizeReportJson.hh>
+#include <HexEx/Mesh/HexMeshCheck.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 namespace HexExC {
@@ -27,6 +29,7 @@ hexex_optimize_options defaultOptimizeOptions() {
     o.feature_angle_deg = d.feature_angle_deg;
     o.max_global_blocks = d.max_global_blocks;
     o.max_local_passes = d.max_local_passes;
+    o.pillow = d.pillow ? 1 : 0;
     return o;
 }
 
@@ -55,6 +58,7 @@ HexEx::OptimizeOptions optimizeOptions(const hexex_optimize_options& o, HexEx::T
     r.feature_angle_deg = o.feature_angle_deg;
     r.max_global_blocks = o.max_global_blocks;
     r.max_local_passes = o.max_local_passes;
+    r.pillow = o.pillow != 0;
     return r;
 }
 
@@ -109,6 +113,9 @@ hexex_status hexex_optimize(double* points, int64_t n_points, const int32_t* hex
     if (s != HEXEX_OK) return s;
     hexex_result* r = *result;
     return HexExC::guarded(r, [&] {
+        if (options && options->size >= offsetof(hexex_optimize_options, pillow) + sizeof options->pillow && options->pillow)
+            throw HexExC::ArgumentError("optimize options: pillow adds hexes and vertices, which the caller's arrays "
+                                        "cannot hold; use hexex_result_optimize() on a result");
         HexExC::requireArray(points, n_points, "points");
         HexExC::requireArray(hexes, n_hexes, "hexes");
         HexEx::HexMesh hm;
@@ -137,8 +144,17 @@ hexex_status hexex_result_optimize(hexex_result* result, const hexex_optimize_op
     return HexExC::guarded(result, [&] {
         HexEx::HexMesh optimized;
         const HexEx::OptimizeReport q = HexExC::optimizeCopy(result->mesh, options, optimized);
-        // Same sizes: copying keeps the pointers the caller already has valid.
-        std::copy(optimized.vertices.begin(), optimized.vertices.end(), result->mesh.vertices.begin());
+        if (optimized.vertices.size() == result->mesh.vertices.size() && optimized.hexes == result->mesh.hexes) {
+            // Same sizes: copying keeps the pointers the caller already has valid.
+            std::copy(optimized.vertices.begin(), optimized.vertices.end(), result->mesh.vertices.begin());
+        } else {  // pillowed: new arrays, and the counts of the new mesh
+            result->mesh = std::move(optimized);
+            const HexEx::HexMeshCheckResult c = HexEx::checkHexMesh(result->mesh);
+            result->values[HEXEX_VALUE_VERTICES] = static_cast<double>(c.vertices);
+            result->values[HEXEX_VALUE_HEXES] = static_cast<double>(c.hexes);
+            result->values[HEXEX_VALUE_QUADS] = static_cast<double>(c.quads);
+            result->values[HEXEX_VALUE_BOUNDARY_QUADS] = static_cast<double>(c.boundary_quads);
+        }
         result->optimize = q;
         HexExC::setOptimizeValues(result, q);
         const HexEx::QualityStats quality = HexEx::computeQuality(result->mesh);

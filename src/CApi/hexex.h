@@ -57,7 +57,7 @@
 #endif
 
 /** Version of this interface: raised when functions, values or option fields are added. */
-#define HEXEX_C_API_VERSION 1
+#define HEXEX_C_API_VERSION 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -188,6 +188,11 @@ typedef struct hexex_optimize_options {
     int64_t n_surface_points;          /**< points in surface_points */
     const int32_t* surface_triangles;  /**< 3 point indices per triangle (with surface_points) */
     int64_t n_surface_triangles;       /**< triangles in surface_triangles */
+    /** Since HEXEX_C_API_VERSION 2. Non-zero: first insert a layer of hexes along the
+     *  boundary (one per boundary quad, HexEx::OptimizeOptions::pillow); the mesh then has
+     *  more hexes and vertices, so only hexex_result_optimize() accepts it (its arrays are
+     *  replaced: fetch the pointers again). Default 0. */
+    int pillow;
 } hexex_optimize_options;
 
 /** Opaque result of a call: a hex mesh as flat arrays, values, a JSON report, or an error. */

@@ -7,6 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stddef.h>
 #include <string.h>
 
 static int failures = 0;
@@ -324,6 +325,56 @@ static void test_optimize(void) {
     CHECK(hexex_result_optimize(NULL, NULL) == HEXEX_ERROR_INVALID_ARGUMENT);
 }
 
+/* Optimisation with a boundary layer (pillow, since HEXEX_C_API_VERSION 2) on the extracted
+ * 2x2x2 grid of the cube: 24 boundary quads and 26 boundary vertices give 8 + 24 = 32 hexes
+ * and 27 + 26 = 53 vertices; an options struct of the older size ignores the field; the
+ * in-place array call refuses it. */
+static void test_optimize_pillow(void) {
+    double params[6 * 12];
+    static const int32_t one_hex[8] = {0, 1, 3, 2, 4, 5, 7, 6};
+    double points[8 * 3];
+    hexex_result* r = NULL;
+    hexex_result* a = NULL;
+    hexex_optimize_options opt;
+    int i, n_face = 0;
+    cube_params(cube_tets, params);
+    CHECK(hexex_extract(cube_points, 8, cube_tets, 6, params, NULL, &r) == HEXEX_OK);
+    hexex_optimize_options_init(&opt);
+    CHECK(opt.pillow == 0);
+    opt.pillow = 1;
+    opt.size = offsetof(hexex_optimize_options, pillow); /* a caller built against version 1 */
+    CHECK(hexex_result_optimize(r, &opt) == HEXEX_OK);
+    CHECK(hexex_result_n_hexes(r) == 8 && hexex_result_n_vertices(r) == 27);
+    opt.size = sizeof opt;
+    opt.threads = 1;
+    CHECK(hexex_result_optimize(r, &opt) == HEXEX_OK);
+    CHECK(hexex_result_n_hexes(r) == 32);
+    CHECK(hexex_result_n_vertices(r) == 53);
+    CHECK(value(r, HEXEX_VALUE_HEXES) == 32);
+    CHECK(value(r, HEXEX_VALUE_VERTICES) == 53);
+    CHECK(value(r, HEXEX_VALUE_BOUNDARY_QUADS) == 24);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_INVALID_AFTER) == 0);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_MAX_SURFACE_DISTANCE) < 1e-12);
+    CHECK(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) > 0);
+    CHECK(strstr(hexex_result_report_json(r), "\"pillowed_hexes\": 24") != NULL);
+    /* The 26 boundary vertices stay on the faces of the unit cube; the 26 copies are inside. */
+    for (i = 0; i < 53; ++i) {
+        const double* p = hexex_result_vertices(r) + 3 * i;
+        int k, on_face = 0;
+        for (k = 0; k < 3; ++k) on_face |= fabs(p[k]) < 1e-12 || fabs(p[k] - 1) < 1e-12;
+        if (i < 27) n_face += on_face;
+        else CHECK(!on_face && p[0] > 0 && p[0] < 1 && p[1] > 0 && p[1] < 1 && p[2] > 0 && p[2] < 1);
+    }
+    CHECK(n_face == 26);
+    for (i = 0; i < 8 * 3; ++i) points[i] = cube_points[i];
+    CHECK(hexex_optimize(points, 8, one_hex, 1, &opt, &a) == HEXEX_ERROR_INVALID_ARGUMENT);
+    CHECK(strcmp(hexex_result_error_message(a),
+                 "optimize options: pillow adds hexes and vertices, which the caller's arrays cannot hold; use "
+                 "hexex_result_optimize() on a result") == 0);
+    hexex_result_free(a);
+    hexex_result_free(r);
+}
+
 /* Reads a .hexex file into flat arrays (returns 0 on failure). */
 static int read_hexex(const char* path, double** points, int64_t* n_points, int32_t** tets, double** params,
                       int64_t* n_tets) {
@@ -409,6 +460,7 @@ int main(int argc, char** argv) {
     test_errors();
     test_untangle();
     test_optimize();
+    test_optimize_pillow();
     if (argc > 1)
         test_sphere(argv[1]);
     else
