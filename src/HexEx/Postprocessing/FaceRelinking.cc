@@ -64,39 +64,55 @@ FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
         for (const DartHandle x : faceDarts.back()) g.unsew(x, 3);
     }
     // Quads by their four vertices (sorted); only quads of 8 darts with 4 distinct vertices.
-    std::map<std::array<int, 4>, std::vector<int>> byVertices;
-    for (std::size_t k = 0; k < faceDarts.size(); ++k) {
-        const auto& fd = faceDarts[k];
-        if (fd.size() != 8) continue;
-        std::array<int, 4> key{};
-        int m = 0;
-        bool ok = true;
-        for (const DartHandle x : fd) {
-            const int v = vertex[x.uidx()];
-            if (std::find(key.begin(), key.begin() + m, v) != key.begin() + m) continue;
-            if (m == 4) { ok = false; break; }
-            key[static_cast<std::size_t>(m++)] = v;
+    // Returns the quads left without a partner.
+    auto sewByVertices = [&](const std::vector<int>& label, const std::vector<std::size_t>& quads) {
+        std::map<std::array<int, 4>, std::vector<std::size_t>> byVertices;
+        std::vector<char> sewn(faceDarts.size(), 0);
+        for (const std::size_t k : quads) {
+            const auto& fd = faceDarts[k];
+            if (fd.size() != 8) continue;
+            std::array<int, 4> key{};
+            int m = 0;
+            bool ok = true;
+            for (const DartHandle x : fd) {
+                const int v = label[x.uidx()];
+                if (std::find(key.begin(), key.begin() + m, v) != key.begin() + m) continue;
+                if (m == 4) { ok = false; break; }
+                key[static_cast<std::size_t>(m++)] = v;
+            }
+            if (!ok || m != 4) continue;
+            std::sort(key.begin(), key.end());
+            byVertices[key].push_back(k);
         }
-        if (!ok || m != 4) continue;
-        std::sort(key.begin(), key.end());
-        byVertices[key].push_back(static_cast<int>(k));
-    }
-    for (const auto& [key, faces] : byVertices) {
-        if (faces.size() != 2) continue;
-        const auto& F = faceDarts[static_cast<std::size_t>(faces[0])];
-        const auto& G = faceDarts[static_cast<std::size_t>(faces[1])];
-        if (cell[F[0].uidx()] == cell[G[0].uidx()]) continue;
-        // Dart x of F goes to the dart of G at the same vertex on the same edge.
-        std::vector<std::pair<DartHandle, DartHandle>> pairs;
-        for (const DartHandle x : F) {
-            const int v = vertex[x.uidx()], w = vertex[static_cast<std::size_t>(a(x.idx(), 0))];
-            for (const DartHandle y : G)
-                if (vertex[y.uidx()] == v && vertex[static_cast<std::size_t>(a(y.idx(), 0))] == w) pairs.emplace_back(x, y);
+        for (const auto& [key, faces] : byVertices) {
+            if (faces.size() != 2) continue;
+            const auto& F = faceDarts[faces[0]];
+            const auto& G = faceDarts[faces[1]];
+            if (cell[F[0].uidx()] == cell[G[0].uidx()]) continue;
+            // Dart x of F goes to the dart of G at the same vertex on the same edge.
+            std::vector<std::pair<DartHandle, DartHandle>> pairs;
+            for (const DartHandle x : F) {
+                const int v = label[x.uidx()], w = label[static_cast<std::size_t>(a(x.idx(), 0))];
+                for (const DartHandle y : G)
+                    if (label[y.uidx()] == v && label[static_cast<std::size_t>(a(y.idx(), 0))] == w) pairs.emplace_back(x, y);
+            }
+            if (pairs.size() != 8) continue;
+            for (const auto& [x, y] : pairs) g.sew(x, y, 3);
+            sewn[faces[0]] = sewn[faces[1]] = 1;
+            st.relinked_faces += 2;
         }
-        if (pairs.size() != 8) continue;
-        for (const auto& [x, y] : pairs) g.sew(x, y, 3);
-        st.relinked_faces += 2;
-    }
+        std::vector<std::size_t> left;
+        for (const std::size_t k : quads)
+            if (!sewn[k]) left.push_back(k);
+        return left;
+    };
+    std::vector<std::size_t> all(faceDarts.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+    const std::vector<std::size_t> left = sewByVertices(vertex, all);
+    // Quads the crossed links left without a partner (their vertex labels, taken with those
+    // links, merged two vertices, so several cut quads share one key): once more with the
+    // vertices of the map as it is now (cut quads open, the others sewn), among those only.
+    if (!left.empty()) sewByVertices(labelOrbits(g, 0b1110, &nVertices), left);
     return st;
 }
 
