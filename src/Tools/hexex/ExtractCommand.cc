@@ -410,7 +410,15 @@ int runExtract(const Args& args) {
     // valid where the first untangling did not.
     const bool left_invalid = untangle && !untangle_rep.success &&
                               !(optimize && optimize_rep.success && optimize_rep.invalid_after == 0);
-    if (left_invalid) std::cerr << "hexex extract: " << untangle_rep.message << "\n";
+    if (left_invalid) {
+        std::cerr << "hexex extract: " << untangle_rep.message << "\n";
+        // Hexes with several faces on the boundary can be beyond any placement with the
+        // boundary on its surface (algorithm.md, boundary pillowing); a layer changes that.
+        if (!optimize_opt.pillow)
+            std::cerr << "hexex extract: hint: a hex with two or more faces on the boundary may have no valid "
+                         "placement with the boundary kept on its surface; --pillow first inserts a layer of "
+                         "hexes along the boundary (more hexes) and then untangles and optimises\n";
+    }
     if (rep.valid_all_hex) return left_invalid ? 3 : 0;
 
     // Written, but not all-hex: say why.
