@@ -6,8 +6,9 @@
 /// the smallest hex with that edge, whose smaller quad through it is the edge's first
 /// occurrence; every hex edge keeps a reference to its owner. A face's first loop is the
 /// smaller of its loops; faces are numbered in order of first loops (count per chunk,
-/// prefix, number), edges in order of first loop and position (the same), and a last pass
-/// over the hexes, in face order, writes the edges and every face's halfedges.
+/// prefix, number; the halffaces overwrite the neighbour loops in place), edges in order of
+/// first loop and position (the same), and a last pass over the hexes, in face order, writes
+/// the edges and every face's halfedges.
 
 #include "OvmHexFaces.hh"
 
@@ -264,30 +265,33 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     st.release();
 
     // Faces: number the first loops (no neighbour or a later one) in loop order, then give
-    // every second loop its halfface.
+    // every second loop its halfface. The halffaces overwrite the neighbour loops in place:
+    // a first loop's neighbour is not needed again, a second loop reads its own before.
     const auto first = [&](std::size_t l) { return nb[l] < 0 || static_cast<std::size_t>(nb[l]) > l; };
     std::vector<std::size_t> base(static_cast<std::size_t>(chunks), 0);
+    std::vector<std::uint8_t> firstMask(nHex, 0);  // per hex: bit i if loop 6h + i is a first loop
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
-        for (std::size_t l = 6 * h0; l < 6 * h1; ++l) n += first(l);
+        for (std::size_t l = 6 * h0; l < 6 * h1; ++l)
+            if (first(l)) {
+                ++n;
+                firstMask[l / 6] = static_cast<std::uint8_t>(firstMask[l / 6] | 1u << (l % 6));
+            }
         base[static_cast<std::size_t>(c)] = n;
     });
     const std::size_t nFaces = prefix(base);
+    const auto isFirst = [&](std::size_t l) { return (firstMask[l / 6] >> (l % 6) & 1u) != 0; };
     std::vector<int>& hf = out.halffaces;
-    hf.resize(nLoops);
-    std::vector<std::uint8_t> firstMask(nHex, 0);  // per hex: bit i if loop 6h + i is a first loop
+    hf = std::move(nb);
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t f = base[static_cast<std::size_t>(c)];
         for (std::size_t l = 6 * h0; l < 6 * h1; ++l)
-            if (first(l)) {
-                hf[l] = static_cast<int>(2 * f++);
-                firstMask[l / 6] = static_cast<std::uint8_t>(firstMask[l / 6] | 1u << (l % 6));
-            }
+            if (isFirst(l)) hf[l] = static_cast<int>(2 * f++);
     });
     parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
         for (std::size_t l = 6 * h0; l < 6 * h1; ++l) {
-            if (first(l)) continue;
-            const std::size_t s = static_cast<std::size_t>(nb[l]);
+            if (isFirst(l)) continue;
+            const std::size_t s = static_cast<std::size_t>(hf[l]);  // still the neighbour loop
             // 0 if loop l runs like its first loop s at l's first vertex, 1 if against it.
             const int v0 = loopVertex(l, 0);
             int k = 0;
@@ -295,12 +299,11 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
         }
     });
-    std::vector<int>().swap(nb);
 
     // Edges: numbered in order of their first loop and position (count, prefix, rank of the
     // owner bit); then hex by hex, every owner writes its edges and every first loop its
     // halfedges (looked up through the owner references).
-    std::vector<std::size_t> edgeBase(nHex + 1);
+    std::vector<int> edgeBase(nHex);  // per hex its first owned edge (< INT_MAX / 2, checked)
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
         for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(__builtin_popcount(owned[h]));
@@ -311,7 +314,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = base[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
-            edgeBase[h] = n;
+            edgeBase[h] = static_cast<int>(n);
             n += static_cast<std::size_t>(__builtin_popcount(owned[h]));
         }
     });
@@ -323,7 +326,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });
     const auto edgeId = [&](std::size_t h, int bit) {
-        return edgeBase[h] + static_cast<std::size_t>(__builtin_popcount(owned[h] & ((1u << bit) - 1u)));
+        return static_cast<std::size_t>(edgeBase[h]) + static_cast<std::size_t>(__builtin_popcount(owned[h] & ((1u << bit) - 1u)));
     };
     parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
         for (std::size_t h = h0; h < h1; ++h) {
