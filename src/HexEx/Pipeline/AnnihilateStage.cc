@@ -32,7 +32,9 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
             retry.repair = [&](const std::vector<int>& changed) {
                 out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &changed);
                 const ReconnectionStats& r = out.reconnection;
-                return r.reconnected_cells > 0 && r.unresolved_cells == 0 && r.alpha3_only_groups == 0;
+                // Groups broken only in alpha_3 are left to the face repair and relinking, as
+                // AnnihilationRetry::keep_alpha3_only leaves them.
+                return r.reconnected_cells > 0 && r.unresolved_cells == 0 && (r.alpha3_only_groups == 0 || retry.keep_alpha3_only);
             };
         const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, retry);
         out.stats = as;
