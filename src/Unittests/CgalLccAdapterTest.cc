@@ -134,7 +134,7 @@ void checkLccRoundTrip(const HexEx::ParametrizedTetMesh& pm, std::size_t expecte
 } // namespace
 
 TEST(CgalLccAdapter, SphereMatchesHexExFileBitForBit) {
-    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex");
     checkLccRoundTrip(pm, 216);
 }
 
@@ -147,7 +147,7 @@ TEST(CgalLccAdapter, SingularCylinderMatchesBuiltInKernel) {
 TEST(CgalLccAdapter, CgalBuiltTetsGiveTheSameHexes) {
     // make_tetrahedron + sew3_same_facets: the vertices are numbered differently, so the
     // hexes are compared by their corner positions.
-    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    const HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex");
     const TetLcc tets = toLccWithCgalOps(pm);
     ASSERT_TRUE(tets.is_valid());
     ASSERT_EQ(tets.number_of_vertex_attributes(), pm.mesh.n_vertices());
@@ -262,7 +262,7 @@ std::vector<HexLcc::Dart_handle> volumeDarts(HexLcc& lcc) {
 } // namespace
 
 TEST(CgalLccAdapter, OneCallOverloadsWithDartInfoAndPointAccessor) {
-    for (const auto& pm : {HexEx::readHexExFile("Examples/data/sphere.hexex"), HexEx::generateCylinder(3, 3, 2, 2, 1)}) {
+    for (const auto& pm : {HexEx::readHexExFile(std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex"), HexEx::generateCylinder(3, 3, 2, 2, 1)}) {
         const HexEx::HexMesh ref = HexExTest::extracted(pm);
         const TetLcc tets = toLcc(pm);
         // The map in the darts' info.

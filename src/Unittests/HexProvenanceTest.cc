@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <string>
 #include <cmath>
 #include <vector>
 
@@ -137,7 +138,7 @@ TEST(HexProvenance, SingularCylinderMapsBack) {
 /// The sphere example has tets of zero parametric volume, which the walk to the hex centres
 /// crosses: every hex's cell centre lies in its source tet (up to the sanitizer's snapping).
 TEST(HexProvenance, SphereWalksThroughFlatTets) {
-    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile("Examples/data/sphere.hexex");
+    HexEx::ParametrizedTetMesh pm = HexEx::readHexExFile(std::string(HEXEX_SOURCE_DIR) + "/Examples/data/sphere.hexex");
     HexEx::HexMesh hm;
     HexEx::ExtractionReport rep;
     const HexEx::HexProvenance prov = extract(pm, hm, 2, true, &rep);
