@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <deque>
+#include <map>
 #include <utility>
 
 namespace HexEx {
@@ -149,7 +150,43 @@ private:
         }
         const long inside = countDefectiveHexCells(alpha_, alive_, bad, flag_, kInCell, kCellDone);
         for (std::size_t k = bad.size(); k-- > 0;) A(bad[k])[3] = a3[k];
-        return inside == 0;
+        if (inside != 0) return false;
+        // The broken cells are hexes inside here, so each is the <alpha_0, alpha_1, alpha_2>
+        // orbit of its darts in the list.
+        std::map<int, int> cellOf;
+        for (const int s : bad) {
+            if (cellOf.count(s)) continue;
+            const int id = s;
+            std::vector<int> stack{s};
+            cellOf[s] = id;
+            while (!stack.empty()) {
+                const int x = stack.back();
+                stack.pop_back();
+                for (int i = 0; i < 3; ++i) {
+                    const int p = A(x)[i];
+                    if (p >= 0 && !cellOf.count(p)) {
+                        cellOf[p] = id;
+                        stack.push_back(p);
+                    }
+                }
+            }
+        }
+        // Unfixable: a broken cell glued to itself and linked to no other broken cell (the
+        // relinking cuts its quads and finds no partner for them). Where several broken cells
+        // are linked, the cut quads pair up across them (pig 1.0 seed 5, 1.2 seed 3).
+        std::map<int, std::pair<bool, bool>> cellState;  // cell -> (glued to itself, linked to another broken cell)
+        for (const int d : bad) {
+            const int p = A(d)[3];
+            if (p < 0 || p == d) continue;
+            const auto it = cellOf.find(p);
+            if (it == cellOf.end()) continue;
+            auto& st = cellState[cellOf[d]];
+            if (it->second == cellOf[d]) st.first = true;
+            else st.second = true;
+        }
+        for (const auto& c : cellState)
+            if (c.second.first && !c.second.second) return false;
+        return true;
     }
 
     /// The anti darts alive before the first pass in the alternative order @p k (2:
