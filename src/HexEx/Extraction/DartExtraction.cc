@@ -85,6 +85,18 @@ long DartSet::occurrence(int t, const Vec3i& z) const {
     return di.occ_base + l;
 }
 
+void DartSet::occurrencePoint(long occ, int& tet, Vec3i& z) const {
+    const auto it = std::upper_bound(dense.begin(), dense.end(), occ,
+                                     [](long o, const DenseIndex& di) { return o < di.occ_base; });
+    const DenseIndex& di = *(it - 1);
+    long l = occ - di.occ_base;
+    z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
+    l /= di.dims[2];
+    z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
+    z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
+    tet = di.tet;
+}
+
 std::array<int, 4> DartSet::pointSides(int t, const TetSoS& T, const Vec3i& z) const {
     const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
     if (slot >= 0) {

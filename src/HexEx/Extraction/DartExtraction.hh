@@ -92,6 +92,9 @@ struct DartSet {
     /// Occurrence id of grid point @p z in the closed image of tet @p t (a vertex known
     /// without darts), or -1 if @p t has no dense index with flags or @p z is outside.
     long occurrence(int t, const Vec3i& z) const;
+    /// Inverse of occurrence(): the tet @p tet and grid point @p z of occurrence id @p occ
+    /// (0 <= occ < n_occurrences; the dense index holding it is the last with occ_base <= occ).
+    void occurrencePoint(long occ, int& tet, Vec3i& z) const;
     /// Whether @p z is a cancelled fold point of tet @p t (its darts cancelled and not
     /// stored; the alpha_0 tracing walks through it): 0 no, 1 yes and @p t owned all 48
     /// frames there, 2 yes and @p t owned some of them (z on its boundary).

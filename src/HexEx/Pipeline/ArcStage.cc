@@ -65,7 +65,7 @@ public:
         // Implicit cell: all corners are occurrences in one tet, whose chart gives the frame.
         if (!in.implicit || h - nExplicit >= in.implicit->cells.size()) return;  // no starts (tet_ stays -1)
         const auto& cell = in.implicit->cells[h - nExplicit];
-        for (int c = 0; c < 8; ++c) occurrence(in, cell[static_cast<std::size_t>(c)], tet_, z_[c]);
+        for (int c = 0; c < 8; ++c) in.darts->occurrencePoint(cell[static_cast<std::size_t>(c)], tet_, z_[c]);
         for (int k = 0; k < 3; ++k) {
             const Vec3i step = z_[k == 0 ? 1 : k == 1 ? 3 : 4] - z_[0];
             for (int a = 0; a < 3; ++a)
@@ -154,20 +154,6 @@ private:
     State todo_[kCellDarts];
     int n_ = 0, popped_ = 0;
     int met_[kSlots];
-
-    /// Tet and grid point of an occurrence id (the dense index holding it).
-    static void occurrence(const ArcInput& in, long occ, int& tet, Vec3i& z) {
-        const auto& dense = in.darts->dense;
-        auto it = std::upper_bound(dense.begin(), dense.end(), occ,
-                                   [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; });
-        const DartSet::DenseIndex& di = *(it - 1);
-        long l = occ - di.occ_base;
-        z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
-        l /= di.dims[2];
-        z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
-        z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
-        tet = di.tet;
-    }
 
     bool explicit_ = false;
     const ArcInput* in_ = nullptr;

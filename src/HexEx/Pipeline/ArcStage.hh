@@ -16,7 +16,7 @@
 
 namespace HexEx {
 
-/// Input of arcStage().
+/// Input of arcStage() and provenanceStage(): views of the assembled map and its darts.
 struct ArcInput {
     const TetMesh* mesh = nullptr;                ///< the tet mesh
     const Transitions* transitions = nullptr;     ///< transition per halfface

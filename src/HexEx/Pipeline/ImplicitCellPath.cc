@@ -159,17 +159,10 @@ void buildImplicitCells(const TetMesh& mesh, const Transitions& tr, const std::v
     const std::vector<TetSoS>* ts = &tets;
     const DartSet* dp = &ds;
     out.position = [m, ts, dp](long occ) {
-        // The dense index holding this occurrence: the last with occ_base <= occ.
-        auto it = std::upper_bound(dp->dense.begin(), dp->dense.end(), occ,
-                                   [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; });
-        const DartSet::DenseIndex& di = *(it - 1);
-        long l = occ - di.occ_base;
+        int tet = 0;
         Vec3i z;
-        z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
-        l /= di.dims[2];
-        z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
-        z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
-        return gridPointPosition(*m, *ts, *dp, di.tet, z, nullptr);
+        dp->occurrencePoint(occ, tet, z);
+        return gridPointPosition(*m, *ts, *dp, tet, z, nullptr);
     };
 }
 

@@ -13,20 +13,6 @@ namespace {
 /// Steps a centre walk may take before it gives up (only defective maps need many).
 constexpr int kMaxWalkSteps = 512;
 
-/// Tet and grid point of occurrence @p occ (the dense index holding it).
-void occurrencePoint(const DartSet& darts, long occ, int& tet, Vec3i& z) {
-    const auto& dense = darts.dense;
-    const auto it = std::upper_bound(dense.begin(), dense.end(), occ,
-                                     [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; });
-    const DartSet::DenseIndex& di = *(it - 1);
-    long l = occ - di.occ_base;
-    z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
-    l /= di.dims[2];
-    z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
-    z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
-    tet = di.tet;
-}
-
 /// Barycentric coordinates @p l of @p u in the tet with the corner parameters @p p (l[j]
 /// belongs to corner j, negative beyond the face opposite it); false for a flat tet.
 bool barycentric(const Vec3d* p, const Vec3d& u, double l[4]) {
@@ -155,7 +141,7 @@ HexProvenance provenanceStage(const ProvenanceInput& in) {
                 std::array<int, 3> lo = {0, 0, 0};
                 for (std::size_t k = 0; k < 8; ++k) {
                     Vec3i z;
-                    occurrencePoint(*in.darts, cell[k], tet, z);
+                    in.darts->occurrencePoint(cell[k], tet, z);
                     for (int a = 0; a < 3; ++a)
                         lo[static_cast<std::size_t>(a)] = k == 0 ? z[a] : std::min(lo[static_cast<std::size_t>(a)], z[a]);
                 }
@@ -196,7 +182,7 @@ HexProvenance provenanceStage(const ProvenanceInput& in) {
                 if (out.vertex_source_tet[v] >= 0) continue;
                 int tet = -1;
                 Vec3i z;
-                occurrencePoint(*in.darts, cell[k], tet, z);
+                in.darts->occurrencePoint(cell[k], tet, z);
                 out.vertex_source_tet[v] = tet;
                 out.vertex_grid_coords[v] = {z[0], z[1], z[2]};
             }
