@@ -216,12 +216,12 @@ std::vector<char> layerQuads(const HexMesh& mesh, const std::vector<std::array<i
     return in;
 }
 
-/// Smallest scaled Jacobian, over the layer quads at @p v, of the new hex's corner at @p v
-/// when its copy lies in the unit direction @p d: det(e1, e2, d) / (|e1| |e2|), with e1, e2
-/// the quad's edges at v in the order that makes it positive for an inward d.
-double cornerMeasure(const HexMesh& mesh, const std::vector<std::array<int, 4>>& quads, const std::vector<int>& vq,
-                     const std::vector<int>& vq_off, const std::vector<char>& in_layer, int v, const Vec3d& d) {
-    double worst = 2;
+/// Calls @p f(e1, e2) for every corner at the boundary vertex @p v of the layer quads at
+/// @p v, with e1, e2 the quad's edges at v ordered so that -(e1 x e2) is the inward normal
+/// (the quads are oriented outward: (next - v) x (prev - v) points outward at v).
+template <class F>
+void forLayerCorners(const HexMesh& mesh, const std::vector<std::array<int, 4>>& quads, const std::vector<int>& vq,
+                     const std::vector<int>& vq_off, const std::vector<char>& in_layer, int v, F&& f) {
     const Vec3d& p = mesh.vertices[static_cast<std::size_t>(v)];
     for (int k = vq_off[static_cast<std::size_t>(v)]; k < vq_off[static_cast<std::size_t>(v) + 1]; ++k) {
         const std::size_t qi = static_cast<std::size_t>(vq[static_cast<std::size_t>(k)]);
@@ -229,13 +229,21 @@ double cornerMeasure(const HexMesh& mesh, const std::vector<std::array<int, 4>>&
         const auto& q = quads[qi];
         for (std::size_t j = 0; j < 4; ++j) {
             if (q[j] != v) continue;
-            // q is oriented outward: (next - v) x (prev - v) points outward at v.
-            const Vec3d e1 = mesh.vertices[static_cast<std::size_t>(q[(j + 1) % 4])] - p;
-            const Vec3d e2 = mesh.vertices[static_cast<std::size_t>(q[(j + 3) % 4])] - p;
-            const double l = e1.norm() * e2.norm();
-            worst = std::min(worst, l > 0 ? -((e1 % e2) | d) / l : -1.0);
+            f(mesh.vertices[static_cast<std::size_t>(q[(j + 1) % 4])] - p, mesh.vertices[static_cast<std::size_t>(q[(j + 3) % 4])] - p);
         }
     }
+}
+
+/// Smallest scaled Jacobian, over the layer quads at @p v, of the new hex's corner at @p v
+/// when its copy lies in the unit direction @p d: det(e1, e2, d) / (|e1| |e2|), with e1, e2
+/// the quad's edges at v in the order that makes it positive for an inward d.
+double cornerMeasure(const HexMesh& mesh, const std::vector<std::array<int, 4>>& quads, const std::vector<int>& vq,
+                     const std::vector<int>& vq_off, const std::vector<char>& in_layer, int v, const Vec3d& d) {
+    double worst = 2;
+    forLayerCorners(mesh, quads, vq, vq_off, in_layer, v, [&](const Vec3d& e1, const Vec3d& e2) {
+        const double l = e1.norm() * e2.norm();
+        worst = std::min(worst, l > 0 ? -((e1 % e2) | d) / l : -1.0);
+    });
     return worst;
 }
 
@@ -244,41 +252,23 @@ double cornerMeasure(const HexMesh& mesh, const std::vector<std::array<int, 4>>&
 /// (cornerMeasure()) while the worst rises (a max-min ascent on the sphere).
 Vec3d inwardDirection(const HexMesh& mesh, const std::vector<std::array<int, 4>>& quads, const std::vector<int>& vq,
                       const std::vector<int>& vq_off, const std::vector<char>& in_layer, int v, const Vec3d& start) {
-    std::vector<Vec3d> cand;
-    if (start.norm() > 0) cand.push_back(start);
-    const Vec3d& p = mesh.vertices[static_cast<std::size_t>(v)];
-    double best = -3;
-    Vec3d dir(0, 0, 0);
-    for (const auto& c : cand) {
-        const double m = cornerMeasure(mesh, quads, vq, vq_off, in_layer, v, c);
-        if (m > best) {
-            best = m;
-            dir = c;
-        }
-    }
-    if (dir.norm() == 0) return dir;
+    if (!(start.norm() > 0)) return Vec3d(0, 0, 0);
+    Vec3d dir = start;
+    double best = cornerMeasure(mesh, quads, vq, vq_off, in_layer, v, dir);
     // Max-min ascent on the sphere: move towards the inward normal of the worst corner.
     for (int it = 0; it < 30; ++it) {
         Vec3d worst_n(0, 0, 0);
         double worst = 2;
-        for (int k = vq_off[static_cast<std::size_t>(v)]; k < vq_off[static_cast<std::size_t>(v) + 1]; ++k) {
-            const std::size_t qi = static_cast<std::size_t>(vq[static_cast<std::size_t>(k)]);
-            if (!in_layer[qi]) continue;
-            const auto& q = quads[qi];
-            for (std::size_t j = 0; j < 4; ++j) {
-                if (q[j] != v) continue;
-                const Vec3d e1 = mesh.vertices[static_cast<std::size_t>(q[(j + 1) % 4])] - p;
-                const Vec3d e2 = mesh.vertices[static_cast<std::size_t>(q[(j + 3) % 4])] - p;
-                const Vec3d n = -(e1 % e2);
-                const double l = e1.norm() * e2.norm();
-                if (!(l > 0)) continue;
-                const double m = (n | dir) / l;
-                if (m < worst) {
-                    worst = m;
-                    worst_n = n.norm() > 0 ? n / n.norm() : n;
-                }
+        forLayerCorners(mesh, quads, vq, vq_off, in_layer, v, [&](const Vec3d& e1, const Vec3d& e2) {
+            const Vec3d n = -(e1 % e2);
+            const double l = e1.norm() * e2.norm();
+            if (!(l > 0)) return;
+            const double m = (n | dir) / l;
+            if (m < worst) {
+                worst = m;
+                worst_n = n.norm() > 0 ? n / n.norm() : n;
             }
-        }
+        });
         bool improved = false;
         for (double step = 0.5; step > 1e-3 && !improved; step *= 0.5) {
             Vec3d t = dir + worst_n * step;
