@@ -46,7 +46,8 @@ struct AnnihilationRetry {
     int patience = 6;         ///< stop after this many orders in a row that leave no fewer broken cells than the best
     /// Keep the first retry whose broken cells are all hexes once their alpha_3 links are
     /// ignored (only quads crossed or partial: the face repair and relinking handle those)
-    /// instead of trying further orders.
+    /// instead of trying further orders; not if one of those cells is glued to itself and
+    /// linked to no other broken cell (the relinking would find no partner for its quads).
     bool keep_alpha3_only = true;
     /// Called once, after the first retry (phase by phase) if it leaves broken cells, with the
     /// alive darts whose links the run changed (only their cells can be broken): may re-link
