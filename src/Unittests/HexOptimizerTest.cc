@@ -27,6 +27,8 @@
 #include <iterator>
 #include <string>
 
+#include "TestMeshChecks.hh"
+
 using namespace HexEx;
 
 namespace {
@@ -71,12 +73,6 @@ HexMesh perturbedCube(int n, double a, std::uint64_t seed) {
     });
 }
 
-long certifiedInvalid(const HexMesh& m) {
-    long n = 0;
-    for (const auto v : hexValidities(m, 1)) n += v != HexValidity::Valid;
-    return n;
-}
-
 } // namespace
 
 TEST(HexOptimizer, PerturbedCubeWithFixedBoundaryRisesAboveBound) {
@@ -93,7 +89,7 @@ TEST(HexOptimizer, PerturbedCubeWithFixedBoundaryRisesAboveBound) {
     EXPECT_DOUBLE_EQ(r.min_scaled_jacobian_before, q0.min_scaled_jacobian);
     EXPECT_GT(r.min_scaled_jacobian_after, 0.65);  // 0.687 measured; the fixed boundary limits it
     EXPECT_DOUBLE_EQ(r.min_scaled_jacobian_after, computeQuality(m, 1).min_scaled_jacobian);
-    EXPECT_EQ(certifiedInvalid(m), 0);
+    EXPECT_EQ(HexExTest::notCertifiedValid(m), 0);
     EXPECT_EQ(r.fixed_vertices, 7 * 7 * 7 - 5 * 5 * 5);
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
         const Vec3d& p = before.vertices[v];
@@ -123,7 +119,7 @@ TEST(HexOptimizer, CubeFeatureEdgesAndCornersAreKept) {
     EXPECT_EQ(r.curve_vertices, 12 * (n - 1));
     EXPECT_EQ(r.surface_vertices, 6 * (n - 1) * (n - 1));
     EXPECT_GT(r.min_scaled_jacobian_after, r.min_scaled_jacobian_before + 0.2);
-    EXPECT_EQ(certifiedInvalid(m), 0);
+    EXPECT_EQ(HexExTest::notCertifiedValid(m), 0);
     const double diag = std::sqrt(3.0), tol = 1e-9 * diag;
     long moved_on_edges = 0;
     for (std::size_t v = 0; v < m.vertices.size(); ++v) {
@@ -207,7 +203,7 @@ TEST(HexOptimizer, BoundaryStaysOnCurvedSurfaceFromObj) {
     ASSERT_TRUE(r.success) << r.message;
     EXPECT_EQ(r.unprojected_vertices, 0);
     EXPECT_GT(r.min_scaled_jacobian_after, r.min_scaled_jacobian_before + 0.05);
-    EXPECT_EQ(certifiedInvalid(m), 0);
+    EXPECT_EQ(HexExTest::notCertifiedValid(m), 0);
     // Independent distance check against the triangles as written (brute force).
     const TriangleSurface hb = hexMeshBoundary(before);
     std::vector<char> on(m.vertices.size(), 0);
@@ -268,7 +264,7 @@ TEST(HexOptimizer, WorstNeverDecreasesAndEveryStepStaysValid) {
             o.max_local_passes = passes;
             const OptimizeReport r = optimizeHexMesh(m, o);
             ASSERT_TRUE(r.success);
-            EXPECT_EQ(certifiedInvalid(m), 0) << blocks << " blocks, " << passes << " passes";
+            EXPECT_EQ(HexExTest::notCertifiedValid(m), 0) << blocks << " blocks, " << passes << " passes";
             const double now = computeQuality(m, 1).min_scaled_jacobian;
             EXPECT_GE(now, last) << blocks << " blocks, " << passes << " passes";
             EXPECT_GE(now, r.min_scaled_jacobian_projected);

@@ -4,6 +4,8 @@
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/Mesh/HexMesh.hh>
+#include <HexEx/Mesh/HexMeshQuality.hh>
+#include <HexEx/Mesh/HexValidity.hh>
 
 #include <gtest/gtest.h>
 
@@ -16,6 +18,13 @@
 #include <vector>
 
 namespace HexExTest {
+
+/// Hexes of @p m that classifyHexValidity() does not prove valid (invalid or undecided).
+inline long notCertifiedValid(const HexEx::HexMesh& m) {
+    long n = 0;
+    for (const auto v : HexEx::hexValidities(m, 1)) n += v != HexEx::HexValidity::Valid;
+    return n;
+}
 
 /// Examples/data/sphere.hexex with its interior vertex 40 moved by @p value along v in
 /// every tet: a genuine needle fold (all tets agree, nothing to repair; the fold cancels

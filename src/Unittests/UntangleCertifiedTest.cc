@@ -20,6 +20,8 @@
 #include <random>
 #include <string>
 
+#include "TestMeshChecks.hh"
+
 using namespace HexEx;
 
 namespace {
@@ -77,13 +79,6 @@ double gradientError(const std::array<Vec3d, 8>& p, int n, double eps, double po
     return err / norm;
 }
 
-/// Hexes of @p m that classifyHexValidity() does not prove valid.
-long notCertified(const HexMesh& m) {
-    long n = 0;
-    for (const auto v : hexValidities(m, 1)) n += v != HexValidity::Valid;
-    return n;
-}
-
 /// The published mesh @p name from ../shared/data/hexmeshes; empty if unavailable.
 HexMesh publishedMesh(const std::string& name) {
     const std::string text = HexExTest::readSharedXz("hexmeshes/" + name + ".vtk.xz");
@@ -108,7 +103,7 @@ UntangleReport tangleAndUntangle(HexMesh mesh, double fraction, BoundaryMode bou
     EXPECT_EQ(r.invalid_after, 0) << r.message;
     EXPECT_EQ(r.undecided_after, 0) << r.message;
     EXPECT_TRUE(r.success) << r.message;
-    EXPECT_EQ(notCertified(mesh), 0);
+    EXPECT_EQ(HexExTest::notCertifiedValid(mesh), 0);
     EXPECT_EQ(computeQuality(mesh, 1).invalid_hexes, 0);
     return r;
 }
@@ -213,7 +208,7 @@ TEST(UntangleCertified, HexPositiveAtItsCornersButNegativeInsideIsRepaired) {
     EXPECT_EQ(r.invalid_after, 0) << r.message;
     EXPECT_TRUE(r.success);
     EXPECT_GT(r.moved_vertices, 0);
-    EXPECT_EQ(notCertified(found), 0);
+    EXPECT_EQ(HexExTest::notCertifiedValid(found), 0);
 }
 
 TEST(UntangleCertified, FruitlessCertifiedAttemptDoesNotGrow) {
