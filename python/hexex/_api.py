@@ -146,6 +146,19 @@ def _boundary_triangles(tets: np.ndarray) -> np.ndarray:
     return np.ascontiguousarray(faces[counts[inverse.reshape(-1)] == 1], dtype=np.int32)
 
 
+def _surface_arrays(surface, fixed_boundary):
+    """The ``surface=`` argument of :func:`untangle` and :func:`optimize` as (points, triangles)
+    arrays, or (None, None) without one; it excludes ``fixed_boundary``."""
+    if surface is None:
+        return None, None
+    if fixed_boundary:
+        raise ValueError("surface and fixed_boundary exclude each other")
+    if not isinstance(surface, tuple) or len(surface) != 2:
+        raise TypeError("surface must be a tuple (points, triangles)")
+    return (as_float_array(surface[0], "surface points", (None, 3)),
+            as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,)))
+
+
 def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: bool = False, threads: int = 0,
              rings: int = 1, feature_angle: float = 40.0, keep_features: bool = False,
              quality_iterations: int = 10) -> UntangleResult:
@@ -187,14 +200,7 @@ def untangle(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
     rings = _check_int(rings, "rings", 0)
     feature_angle = _check_float(feature_angle, "feature_angle")
     quality_iterations = _check_int(quality_iterations, "quality_iterations", 0, maximum=1000000)
-    surface_points = surface_triangles = None
-    if surface is not None:
-        if fixed_boundary:
-            raise ValueError("surface and fixed_boundary exclude each other")
-        if not isinstance(surface, tuple) or len(surface) != 2:
-            raise TypeError("surface must be a tuple (points, triangles)")
-        surface_points = as_float_array(surface[0], "surface points", (None, 3))
-        surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
+    surface_points, surface_triangles = _surface_arrays(surface, fixed_boundary)
     pts, hx, poly, report = _core.untangle(points, hexes, polyhedra, surface_points, surface_triangles,
                                            bool(fixed_boundary), threads, rings, feature_angle, bool(keep_features),
                                            quality_iterations)
@@ -243,14 +249,7 @@ def optimize(points, hexes, *, polyhedra=None, surface=None, fixed_boundary: boo
     feature_angle = _check_float(feature_angle, "feature_angle")
     max_blocks = _check_int(max_blocks, "max_blocks", 0, maximum=1000000)
     max_passes = _check_int(max_passes, "max_passes", 0, maximum=1000000)
-    surface_points = surface_triangles = None
-    if surface is not None:
-        if fixed_boundary:
-            raise ValueError("surface and fixed_boundary exclude each other")
-        if not isinstance(surface, tuple) or len(surface) != 2:
-            raise TypeError("surface must be a tuple (points, triangles)")
-        surface_points = as_float_array(surface[0], "surface points", (None, 3))
-        surface_triangles = as_index_array(surface[1], "surface triangles", (None, 3), dtypes=(np.int32,))
+    surface_points, surface_triangles = _surface_arrays(surface, fixed_boundary)
     pts, hx, poly, report = _core.optimize(points, hexes, polyhedra, surface_points, surface_triangles,
                                            bool(fixed_boundary), threads, target, feature_angle, max_blocks,
                                            max_passes, bool(pillow))
