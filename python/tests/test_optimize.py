@@ -5,20 +5,7 @@ import numpy as np
 import pytest
 
 import hexex
-
-
-def grid_cube(n):
-    i = np.arange(n + 1)
-    z, y, x = np.meshgrid(i, i, i, indexing="ij")
-    points = np.stack([x.ravel(), y.ravel(), z.ravel()], axis=1) / n
-
-    def vid(a, b, c):
-        return (c * (n + 1) + b) * (n + 1) + a
-
-    hexes = [[vid(a, b, c), vid(a + 1, b, c), vid(a + 1, b + 1, c), vid(a, b + 1, c), vid(a, b, c + 1),
-              vid(a + 1, b, c + 1), vid(a + 1, b + 1, c + 1), vid(a, b + 1, c + 1)]
-             for c in range(n) for b in range(n) for a in range(n)]
-    return points, np.array(hexes, dtype=np.int32)
+from hex_grids import grid_cube
 
 
 def perturbed_cube(n, a, seed):
