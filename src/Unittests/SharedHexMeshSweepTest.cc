@@ -238,6 +238,39 @@ TEST(SharedHexMeshes, CutQuadsLeftByMergedLabelsAreSewnByTheVerticesAfterTheCut)
     EXPECT_TRUE(checkWritten(c.out).valid_all_hex);
 }
 
+// Pig 1.5 seed 16: after the phase-by-phase run two groups of 96 darts are left (two cells
+// merged into one polyhedron each). One chart component of the second group reaches around
+// a singular edge and holds 32 darts of one cube and 8 of another, so placed whole it filled
+// three cubes ("the darts do not fill whole cubes"). Split by cube, its parts are placed
+// on their own: 50 + 46 darts, a split vertex, re-linked into the two source hexes.
+TEST(SharedHexMeshes, ChartComponentAroundASingularEdgeIsSplitByCube) {
+    const HexMesh pig = sharedHexMesh("sss19_pig_in");
+    if (pig.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes/sss19_pig_in.vtk.xz not available (or no xz)";
+    const FoldedCase c = runFolded(pig, 1.5, 16);
+    expectSourceMeshBack(c, "pig a=1.5 seed=16");
+    EXPECT_EQ(c.report.darts.annihilation_order, 1);
+    EXPECT_EQ(c.report.darts.reconnected_cells, 4);
+    EXPECT_EQ(c.report.darts.unreconnected_cells, 0);
+    EXPECT_EQ(c.out.hexes.size(), 13987u);
+}
+
+// Pig 1.5 seed 21: besides a reconnected group, one cell is glued to itself by two of its
+// own quads, and two quads of other cells are linked to each other the same crossed way
+// (equation 2 holds there, so they were not cut): the vertices of the self-glued cell's two
+// quads stay one set and the relinking found no partner (3 polyhedra, 2 vertices short).
+// The last pass cuts the sewn quads with those vertices too and pairs all four: 16 relinked,
+// the source mesh back.
+TEST(SharedHexMeshes, QuadsCrossedLikeASelfGluedCellAreCutAndPairedToo) {
+    const HexMesh pig = sharedHexMesh("sss19_pig_in");
+    if (pig.hexes.empty()) GTEST_SKIP() << "../shared/data/hexmeshes/sss19_pig_in.vtk.xz not available (or no xz)";
+    const FoldedCase c = runFolded(pig, 1.5, 21);
+    expectSourceMeshBack(c, "pig a=1.5 seed=21");
+    EXPECT_EQ(c.report.output.relinked_faces, 16);
+    EXPECT_EQ(c.report.output.boundary_quads, 4540);
+    EXPECT_EQ(c.report.darts.reconnected_cells, 2);
+    EXPECT_TRUE(checkWritten(c.out).valid_all_hex);
+}
+
 namespace {
 
 /// Comma-separated numbers (or ranges of integers "1-40") of the environment variable @p var, or @p dflt if unset.

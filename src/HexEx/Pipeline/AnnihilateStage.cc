@@ -30,11 +30,17 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         AnnihilationRetry retry = in.retry;
         if (retry.enabled && in.darts)
             retry.repair = [&](const std::vector<int>& changed) {
-                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &changed);
+                std::vector<std::pair<int, std::array<int, 4>>> undo;
+                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &changed, &undo);
                 const ReconnectionStats& r = out.reconnection;
                 // Groups broken only in alpha_3 are left to the face repair and relinking, as
                 // AnnihilationRetry::keep_alpha3_only leaves them.
-                return r.reconnected_cells > 0 && r.unresolved_cells == 0 && (r.alpha3_only_groups == 0 || retry.keep_alpha3_only);
+                const bool kept = r.reconnected_cells > 0 && r.unresolved_cells == 0 && (r.alpha3_only_groups == 0 || retry.keep_alpha3_only);
+                // Not kept: the other orders run on the links as the annihilation left them
+                // (it restores only the darts it touched itself).
+                if (!kept)
+                    for (auto it = undo.rbegin(); it != undo.rend(); ++it) (*in.alpha)[static_cast<std::size_t>(it->first)] = it->second;
+                return kept;
             };
         const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, retry);
         out.stats = as;

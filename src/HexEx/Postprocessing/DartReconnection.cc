@@ -246,30 +246,42 @@ long reconnectGroup(std::vector<std::array<int, 4>>& alpha, const std::vector<ch
             why = "anti darts left";
             return 0;
         }
-    // Tets of the group, numbered by first occurrence (darts ascend, so deterministic).
-    std::map<int, int> tetIndex;
-    std::vector<int> tetOf(group.size());
-    for (std::size_t k = 0; k < group.size(); ++k) {
-        const int t = at(group[k]).tet;
-        const int piece = pieceOfTet ? (*pieceOfTet)[static_cast<std::size_t>(t)] : t;
-        const auto ins = tetIndex.emplace(piece, static_cast<int>(tetIndex.size()));
-        tetOf[k] = ins.first->second;
+    // Two tries. First the pieces are chart components (tets joined by identity transitions):
+    // their frames are exact relative to each other. A component can reach around a singular
+    // edge, though, and then holds darts of two cells that the edge's rotation relates (pig
+    // folded by 1.5, seed 16: one component has 32 darts in one cube and 8 in another, and the
+    // placement fills three cubes). So if that fails, the pieces are split further by the unit
+    // cube their darts span in the component's chart, and each part is placed on its own.
+    std::string firstWhy;
+    for (int byCube = 0; byCube < 2; ++byCube) {
+        // Pieces of the group, numbered by first occurrence (darts ascend, so deterministic).
+        std::map<std::tuple<int, int, int, int>, int> pieceIndex;
+        std::vector<int> pieceOf(group.size());
+        for (std::size_t k = 0; k < group.size(); ++k) {
+            const Dart& D = at(group[k]);
+            const int component = pieceOfTet ? (*pieceOfTet)[static_cast<std::size_t>(D.tet)] : D.tet;
+            const Vec3i lo = byCube ? cubeOf(frameOf(group[k])) : Vec3i(0, 0, 0);
+            const auto ins = pieceIndex.emplace(std::make_tuple(component, lo[0], lo[1], lo[2]), static_cast<int>(pieceIndex.size()));
+            pieceOf[k] = ins.first->second;
+        }
+        const int np = static_cast<int>(pieceIndex.size());
+        std::vector<int> size(static_cast<std::size_t>(np), 0);
+        for (int t : pieceOf) ++size[static_cast<std::size_t>(t)];
+        // One attempt per root piece (the piece whose chart is the common one): a piece placed
+        // wrong can only be outvoted if it is not the root. Roots by size (most darts first,
+        // ties: first piece), at most kRoots of them.
+        constexpr int kRoots = 8;
+        std::vector<int> roots(static_cast<std::size_t>(np));
+        for (int t = 0; t < np; ++t) roots[static_cast<std::size_t>(t)] = t;
+        std::stable_sort(roots.begin(), roots.end(), [&](int x, int y) { return size[static_cast<std::size_t>(x)] > size[static_cast<std::size_t>(y)]; });
+        if (roots.size() > static_cast<std::size_t>(kRoots)) roots.resize(kRoots);
+        for (int root : roots) {
+            const long formed = placeAndRelink(alpha, alive, group, pieceOf, np, root, frameOf, slot, mark, why);
+            if (formed > 0) return formed;
+        }
+        if (byCube == 0) firstWhy = why;
     }
-    const int nt = static_cast<int>(tetIndex.size());
-    std::vector<int> size(static_cast<std::size_t>(nt), 0);
-    for (int t : tetOf) ++size[static_cast<std::size_t>(t)];
-    // One attempt per root piece (the piece whose chart is the common one): a piece placed
-    // wrong can only be outvoted if it is not the root. Roots by size (most darts first,
-    // ties: first piece), at most kRoots of them.
-    constexpr int kRoots = 8;
-    std::vector<int> roots(static_cast<std::size_t>(nt));
-    for (int t = 0; t < nt; ++t) roots[static_cast<std::size_t>(t)] = t;
-    std::stable_sort(roots.begin(), roots.end(), [&](int x, int y) { return size[static_cast<std::size_t>(x)] > size[static_cast<std::size_t>(y)]; });
-    if (roots.size() > static_cast<std::size_t>(kRoots)) roots.resize(kRoots);
-    for (int root : roots) {
-        const long formed = placeAndRelink(alpha, alive, group, tetOf, nt, root, frameOf, slot, mark, why);
-        if (formed > 0) return formed;
-    }
+    if (why != firstWhy) why = firstWhy + "; with the chart components split by cube: " + why;
     return 0;
 }
 
@@ -290,7 +302,8 @@ long cellsBrokenInside(std::vector<std::array<int, 4>>& alpha, const std::vector
 } // namespace
 
 ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const DartVector& darts,
-                                       const std::function<std::vector<int>()>& chart_components, const std::vector<int>* seeds) {
+                                       const std::function<std::vector<int>()>& chart_components, const std::vector<int>* seeds,
+                                       std::vector<std::pair<int, std::array<int, 4>>>* undo) {
     ReconnectionStats st;
     const std::size_t n = alpha.size();
     std::vector<int> allAlive;
@@ -332,8 +345,13 @@ ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, c
         }
         st.broken_cells += cellsBefore;
         std::string why;
+        std::vector<std::array<int, 4>> before;
+        if (undo)
+            for (int d : group) before.push_back(alpha[static_cast<std::size_t>(d)]);
         const long formed = reconnectGroup(alpha, alive, darts, pieceOfTet, group, mark, why);
         if (formed > 0) {
+            if (undo)
+                for (std::size_t k = 0; k < group.size(); ++k) undo->emplace_back(group[k], before[k]);
             st.reconnected_cells += formed;
         } else {
             st.unresolved_cells += cellsBefore;

@@ -52,8 +52,11 @@ struct ReconnectionStats {
 ///
 /// @p seeds, if given, limits the search for broken cells to the cells of these darts (the
 /// annihilation passes the darts whose links it changed: no other cell can have broken).
+/// @p undo, if given, receives (dart, links before) for every dart of every group re-linked,
+/// in order, so that the caller can put them back (restore in reverse order).
 ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const DartVector& darts,
                                        const std::function<std::vector<int>()>& chart_components = {},
-                                       const std::vector<int>* seeds = nullptr);
+                                       const std::vector<int>* seeds = nullptr,
+                                       std::vector<std::pair<int, std::array<int, 4>>>* undo = nullptr);
 
 } // namespace HexEx

@@ -5,9 +5,90 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace HexEx {
+
+namespace {
+
+/// The sorted four vertices of quad @p fd under @p label, or false if it has not four.
+bool quadKey(const std::vector<int>& label, const std::vector<DartHandle>& fd, std::array<int, 4>& key) {
+    int m = 0;
+    for (const DartHandle x : fd) {
+        const int v = label[x.uidx()];
+        if (std::find(key.begin(), key.begin() + m, v) != key.begin() + m) continue;
+        if (m == 4) return false;
+        key[static_cast<std::size_t>(m++)] = v;
+    }
+    std::sort(key.begin(), key.end());
+    return m == 4 && fd.size() == 8;
+}
+
+/// Last pass for the cut quads @p left that found no partner (pig folded by 1.5, seed 21: a
+/// cell glued to itself by two of its own quads, whose four vertices stay one set because
+/// two quads of other cells, linked to each other, cross the same way and pass equation 2):
+/// the sewn quads with the same four vertices as a left quad are cut too, with the quads
+/// they were linked to, and all of them are paired once more by the vertices of the map as
+/// it is then. Kept only if every one of them finds its partner; otherwise every link is
+/// put back.
+template <class SewByVertices>
+void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts,
+                       const std::vector<std::size_t>& left, const SewByVertices& sewByVertices, FaceRelinkStats& st) {
+    int nVertices = 0, nFaces = 0;
+    const std::vector<int> vertex = labelOrbits(g, 0b1110, &nVertices);
+    std::set<std::array<int, 4>> keys;
+    std::vector<char> wanted(static_cast<std::size_t>(nVertices), 0);
+    for (const std::size_t k : left) {
+        std::array<int, 4> key{};
+        if (!quadKey(vertex, faceDarts[k], key)) continue;
+        keys.insert(key);
+        for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
+    }
+    if (keys.empty()) return;
+    const std::vector<int> face = labelOrbits(g, 0b0011, &nFaces);
+    std::vector<char> seen(static_cast<std::size_t>(nFaces), 0);
+    for (const auto& fd : faceDarts) seen[static_cast<std::size_t>(face[fd[0].uidx()])] = 1;
+    const std::size_t firstNew = faceDarts.size();
+    auto take = [&](DartHandle d) {
+        if (seen[static_cast<std::size_t>(face[d.uidx()])]) return;
+        seen[static_cast<std::size_t>(face[d.uidx()])] = 1;
+        faceDarts.push_back(g.orbit(d, 0b0011));
+    };
+    const std::size_t n = g.n_darts();
+    for (std::size_t d = 0; d < n; ++d) {
+        const DartHandle x(static_cast<int>(d));
+        if (!g.is_alive(x) || g.is_free(x, 3) || !wanted[static_cast<std::size_t>(vertex[d])] || seen[static_cast<std::size_t>(face[d])]) continue;
+        std::array<int, 4> key{};
+        const std::vector<DartHandle> fd = g.orbit(x, 0b0011);
+        if (quadKey(vertex, fd, key) && keys.count(key)) {
+            take(x);
+            take(g.alpha(x, 3));  // the quad it was linked to
+        }
+    }
+    if (faceDarts.size() == firstNew) return;
+    // Cut them, remembering the links.
+    std::vector<std::pair<DartHandle, DartHandle>> saved;
+    for (std::size_t k = firstNew; k < faceDarts.size(); ++k)
+        for (const DartHandle x : faceDarts[k]) saved.emplace_back(x, g.alpha(x, 3));
+    for (std::size_t k = firstNew; k < faceDarts.size(); ++k)
+        for (const DartHandle x : faceDarts[k]) g.unsew(x, 3);
+    std::vector<std::size_t> pool = left;
+    for (std::size_t k = firstNew; k < faceDarts.size(); ++k) pool.push_back(k);
+    const long relinkedBefore = st.relinked_faces;
+    const std::vector<std::size_t> open = sewByVertices(labelOrbits(g, 0b1110, &nVertices), pool);
+    if (open.empty()) {
+        st.inconsistent_faces += static_cast<long>(faceDarts.size() - firstNew);
+        return;
+    }
+    for (const std::size_t k : pool)
+        for (const DartHandle x : faceDarts[k]) g.unsew(x, 3);
+    for (const auto& [x, y] : saved)
+        if (x != y) g.sew(x, y, 3);
+    st.relinked_faces = relinkedBefore;
+}
+
+} // namespace
 
 FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
     FaceRelinkStats st;
@@ -112,7 +193,8 @@ FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
     // Quads the crossed links left without a partner (their vertex labels, taken with those
     // links, merged two vertices, so several cut quads share one key): once more with the
     // vertices of the map as it is now (cut quads open, the others sewn), among those only.
-    if (!left.empty()) sewByVertices(labelOrbits(g, 0b1110, &nVertices), left);
+    const std::vector<std::size_t> left2 = left.empty() ? left : sewByVertices(labelOrbits(g, 0b1110, &nVertices), left);
+    if (!left2.empty()) relinkMergedQuads(g, faceDarts, left2, sewByVertices, st);
     return st;
 }
 

@@ -26,8 +26,12 @@ struct FaceRelinkStats {
 /// (<alpha_0, alpha_1> orbit) and, repeatedly, of the quads those were linked to; then,
 /// with the vertices (<alpha_1, alpha_2, alpha_3> orbits) labelled before the cut, sews
 /// every two cut quads of different cells with the same four vertices, dart to dart (same
-/// vertex, same edge). Quads without such a partner stay free. Linear time;
-/// deterministic (quads in order of their smallest dart).
+/// vertex, same edge). The quads left are paired once more among themselves by the vertices
+/// of the map with the cut quads open; if some are still left, the sewn quads with the same
+/// four vertices as one of them (crossed the same way, but passing equation 2) are cut too,
+/// with their partners, and all of them are paired again, kept only if every one finds a
+/// partner. Quads without a partner stay free. Linear time; deterministic (quads in order
+/// of their smallest dart).
 FaceRelinkStats relinkInconsistentFaces(GMap<3>& g);
 
 } // namespace HexEx
