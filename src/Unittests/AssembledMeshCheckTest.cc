@@ -106,3 +106,54 @@ TEST(AssembledMeshCheck, SameCountsOnAnyThreadCount) {
         EXPECT_EQ(r.nonmanifold_boundary_vertices, one.nonmanifold_boundary_vertices);
     }
 }
+
+TEST(AssembledMeshCheck, CountsTheQuadsAroundAVertexOfManyHexes) {
+    // A 2x2x2 block whose centre vertex has index 0: the smallest vertex of its 12 inner
+    // quads, each in two hexes (24 quads filed under one vertex, more than the small-bucket
+    // sort handles). Then the same block with one inner quad in a third hex.
+    HexMesh m;
+    auto id = [](int i, int j, int k) { return i == 1 && j == 1 && k == 1 ? 0 : 1 + i + 3 * j + 9 * k - (i + 3 * j + 9 * k > 13 ? 1 : 0); };
+    m.vertices.resize(27);
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) m.vertices[static_cast<std::size_t>(id(i, j, k))] = Vec3d(i, j, k);
+    for (int k = 0; k < 2; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i)
+                m.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                                   id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+    const AssembledMeshCheck c = checkAssembledHexes(m);
+    EXPECT_EQ(c.quads, 36);
+    EXPECT_EQ(c.boundary_quads, 24);
+    EXPECT_TRUE(c.agrees(36, 24));
+    // A third hex on the inner quad x = 1, 0 <= y, z <= 1 (through the centre), outside the block.
+    for (int k = 0; k < 4; ++k) m.vertices.push_back(Vec3d(10, k % 2, k / 2));
+    m.hexes.push_back({27, 28, 30, 29, id(1, 0, 0), id(1, 1, 0), id(1, 1, 1), id(1, 0, 1)});
+    const AssembledMeshCheck d = checkAssembledHexes(m);
+    const HexMeshCheckResult w = checkHexMesh(m);
+    EXPECT_EQ(d.quads_shared_by_more_than_two, 1);
+    EXPECT_EQ(d.quads, w.quads);
+    EXPECT_EQ(d.boundary_quads, w.boundary_quads);
+    EXPECT_EQ(d.quads, 36 + 5);
+}
+
+TEST(AssembledMeshCheck, CountsTheQuadsOfALargeGrid) {
+    // 57^3 = 185,193 hexes: more than 2^20 quads, which are matched in two parts of the vertices.
+    const int n = 57;
+    HexMesh m;
+    auto id = [&](int i, int j, int k) { return i + (n + 1) * (j + (n + 1) * k); };
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) m.vertices.push_back(Vec3d(i, j, k));
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i)
+                m.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                                   id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+    for (const int threads : {1, 2}) {
+        const AssembledMeshCheck c = checkAssembledHexes(m, threads);
+        EXPECT_EQ(c.quads, 3L * n * n * (n + 1));
+        EXPECT_EQ(c.boundary_quads, 6L * n * n);
+        EXPECT_TRUE(c.agrees(3L * n * n * (n + 1), 6L * n * n));
+    }
+}

@@ -1,6 +1,6 @@
 /// @file AssembledMeshCheck.cc
 /// Implementation of checkAssembledHexes(): counting sorts by vertex, small sorts per bucket;
-/// the hex and quad passes in parallel chunks.
+/// the hex and quad passes in parallel chunks (quads as compact records, one per face).
 
 #include "AssembledMeshCheck.hh"
 
@@ -29,28 +29,166 @@ void bucketByVertex(long nv, long n, VertexOf vertexOf, std::vector<long>& start
     for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(next[static_cast<std::size_t>(vertexOf(i))]++)] = i;
 }
 
-/// The same as bucketByVertex() on @p chunks threads (atomic slots: the order within a bucket
-/// varies, so callers must not depend on it).
-template <class VertexOf>
-void bucketByVertexParallel(long nv, long n, int chunks, VertexOf vertexOf, std::vector<long>& start, std::vector<long>& order) {
-    start.assign(static_cast<std::size_t>(nv) + 1, 0);
-    long* count = start.data() + 1;
-    parallelChunks(static_cast<std::size_t>(n), chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) __atomic_fetch_add(&count[vertexOf(static_cast<long>(i))], 1L, __ATOMIC_RELAXED);
-    });
-    for (long v = 0; v < nv; ++v) start[static_cast<std::size_t>(v) + 1] += start[static_cast<std::size_t>(v)];
-    std::vector<long> next(start.begin(), start.end() - 1);
-    order.resize(static_cast<std::size_t>(n));
-    parallelChunks(static_cast<std::size_t>(n), chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i) {
-            const long slot = __atomic_fetch_add(&next[static_cast<std::size_t>(vertexOf(static_cast<long>(i)))], 1L, __ATOMIC_RELAXED);
-            order[static_cast<std::size_t>(slot)] = static_cast<long>(i);
-        }
-    });
-}
-
 /// Fewer hexes than this are checked on one thread.
 constexpr long kParallelHexes = 20000;
+
+/// A quad of a valid hex, filed under its smallest vertex: the other three vertices in
+/// increasing order and the quad item (face f of hex h is item 6h+f).
+template <class Item>
+struct QuadRecord {
+    int k1, k2, k3;  ///< the vertices after the smallest, increasing
+    Item item;       ///< 6h+f
+
+    /// Order by the vertex set, then by item.
+    bool operator<(const QuadRecord& o) const {
+        if (k1 != o.k1) return k1 < o.k1;
+        if (k2 != o.k2) return k2 < o.k2;
+        if (k3 != o.k3) return k3 < o.k3;
+        return item < o.item;
+    }
+    /// Same vertex set.
+    bool sameQuad(const QuadRecord& o) const { return k1 == o.k1 && k2 == o.k2 && k3 == o.k3; }
+};
+
+/// What distinctQuads() finds.
+struct QuadPass {
+    long repeated_corner_hexes = 0;  ///< hexes with an out-of-range or repeated vertex index
+    long quads = 0;                  ///< distinct quads of the valid hexes
+    long boundary_quads = 0;         ///< of those, in exactly one hex
+    long shared_by_more = 0;         ///< in three or more hexes
+    std::vector<long> boundary;      ///< the items of the boundary quads, by smallest vertex, then vertex set
+};
+
+/// The four sorted vertices of face @p f of hex @p c.
+inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
+    const int* l = kHexFaces[f];
+    int a = c[l[0]], b = c[l[1]], x = c[l[2]], y = c[l[3]];
+    if (a > b) std::swap(a, b);
+    if (x > y) std::swap(x, y);
+    if (a > x) std::swap(a, x);
+    if (b > y) std::swap(b, y);
+    if (b > x) std::swap(b, x);
+    return {{a, b, x, y}};
+}
+
+/// The hexes' validity and their quads, counted by vertex set. Passes on @p chunks threads:
+/// hexes (validity, quads per smallest vertex), then per part of the vertices (one, or two on
+/// large meshes) hexes again (each quad's record into its vertex's bucket, atomic slots) and
+/// vertices (each bucket sorted by vertex set and item, so the slots' order does not matter).
+/// Per-chunk results are joined in part and chunk order: the result does not depend on the
+/// thread count.
+template <class Item>
+QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
+    QuadPass r;
+    const long nv = static_cast<long>(mesh.vertices.size());
+    const long nh = static_cast<long>(mesh.hexes.size());
+    const auto& H = mesh.hexes;
+    std::vector<char> good(static_cast<std::size_t>(nh), 0);
+    std::vector<long> repeated(static_cast<std::size_t>(chunks), 0);
+    std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
+    Item* count = start.data() + 1;
+    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+        for (std::size_t h = h0; h < h1; ++h) {
+            const auto& c = H[h];
+            bool ok = true;
+            for (int i = 0; i < 8 && ok; ++i) {
+                ok = c[i] >= 0 && c[i] < nv;
+                for (int j = 0; j < i && ok; ++j) ok = c[i] != c[j];
+            }
+            if (!ok) {
+                ++repeated[static_cast<std::size_t>(k)];
+                continue;
+            }
+            good[h] = 1;
+            for (int f = 0; f < 6; ++f) {
+                const int* l = kHexFaces[f];
+                const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
+                __atomic_fetch_add(&count[v], Item(1), __ATOMIC_RELAXED);
+            }
+        }
+    });
+    for (const long n : repeated) r.repeated_corner_hexes += n;
+    for (long v = 0; v < nv; ++v) start[static_cast<std::size_t>(v) + 1] += start[static_cast<std::size_t>(v)];
+    // Records of the quads filed under vertices [vb[p], vb[p+1]) for part p: two parts of about
+    // equal size on large meshes, so that the records take no more memory than the quad items
+    // and their vertex keys did before.
+    const std::size_t total = static_cast<std::size_t>(start.back());
+    const int nParts = total > (std::size_t(1) << 20) ? 2 : 1;
+    std::vector<long> vb(static_cast<std::size_t>(nParts) + 1, nv);
+    vb[0] = 0;
+    for (int p = 1; p < nParts; ++p)
+        vb[static_cast<std::size_t>(p)] =
+            std::lower_bound(start.begin(), start.end(), static_cast<Item>(total * static_cast<std::size_t>(p) / static_cast<std::size_t>(nParts))) -
+            start.begin();
+    std::vector<Item> next(start.begin(), start.end() - 1);
+    std::size_t largest = 0;
+    for (int p = 0; p < nParts; ++p)
+        largest = std::max(largest, static_cast<std::size_t>(start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p) + 1])] -
+                                                             start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p)])]));
+    std::vector<QuadRecord<Item>> rec(largest);
+    // Per chunk of vertices: counts and the boundary quads in vertex order, concatenated in
+    // chunk order (and part order).
+    struct ChunkQuads {
+        long quads = 0, boundary_quads = 0, shared_by_more = 0;
+        std::vector<long> boundary;
+    };
+    std::vector<ChunkQuads> parts(static_cast<std::size_t>(chunks) * static_cast<std::size_t>(nParts));
+    for (int p = 0; p < nParts; ++p) {
+        const long lo = vb[static_cast<std::size_t>(p)], hi = vb[static_cast<std::size_t>(p) + 1];
+        const Item offset = start[static_cast<std::size_t>(lo)];
+        parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int, std::size_t h0, std::size_t h1) {
+            for (std::size_t h = h0; h < h1; ++h) {
+                if (!good[h]) continue;
+                const auto& c = H[h];
+                for (int f = 0; f < 6; ++f) {
+                    const int* l = kHexFaces[f];
+                    const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
+                    if (v < lo || v >= hi) continue;
+                    const std::array<int, 4> q = sortedFace(c, f);
+                    const Item slot = __atomic_fetch_add(&next[static_cast<std::size_t>(v)], Item(1), __ATOMIC_RELAXED);
+                    rec[static_cast<std::size_t>(slot - offset)] = {q[1], q[2], q[3], static_cast<Item>(6 * h + static_cast<std::size_t>(f))};
+                }
+            }
+        });
+        parallelChunks(static_cast<std::size_t>(hi - lo), chunks, [&](int k, std::size_t v0, std::size_t v1) {
+            ChunkQuads& part = parts[static_cast<std::size_t>(p) * static_cast<std::size_t>(chunks) + static_cast<std::size_t>(k)];
+            for (std::size_t v = static_cast<std::size_t>(lo) + v0; v < static_cast<std::size_t>(lo) + v1; ++v) {
+                QuadRecord<Item>* b = rec.data() + (start[v] - offset);
+                QuadRecord<Item>* e = rec.data() + (start[v + 1] - offset);
+                if (e - b <= 16) {  // buckets are small: insertion sort
+                    for (QuadRecord<Item>* i = b + 1; i < e; ++i) {
+                        const QuadRecord<Item> x = *i;
+                        QuadRecord<Item>* j = i;
+                        for (; j > b && x < *(j - 1); --j) *j = *(j - 1);
+                        *j = x;
+                    }
+                } else {
+                    std::sort(b, e);
+                }
+                for (QuadRecord<Item>* i = b; i < e;) {
+                    QuadRecord<Item>* j = i + 1;
+                    while (j < e && j->sameQuad(*i)) ++j;
+                    ++part.quads;
+                    if (j - i == 1) {
+                        ++part.boundary_quads;
+                        part.boundary.push_back(static_cast<long>(i->item));
+                    } else if (j - i > 2) {
+                        ++part.shared_by_more;
+                    }
+                    i = j;
+                }
+            }
+        });
+    }
+    for (auto& part : parts) {
+        r.quads += part.quads;
+        r.boundary_quads += part.boundary_quads;
+        r.shared_by_more += part.shared_by_more;
+        r.boundary.insert(r.boundary.end(), part.boundary.begin(), part.boundary.end());
+        std::vector<long>().swap(part.boundary);
+    }
+    return r;
+}
 
 } // namespace
 
@@ -87,86 +225,15 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
         return r;
     }
     const int chunks = nh >= kParallelHexes ? std::max(1, threads) : 1;
-
-    std::vector<char> good(static_cast<std::size_t>(nh), 0);
-    std::vector<long> repeated(static_cast<std::size_t>(chunks), 0);
-    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
-        for (std::size_t h = h0; h < h1; ++h) {
-            const auto& c = H[h];
-            bool ok = true;
-            for (int i = 0; i < 8 && ok; ++i) {
-                ok = c[i] >= 0 && c[i] < nv;
-                for (int j = 0; j < i && ok; ++j) ok = c[i] != c[j];
-            }
-            if (ok)
-                good[h] = 1;
-            else
-                ++repeated[static_cast<std::size_t>(k)];
-        }
-    });
-    for (const long n : repeated) r.repeated_corner_hexes += n;
-
-    // Quads (face f of hex h is item 6h+f; faces of bad hexes go to bucket 0 and are skipped).
-    auto quadKey = [&](long q) {
-        const auto& c = H[static_cast<std::size_t>(q / 6)];
-        const int* f = kHexFaces[q % 6];
-        std::array<int, 4> k{{c[f[0]], c[f[1]], c[f[2]], c[f[3]]}};
-        std::sort(k.begin(), k.end());
-        return k;
-    };
-    std::vector<int> smallest(static_cast<std::size_t>(6 * nh), 0);  // bucket of each quad item
-    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int, std::size_t h0, std::size_t h1) {
-        for (std::size_t h = h0; h < h1; ++h) {
-            if (!good[h]) continue;
-            const auto& c = H[h];
-            for (int f = 0; f < 6; ++f) {
-                const int* l = kHexFaces[f];
-                smallest[6 * h + static_cast<std::size_t>(f)] = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
-            }
-        }
-    });
+    // Quad items: face f of hex h is item 6h+f; a 32-bit item index when it fits.
+    const QuadPass pass = 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks)
+                                                                 : distinctQuads<long>(mesh, chunks);
+    r.repeated_corner_hexes = pass.repeated_corner_hexes;
+    r.quads = pass.quads;
+    r.boundary_quads = pass.boundary_quads;
+    r.quads_shared_by_more_than_two = pass.shared_by_more;
+    const std::vector<long>& boundary = pass.boundary;  // quad items in exactly one hex
     std::vector<long> start, order;
-    bucketByVertexParallel(nv, 6 * nh, chunks, [&](long q) { return smallest[static_cast<std::size_t>(q)]; }, start, order);
-    std::vector<int>().swap(smallest);
-    // Per chunk of vertices: counts and the boundary quads in vertex order (a bucket is sorted
-    // by key and item, so the order within it does not matter); concatenated in chunk order.
-    struct ChunkQuads {
-        long quads = 0, boundary_quads = 0, shared_by_more = 0;
-        std::vector<long> boundary;
-    };
-    std::vector<ChunkQuads> parts(static_cast<std::size_t>(chunks));
-    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
-        ChunkQuads& part = parts[static_cast<std::size_t>(k)];
-        std::vector<std::pair<std::array<int, 4>, long>> bucket;
-        for (std::size_t v = v0; v < v1; ++v) {
-            bucket.clear();
-            for (long i = start[v]; i < start[v + 1]; ++i) {
-                const long q = order[static_cast<std::size_t>(i)];
-                if (good[static_cast<std::size_t>(q / 6)]) bucket.push_back({quadKey(q), q});
-            }
-            std::sort(bucket.begin(), bucket.end());
-            for (std::size_t i = 0; i < bucket.size();) {
-                std::size_t j = i + 1;
-                while (j < bucket.size() && bucket[j].first == bucket[i].first) ++j;
-                ++part.quads;
-                if (j - i == 1) {
-                    ++part.boundary_quads;
-                    part.boundary.push_back(bucket[i].second);
-                } else if (j - i > 2) {
-                    ++part.shared_by_more;
-                }
-                i = j;
-            }
-        }
-    });
-    std::vector<long> boundary;  // quad items in exactly one hex
-    for (auto& part : parts) {
-        r.quads += part.quads;
-        r.boundary_quads += part.boundary_quads;
-        r.quads_shared_by_more_than_two += part.shared_by_more;
-        boundary.insert(boundary.end(), part.boundary.begin(), part.boundary.end());
-        std::vector<long>().swap(part.boundary);
-    }
 
     // Boundary edges (item 4b+i: edge i of boundary quad b) by their smaller vertex, and
     // boundary corners (item 4b+i: corner i of b) by their vertex.
