@@ -1,13 +1,19 @@
 /// @file FoldedBoundaryTest.cc
-/// boundaryDoublets() and hexesOutsideSurface() (FoldedBoundary.hh): exact results on a
-/// two-hex slab whose middle vertices are boundary doublets, on a grid without doublets, and
-/// on a row of four cubes against a box that holds the first two.
+/// boundaryDoublets(), hexesOutsideSurface() and removeHexes() (FoldedBoundary.hh): exact
+/// results on a two-hex slab whose middle vertices are boundary doublets, on a grid without
+/// doublets, and on a row of cubes against a box that holds the first two; OptimizeOptions::pillow
+/// removes a hex outside the box that is positive at its corners but negative inside, and every
+/// hex of the result is certified valid (exact counts, 1 and 2 threads identical).
 
+#include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/FoldedBoundary.hh>
+#include <HexEx/Untangling/HexOptimizer.hh>
 
 #include <gtest/gtest.h>
 
 #include <vector>
+
+#include "TestMeshChecks.hh"
 
 using namespace HexEx;
 
@@ -64,6 +70,23 @@ TriangleSurface box() {
     return s;
 }
 
+/// The first two cubes of cubeRow() and, on their face x = 2, a hex outside the box [0, 2] x
+/// [0, 1] x [0, 1] whose far corners were found by a random search: J > 0 at its 8 corners
+/// but negative inside (checked in the test).
+HexMesh rowWithInvalidFlap() {
+    HexMesh m = cubeRow();
+    m.hexes.resize(2);  // x from 0 to 2; vertices (i, j, k) at (k * 2 + j) * 5 + i
+    auto id = [](int i, int j, int k) { return (k * 2 + j) * 5 + i; };
+    const int far[4] = {static_cast<int>(m.vertices.size()), static_cast<int>(m.vertices.size()) + 1,
+                        static_cast<int>(m.vertices.size()) + 2, static_cast<int>(m.vertices.size()) + 3};
+    m.vertices.emplace_back(2.7830701737099623, 0.2675202495308675, 0.028419666974264235);
+    m.vertices.emplace_back(2.9585594079978104, 0.5418894157777765, 0.45957374984705546);
+    m.vertices.emplace_back(3.4496295600277698, 0.32624071263997101, 0.80339082012598906);
+    m.vertices.emplace_back(2.842993795455059, 1.3538251488596802, 1.1508942871914223);
+    m.hexes.push_back({{id(2, 0, 0), far[0], far[1], id(2, 1, 0), id(2, 0, 1), far[2], far[3], id(2, 1, 1)}});
+    return m;
+}
+
 } // namespace
 
 TEST(FoldedBoundary, DoubletsOfTheSplitSquareSlab) {
@@ -94,4 +117,54 @@ TEST(FoldedBoundary, OutsideHexesConnectedToTheSeeds) {
     EXPECT_TRUE(hexesOutsideSurface(row, s, {1}).empty());    // inside: not flooded from
     EXPECT_TRUE(hexesOutsideSurface(row, s, {}).empty());
     EXPECT_EQ(hexesOutsideSurface(row, s, {0, 3, 99, -1}), (std::vector<int>{2, 3}));  // out of range ignored
+}
+
+TEST(FoldedBoundary, RemoveHexesKeepsOrderAndReportsTheExposedVertices) {
+    HexMesh row = cubeRow();
+    // Hex 1 (x from 1 to 2): every vertex is still used; the quads x = 1 and x = 2 are exposed.
+    EXPECT_EQ(removeHexes(row, {1, 1, 7, -2}), (std::vector<int>{1, 2, 6, 7, 11, 12, 16, 17}));
+    ASSERT_EQ(row.hexes.size(), 3u);
+    EXPECT_EQ(row.vertices.size(), 20u);
+    EXPECT_EQ(row.hexes[1], cubeRow().hexes[2]);
+    // The last hex: the 4 vertices at x = 4 go, those at x = 3 are exposed (new indices).
+    row = cubeRow();
+    EXPECT_EQ(removeHexes(row, {3}), (std::vector<int>{3, 7, 11, 15}));
+    EXPECT_EQ(row.hexes.size(), 3u);
+    EXPECT_EQ(row.vertices.size(), 16u);
+    EXPECT_EQ(row.vertices[15], Vec3d(3, 1, 1));
+    EXPECT_EQ(row.hexes[0][7], 12);  // (0, 1, 1): (1 * 2 + 1) * 4 + 0 after the removal
+    row.polyhedra.push_back(Polyhedron{});
+    EXPECT_THROW(removeHexes(row, {0}), std::invalid_argument);
+}
+
+TEST(FoldedBoundary, PillowRemovesAnInvalidFlapOutsideTheSurface) {
+    const HexMesh input = rowWithInvalidFlap();
+    std::array<Vec3d, 8> flap;
+    for (std::size_t k = 0; k < 8; ++k) flap[k] = input.vertices[static_cast<std::size_t>(input.hexes[2][k])];
+    ASSERT_GT(hexScaledJacobian(flap), 0.0);                     // positive at the corners,
+    ASSERT_EQ(classifyHexValidity(flap), HexValidity::Invalid);  // negative inside
+    const TriangleSurface surface = box();
+    EXPECT_EQ(hexesOutsideSurface(input, surface, {2}), (std::vector<int>{2}));
+
+    HexMesh results[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+        HexMesh m = input;
+        OptimizeOptions o;
+        o.pillow = true;
+        o.threads = threads;
+        const OptimizeReport r = optimizeHexMesh(m, o, &surface);
+        EXPECT_TRUE(r.success) << r.message;
+        EXPECT_EQ(r.trimmed_hexes, 1);
+        EXPECT_EQ(r.pillowed_hexes, 10);  // the 10 boundary quads of the two cubes
+        EXPECT_EQ(r.hexes, 12);
+        EXPECT_EQ(m.hexes.size(), 12u);
+        EXPECT_EQ(m.vertices.size(), 24u);  // 12 of the cubes and one copy of each
+        EXPECT_EQ(r.invalid_before, 1);
+        EXPECT_EQ(r.invalid_after, 0);
+        EXPECT_EQ(HexExTest::notCertifiedValid(m), 0);
+        EXPECT_LE(r.max_surface_distance, 1e-9);
+        results[threads - 1] = m;
+    }
+    EXPECT_EQ(results[0].vertices, results[1].vertices);
+    EXPECT_EQ(results[0].hexes, results[1].hexes);
 }

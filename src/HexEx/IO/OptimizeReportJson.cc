@@ -56,6 +56,7 @@ std::string optimizeReportToJson(const OptimizeReport& r, int indent) {
     num("seconds", r.seconds);
     count("pillowed_hexes", r.pillowed_hexes);
     count("pillow_vertices", r.pillow_vertices);
+    count("trimmed_hexes", r.trimmed_hexes);
     num("min_scaled_jacobian_pillowed", r.min_scaled_jacobian_pillowed);
     count("pillow_invalid", r.pillow_invalid);
     key("reached_target"), out << (r.reached_target ? "true" : "false");

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace HexEx {
@@ -127,6 +129,44 @@ std::vector<int> hexesOutsideSurface(const HexMesh& mesh, const TriangleSurface&
     for (std::size_t c = 0; c < nh; ++c)
         if (out[c]) result.push_back(static_cast<int>(c));
     return result;
+}
+
+std::vector<int> removeHexes(HexMesh& mesh, const std::vector<int>& hexes) {
+    if (!mesh.polyhedra.empty())
+        throw std::invalid_argument("removeHexes: the mesh has " + std::to_string(mesh.polyhedra.size()) + " polyhedra");
+    const std::size_t nh = mesh.hexes.size(), nv = mesh.vertices.size();
+    std::vector<char> gone(nh, 0);
+    for (const int c : hexes)
+        if (c >= 0 && static_cast<std::size_t>(c) < nh) gone[static_cast<std::size_t>(c)] = 1;
+    std::vector<char> exposed(nv, 0);
+    const std::vector<FaceKey> faces = sortedFaces(mesh);
+    for (std::size_t i = 0; i + 1 < faces.size(); ++i)
+        if (faces[i].key == faces[i + 1].key &&
+            gone[static_cast<std::size_t>(faces[i].hex)] != gone[static_cast<std::size_t>(faces[i + 1].hex)])
+            for (const int v : faces[i].key) exposed[static_cast<std::size_t>(v)] = 1;
+    std::vector<int> remap(nv, -1);
+    std::size_t kept = 0;
+    for (std::size_t c = 0; c < nh; ++c)
+        if (!gone[c])
+            for (const int v : mesh.hexes[c]) remap[static_cast<std::size_t>(v)] = 0;
+    std::vector<Vec3d> vertices;
+    for (std::size_t v = 0; v < nv; ++v)
+        if (remap[v] == 0) {
+            remap[v] = static_cast<int>(vertices.size());
+            vertices.push_back(mesh.vertices[v]);
+        }
+    for (std::size_t c = 0; c < nh; ++c) {
+        if (gone[c]) continue;
+        auto h = mesh.hexes[c];
+        for (auto& v : h) v = remap[static_cast<std::size_t>(v)];
+        mesh.hexes[kept++] = h;
+    }
+    mesh.hexes.resize(kept);
+    mesh.vertices = std::move(vertices);
+    std::vector<int> out;
+    for (std::size_t v = 0; v < nv; ++v)
+        if (exposed[v] && remap[v] >= 0) out.push_back(remap[v]);
+    return out;
 }
 
 } // namespace HexEx

@@ -15,7 +15,12 @@
 /// ```
 /// std::vector<int> d = HexEx::boundaryDoublets(mesh);
 /// std::vector<int> flap = HexEx::hexesOutsideSurface(mesh, surface, {bad_hex});
+/// std::vector<int> exposed = HexEx::removeHexes(mesh, flap);
 /// ```
+///
+/// OptimizeOptions::pillow uses them: when hexes that are not certified valid belong to a
+/// flap outside the input surface, the flap is removed, the whole boundary gets the layer
+/// and the exposed vertices are put on the surface before the untangler runs.
 
 #include "../Mesh/HexMesh.hh"
 #include "TriangleSurface.hh"
@@ -39,5 +44,13 @@ double windingNumber(const TriangleSurface& surface, const Vec3d& p);
 /// hexes: the seeds that are outside, and the outside hexes reached from them across shared
 /// quads. In increasing order. A seed out of range is ignored.
 std::vector<int> hexesOutsideSurface(const HexMesh& mesh, const TriangleSurface& surface, const std::vector<int>& seeds);
+
+/// Removes the hexes @p hexes (indices, any order, duplicates and out-of-range ones ignored)
+/// from @p mesh; vertices that no remaining hex uses are dropped, the others and the hexes
+/// keep their order. Returns the new indices of the vertices of the quads that a removed hex
+/// shared with a kept one (the boundary that the removal exposes), in increasing order.
+/// The mesh must be all-hex (polyhedra are left as they are and not renumbered: throws
+/// std::invalid_argument if it has any).
+std::vector<int> removeHexes(HexMesh& mesh, const std::vector<int>& hexes);
 
 } // namespace HexEx

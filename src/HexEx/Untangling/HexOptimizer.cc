@@ -6,6 +6,8 @@
 
 #include "../Core/Parallel.hh"
 #include "BoundaryPillowing.hh"
+#include "FoldedBoundary.hh"
+#include "SurfaceProjection.hh"
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexMeshQuality.hh"
 #include "../Mesh/HexValidity.hh"
@@ -731,12 +733,46 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
                 rep.message = "pillowing undone: " + std::to_string(ur.invalid_after + ur.undecided_after) +
                               " hexes were still not certified valid after untangling the layer";
                 mesh = input;
-                rep.pillowed_hexes = rep.pillow_vertices = 0;
+                rep.pillowed_hexes = rep.pillow_vertices = rep.trimmed_hexes = 0;
                 return false;
             };
-            const PillowReport pr = pillowBoundary(mesh, po);
+            // A flap of hexes outside the surface (a fold of the map, FoldedBoundary.hh) that
+            // holds hexes not certified valid is removed; the whole boundary then gets the
+            // layer, and the vertices that the removal exposed go onto the surface (the layer
+            // takes up the move, the old hexes stay as they were).
+            std::vector<int> exposed;
+            if (invalid_input > 0 && surface != nullptr && options.boundary == BoundaryMode::Surface &&
+                mesh.polyhedra.empty()) {
+                std::vector<int> seeds;
+                const std::vector<HexValidity> validity = hexValidities(mesh, options.threads);
+                for (std::size_t c = 0; c < validity.size(); ++c)
+                    if (validity[c] != HexValidity::Valid) seeds.push_back(static_cast<int>(c));
+                const std::vector<int> flap = hexesOutsideSurface(mesh, *surface, seeds);
+                if (!flap.empty() && flap.size() < mesh.hexes.size()) {
+                    exposed = removeHexes(mesh, flap);
+                    rep.trimmed_hexes = static_cast<long>(flap.size());
+                    po.skip_patch_angle_deg = 180;
+                }
+            }
+            PillowReport pr = pillowBoundary(mesh, po);
+            if (pr.success && !exposed.empty()) {
+                // Boundary vertices keep their indices in the layered mesh.
+                const SurfaceProjection proj(*surface, options.feature_angle_deg);
+                if (proj.hasSurface()) {
+                    for (const int v : exposed) {
+                        Vec3d& p = mesh.vertices[static_cast<std::size_t>(v)];
+                        p = proj.closestOnSurface(p);
+                    }
+                    pr.invalid_after = 0;
+                    for (const auto v : hexValidities(mesh, options.threads)) pr.invalid_after += v != HexValidity::Valid;
+                }
+            }
             if (!pr.success) {
                 rep.message = pr.message;
+                if (rep.trimmed_hexes > 0) {
+                    mesh = input;
+                    rep.trimmed_hexes = 0;
+                }
             } else {
                 rep.pillowed_hexes = pr.hexes_added;
                 rep.pillow_vertices = pr.vertices_added;

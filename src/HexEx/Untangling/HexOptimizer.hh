@@ -109,6 +109,10 @@ struct OptimizeReport {
     long pillow_vertices = 0;                ///< vertices added by the pillowing (one per boundary vertex)
     double min_scaled_jacobian_pillowed = 0; ///< worst SJ right after the pillowing (and the untangling it may need)
     long pillow_invalid = 0;                 ///< hexes not certified valid right after the pillowing (the untangler then runs)
+    /// Hexes removed before the pillowing: a flap outside the surface that held hexes not
+    /// certified valid (hexesOutsideSurface(), FoldedBoundary.hh); `hexes` is then
+    /// input - trimmed_hexes + pillowed_hexes. 0 without OptimizeOptions::pillow.
+    long trimmed_hexes = 0;
     bool success = true;                     ///< false if the input was refused (see message)
     std::string message;                     ///< why the input was refused, or notes; empty if none
 };

@@ -15,6 +15,9 @@ void printOptimizeReport(std::ostream& os, const HexEx::OptimizeReport& r) {
     os << "optimize: scaled Jacobian min " << r.min_scaled_jacobian_before << " -> " << r.min_scaled_jacobian_after
        << ", mean " << r.mean_scaled_jacobian_before << " -> " << r.mean_scaled_jacobian_after << " (" << r.hexes
        << " hexes)\n";
+    if (r.trimmed_hexes > 0)
+        os << "optimize: removed " << r.trimmed_hexes << " hexes outside the input surface (a fold of the map) "
+           << "before the layer\n";
     if (r.pillowed_hexes > 0)
         os << "optimize: pillowed: " << r.pillowed_hexes << " hexes and " << r.pillow_vertices
            << " vertices added along the boundary (min " << r.min_scaled_jacobian_pillowed << " after, "
