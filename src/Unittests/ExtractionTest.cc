@@ -287,6 +287,27 @@ TEST(ExtractImplicitCells, SameMeshWithAndWithoutDarts) {
     }
 }
 
+TEST(ExtractImplicitCells, SameMeshOnAnyThreadCount) {
+    // Valence-6 cylinder of radius and height 12: enough darts and occurrences for the vertex
+    // classes' unions to run in parallel chunks; the mesh must be the same on 1, 2 and 3 threads.
+    auto pm = generateCylinder(6, 12, 12, 1, 1);
+    pm.mesh.build_adjacency();
+    ExtractionOptions o;
+    o.threads = 1;
+    HexMesh one;
+    const auto r = extractHexMesh(pm, one, o);
+    ASSERT_TRUE(r.valid_all_hex) << r.validation.summary();
+    EXPECT_GT(r.darts.implicit_cells, 0);
+    EXPECT_EQ(r.output.hexes, 6L * 144 * 12);
+    for (int threads : {2, 3}) {
+        o.threads = threads;
+        HexMesh m;
+        extractHexMesh(pm, m, o);
+        EXPECT_EQ(m.hexes, one.hexes) << threads << " threads";
+        EXPECT_EQ(m.vertices, one.vertices) << threads << " threads";
+    }
+}
+
 TEST(ExtractImplicitCells, CellsOnTetFacesAndBoundary) {
     // One cube of tets, 8^3 grid cells: cells touching the tets' interior faces (on one
     // side) and the boundary are implicit too; their corners are joined across faces.

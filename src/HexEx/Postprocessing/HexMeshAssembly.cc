@@ -3,7 +3,7 @@
 #include "VertexPreimageChoice.hh"
 
 #include "../Core/Parallel.hh"
-#include "../Core/UnionFind.hh"
+#include "../Core/ConcurrentUnionFind.hh"
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
@@ -40,6 +40,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     int nv = 0;
     std::vector<int> vlabel;
     std::vector<int> occLabel;
+    std::vector<std::pair<int, long>> dartless;  // implicit cells: (class without darts, its first occurrence)
     long nq = 0;
     if (!implicit) {
         // Vertex and quad orbits are independent labellings.
@@ -53,85 +54,95 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // Union-find over corner orbits (<alpha_1, alpha_2>, from the validator: 6 darts
         // each) and occurrences: corners joined over alpha_3 and with the occurrences their
         // darts sit on or link to. The same classes as over darts, with 6x fewer elements.
+        // The unions run in parallel chunks of darts (the classes do not depend on the order).
         const std::vector<int>& corner = labels.corner;
         const int nk = static_cast<int>(labels.corner_size.size());
-        UnionFind uf(static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc));
+        ConcurrentUnionFind uf(static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc));
         std::vector<char> used(static_cast<std::size_t>(nocc), 0);
+        auto use = [&](int o) { __atomic_store_n(&used[static_cast<std::size_t>(o)], char(1), __ATOMIC_RELAXED); };
         const std::vector<int>& dartOcc = implicit->dart_occurrence;
-        // The darts of one grid point of a tet (consecutive) share their occurrence: each of
-        // their corners is joined with it once (the last few corners joined with the
-        // current occurrence are remembered).
-        int lastOcc = -1;
-        int joined[8];
-        int nJoined = 0;
-        for (std::size_t d = 0; d < nd; ++d) {
-            if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
-            const int k = corner[d];
-            const int d3 = a(static_cast<int>(d), 3);
-            // Partners on the same occurrence are joined through it anyway.
-            if (d3 != static_cast<int>(d) && (dartOcc[d] < 0 || dartOcc[d] != dartOcc[static_cast<std::size_t>(d3)]))
-                uf.unite(k, corner[static_cast<std::size_t>(d3)]);
-            const int o = dartOcc[d];
-            if (o >= 0) {
-                if (o != lastOcc) {
-                    lastOcc = o;
-                    nJoined = 0;
-                    used[static_cast<std::size_t>(o)] = 1;
+        const int ufChunks = nd + static_cast<std::size_t>(nocc) >= 16384 ? std::max(1, threads) : 1;
+        parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
+            // The darts of one grid point of a tet (consecutive) share their occurrence: each
+            // of their corners is joined with it once (the last few corners joined with the
+            // current occurrence are remembered).
+            int lastOcc = -1;
+            int joined[8];
+            int nJoined = 0;
+            for (std::size_t d = d0; d < d1; ++d) {
+                if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
+                const int k = corner[d];
+                const int d3 = a(static_cast<int>(d), 3);
+                // Partners on the same occurrence are joined through it anyway.
+                if (d3 != static_cast<int>(d) && (dartOcc[d] < 0 || dartOcc[d] != dartOcc[static_cast<std::size_t>(d3)]))
+                    uf.unite(k, corner[static_cast<std::size_t>(d3)]);
+                const int o = dartOcc[d];
+                if (o >= 0) {
+                    if (o != lastOcc) {
+                        lastOcc = o;
+                        nJoined = 0;
+                        use(o);
+                    }
+                    if (std::find(joined, joined + nJoined, k) == joined + nJoined) {
+                        uf.unite(k, nk + o);
+                        if (nJoined < 8) joined[nJoined++] = k;
+                    }
                 }
-                if (std::find(joined, joined + nJoined, k) == joined + nJoined) {
-                    uf.unite(k, nk + o);
-                    if (nJoined < 8) joined[nJoined++] = k;
+                const int o3 = implicit->alpha3_occurrence[d];
+                if (o3 >= 0) {
+                    uf.unite(k, nk + o3);
+                    use(o3);
                 }
             }
-            const int o3 = implicit->alpha3_occurrence[d];
-            if (o3 >= 0) {
-                uf.unite(k, nk + o3);
-                used[static_cast<std::size_t>(o3)] = 1;
-            }
-        }
-        for (const auto& jo : implicit->joined_occurrences) uf.unite(nk + jo.first, nk + jo.second);
-        for (const auto& c : implicit->cells)
-            for (int o : c) used[static_cast<std::size_t>(o)] = 1;
-        // Labels by first appearance; the root's slot in parent is reused for its label
-        // (encoded as -2 - label) once every class is final.
-        vlabel.assign(nd, -1);
-        occLabel.assign(static_cast<std::size_t>(nocc), -1);
+        });
+        const auto& jo = implicit->joined_occurrences;
+        parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i) uf.unite(nk + jo[i].first, nk + jo[i].second);
+        });
+        parallelChunks(implicit->cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i)
+                for (int o : implicit->cells[i]) use(o);
+        });
         // Flatten (parent = root) the elements that get a label: the corners and the used
         // occurrences (most box points of a large tet lie outside its image and are never used).
-        for (int x = 0; x < nk; ++x) uf.find(x);
-        for (long o = 0; o < nocc; ++o)
-            if (used[static_cast<std::size_t>(o)]) uf.find(nk + static_cast<int>(o));
+        const std::size_t nElements = static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc);
+        auto labelled = [&](std::size_t x) { return x < static_cast<std::size_t>(nk) || used[x - static_cast<std::size_t>(nk)] != 0; };
+        parallelChunks(nElements, ufChunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t x = b; x < e; ++x)
+                if (labelled(x)) uf.store(static_cast<int>(x), uf.rootOf(static_cast<int>(x)));
+        });
+        // Labels by first appearance (alive darts in order, then used occurrences in order);
+        // the root's slot in parent is reused for its label (encoded as -2 - label).
+        vlabel.assign(nd, -1);
+        occLabel.assign(static_cast<std::size_t>(nocc), -1);
+        std::vector<int>& parent = uf.parent;
         auto labelOf = [&](int x) {
-            const int r = uf.parent[static_cast<std::size_t>(x)];
+            const int r = parent[static_cast<std::size_t>(x)];
             if (r < 0) return -2 - r;  // x is a root that has a label already
-            int& slot = uf.parent[static_cast<std::size_t>(r)];
+            int& slot = parent[static_cast<std::size_t>(r)];
             if (slot < 0) return -2 - slot;
             slot = -2 - nv;
             return nv++;
         };
         for (std::size_t d = 0; d < nd; ++d)
             if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(corner[d]);
-        for (long o = 0; o < nocc; ++o)
-            if (used[static_cast<std::size_t>(o)]) occLabel[static_cast<std::size_t>(o)] = labelOf(nk + static_cast<int>(o));
+        // Classes first labelled here have no darts; they are numbered in order from nvDarts.
+        const int nvDarts = nv;
+        for (long o = 0; o < nocc; ++o) {
+            if (!used[static_cast<std::size_t>(o)]) continue;
+            const int l = labelOf(nk + static_cast<int>(o));
+            occLabel[static_cast<std::size_t>(o)] = l;
+            if (l == nvDarts + static_cast<int>(dartless.size())) dartless.emplace_back(l, o);
+        }
     }
     if (stats.violations) describeViolations(g, vlabel, *stats.violations);
     VertexCandidates candidates;
     out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads, &candidates);
     if (implicit) {
-        // Classes without darts: position of their occurrence.
-        std::vector<char> hasDart(static_cast<std::size_t>(nv), 0);
-        for (int l : vlabel)
-            if (l >= 0) hasDart[static_cast<std::size_t>(l)] = 1;
-        std::vector<std::pair<int, long>> todo;  // (class, its first occurrence)
-        for (long o = 0; o < nocc; ++o) {
-            const int l = occLabel[static_cast<std::size_t>(o)];
-            if (l >= 0 && !hasDart[static_cast<std::size_t>(l)]) {
-                todo.emplace_back(l, o);
-                hasDart[static_cast<std::size_t>(l)] = 1;
-            }
-        }
-        parallelChunks(todo.size(), threads, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t k = b; k < e; ++k) out.vertices[static_cast<std::size_t>(todo[k].first)] = implicit->position(todo[k].second);
+        // Classes without darts: position of their first occurrence.
+        parallelChunks(dartless.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t k = b; k < e; ++k)
+                out.vertices[static_cast<std::size_t>(dartless[k].first)] = implicit->position(dartless[k].second);
         });
     }
 
