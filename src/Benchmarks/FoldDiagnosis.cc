@@ -6,16 +6,16 @@
 ///  - the boundary doublets (boundaryDoublets()),
 ///  - the hexes outside the input volume reached from the extraction's not-valid hexes
 ///    (hexesOutsideSurface(), centre winding number below 1/2),
-///  - an experiment: those hexes removed from the extraction, the newly exposed boundary
-///    vertices put on the closest point of the surface, then untangled; the not-valid counts.
-/// The experiment is a measurement, not a library feature (see Documentation/algorithm.md,
-/// boundary pillowing: "The fold on S1 x2").
+///  - an experiment: those hexes removed from the extraction (removeHexes()), the newly
+///    exposed boundary vertices put on the closest point of the surface, then untangled
+///    without a boundary layer; the not-valid counts. (OptimizeOptions::pillow does the same
+///    with the layer in between; see Documentation/algorithm.md, boundary pillowing: "The
+///    fold on S1 x2".)
 ///
 /// Usage: fold_diagnosis MAP.hexex [threads]   (default 2 threads)
 
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
-#include <HexEx/Mesh/HexArcs.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/FoldedBoundary.hh>
 #include <HexEx/Untangling/SurfaceProjection.hh>
@@ -26,7 +26,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <map>
 #include <string>
 #include <vector>
 
@@ -46,43 +45,6 @@ void printHexes(const char* what, const HexEx::HexMesh& m, const std::vector<int
     const auto sj = HexEx::scaledJacobians(m);
     std::printf("%s: %zu\n", what, hexes.size());
     for (const int c : hexes) std::printf("  hex %d  scaled Jacobian %.4g\n", c, sj[static_cast<std::size_t>(c)]);
-}
-
-/// Removes the hexes @p gone from @p m (unused vertices dropped, order kept); returns per
-/// remaining vertex whether it is on a quad between a removed and a kept hex.
-std::vector<char> removeHexes(HexEx::HexMesh& m, const std::vector<int>& gone_list) {
-    std::vector<char> gone(m.hexes.size(), 0);
-    for (const int c : gone_list) gone[static_cast<std::size_t>(c)] = 1;
-    std::map<std::array<int, 4>, std::vector<int>> faces;
-    for (std::size_t c = 0; c < m.hexes.size(); ++c)
-        for (const auto& f : HexEx::HexArcs::kHexFaces) {
-            std::array<int, 4> k{};
-            for (std::size_t i = 0; i < 4; ++i) k[i] = m.hexes[c][static_cast<std::size_t>(f[i])];
-            std::sort(k.begin(), k.end());
-            faces[k].push_back(static_cast<int>(c));
-        }
-    std::vector<char> exposed_old(m.vertices.size(), 0);
-    for (const auto& kv : faces)
-        if (kv.second.size() == 2 && gone[static_cast<std::size_t>(kv.second[0])] != gone[static_cast<std::size_t>(kv.second[1])])
-            for (const int v : kv.first) exposed_old[static_cast<std::size_t>(v)] = 1;
-    HexEx::HexMesh out;
-    std::vector<int> remap(m.vertices.size(), -1);
-    std::vector<char> exposed;
-    for (std::size_t c = 0; c < m.hexes.size(); ++c) {
-        if (gone[c]) continue;
-        auto h = m.hexes[c];
-        for (auto& v : h) {
-            if (remap[static_cast<std::size_t>(v)] < 0) {
-                remap[static_cast<std::size_t>(v)] = static_cast<int>(out.vertices.size());
-                out.vertices.push_back(m.vertices[static_cast<std::size_t>(v)]);
-                exposed.push_back(exposed_old[static_cast<std::size_t>(v)]);
-            }
-            v = remap[static_cast<std::size_t>(v)];
-        }
-        out.hexes.push_back(h);
-    }
-    m = std::move(out);
-    return exposed;
 }
 
 } // namespace
@@ -121,19 +83,19 @@ int main(int argc, char** argv) {
 
         // Experiment: remove them, put the exposed boundary vertices on the surface, untangle.
         HexEx::HexMesh trimmed = extracted;
-        const std::vector<char> exposed = removeHexes(trimmed, outside);
+        const std::vector<int> exposed = HexEx::removeHexes(trimmed, outside);
         const HexEx::SurfaceProjection proj(surface, uo.feature_angle_deg);
         double moved_max = 0;
         long moved = 0;
-        for (std::size_t v = 0; v < exposed.size(); ++v) {
-            if (!exposed[v]) continue;
-            const HexEx::Vec3d q = proj.closestOnSurface(trimmed.vertices[v]);
-            const double d = (q - trimmed.vertices[v]).norm();
+        for (const int v : exposed) {
+            HexEx::Vec3d& p = trimmed.vertices[static_cast<std::size_t>(v)];
+            const HexEx::Vec3d q = proj.closestOnSurface(p);
+            const double d = (q - p).norm();
             if (d > 0) {
                 ++moved;
                 moved_max = std::max(moved_max, d);
             }
-            trimmed.vertices[v] = q;
+            p = q;
         }
         std::printf("trimmed: %zu hexes; %ld exposed vertices put on the surface (moved up to %.4g)\n",
                     trimmed.hexes.size(), moved, moved_max);
