@@ -114,6 +114,15 @@ struct ExtractionReport {
         long broken_cells_after_annihilation = 0; ///< hex cells the annihilation left broken, after the retries
         long reconnected_cells = 0;   ///< hex cells formed by re-linking the darts of broken cells (reconnectBrokenCells())
         long unreconnected_cells = 0; ///< broken cells whose darts could not be re-linked into hexes (left as they were)
+        /// A group of broken cells left as they were (darts joined by any link).
+        struct Unreconnected {
+            int dart = -1;         ///< its smallest dart
+            int tet = -1;          ///< that dart's tet
+            long darts = 0;        ///< darts of the group (a multiple of 48 if none is missing)
+            long broken_cells = 0; ///< broken cells (<alpha_0, alpha_1, alpha_2> orbits that are not hexes) in it
+            std::string reason;    ///< why no reconnection was found
+        };
+        std::vector<Unreconnected> unreconnected;  ///< the groups left (at most 8, in order of their smallest dart)
     } darts;  ///< dart statistics
     /// Edge arcs and face patches (only with ExtractionOptions::arcs).
     struct Arcs {

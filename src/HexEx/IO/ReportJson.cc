@@ -139,6 +139,16 @@ std::string reportToJson(const ExtractionReport& r, const ReportExtras& x) {
                 w.num("reconnected_cells", d.reconnected_cells);
                 w.num("unreconnected_cells", d.unreconnected_cells);
             }
+            if (!d.unreconnected.empty()) {  // the groups left, each named by its smallest dart (at most 8)
+                std::string list = "[";
+                for (std::size_t k = 0; k < d.unreconnected.size(); ++k) {
+                    const auto& u = d.unreconnected[k];
+                    list += std::string(k ? "," : "") + "\n      {\"dart\": " + std::to_string(u.dart) + ", \"tet\": " + std::to_string(u.tet) +
+                            ", \"darts\": " + std::to_string(u.darts) + ", \"broken_cells\": " + std::to_string(u.broken_cells) +
+                            ", \"reason\": " + jsonQuote(u.reason) + "}";
+                }
+                w.raw("unreconnected", list + "\n    ]");
+            }
         }));
         if (r.arcs.edges > 0 || r.arcs.faces > 0) {
             // Only with ExtractionOptions::arcs (hexex extract --edge-arcs / --face-patches).

@@ -51,10 +51,14 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         if (!as.repaired) out.reconnection = ReconnectionStats();  // a failed attempt during the retries
         if (in.retry.enabled && as.broken_cells_after > 0 && in.darts && !as.repaired) {
             out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components);
-            for (const auto& u : out.reconnection.unresolved)
+            for (std::size_t k = 0; k < out.reconnection.unresolved.size(); ++k) {
+                const auto& u = out.reconnection.unresolved[k];
+                const auto& n = out.reconnection.unresolved_size[k];
+                out.unreconnected.push_back({u.first, in.darts->darts[static_cast<std::size_t>(u.first)].tet, n.first, n.second, u.second});
                 out.warnings.push_back("broken hex cells at dart " + std::to_string(u.first) + " (tet " +
                                        std::to_string(in.darts->darts[static_cast<std::size_t>(u.first)].tet) +
                                        ") could not be reconnected: " + u.second);
+            }
         }
     } else {
         out.remaining_anti = in.anti;

@@ -6,6 +6,7 @@
 /// become free links), then completes partially connected quads.
 
 #include "../Extraction/ConnectionTracing.hh"
+#include "../Extraction/ExtractionReport.hh"
 #include "../GMap/GMap.hh"
 #include "../Postprocessing/DartAnnihilation.hh"
 #include "../Postprocessing/DartReconnection.hh"
@@ -49,6 +50,7 @@ struct AnnihilateOutput {
     /// possible (reconnectBrokenCells(); only with retries and when cells are broken).
     ReconnectionStats reconnection;
     std::vector<std::string> warnings;  ///< warnings of this stage (broken cells left unreconnected)
+    std::vector<ExtractionReport::Darts::Unreconnected> unreconnected;  ///< the groups of broken cells left (ReconnectionStats::unresolved)
 };
 
 /// Annihilates (if merge) and numbers the surviving darts in order.

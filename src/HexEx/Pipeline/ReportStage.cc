@@ -29,6 +29,7 @@ void addToReport(const AnnihilateOutput& out, ExtractionReport& rep) {
     rep.darts.broken_cells_after_annihilation = out.stats.broken_cells_after;
     rep.darts.reconnected_cells = out.reconnection.reconnected_cells;
     rep.darts.unreconnected_cells = out.reconnection.unresolved_cells;
+    rep.darts.unreconnected = out.unreconnected;
     appendWarnings(out.warnings, rep);
 }
 

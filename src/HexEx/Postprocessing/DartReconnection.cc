@@ -355,7 +355,10 @@ ReconnectionStats reconnectBrokenCells(std::vector<std::array<int, 4>>& alpha, c
             st.reconnected_cells += formed;
         } else {
             st.unresolved_cells += cellsBefore;
-            if (st.unresolved.size() < 8) st.unresolved.emplace_back(group.front(), why);
+            if (st.unresolved.size() < 8) {
+                st.unresolved.emplace_back(group.front(), why);
+                st.unresolved_size.emplace_back(static_cast<long>(group.size()), cellsBefore);
+            }
         }
     }
     return st;

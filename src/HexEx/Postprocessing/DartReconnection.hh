@@ -24,6 +24,8 @@ struct ReconnectionStats {
     long alpha3_only_groups = 0;  ///< groups of broken cells that are hexes once alpha_3 is ignored (left to the face repair)
     /// Per group of broken cells left as they were: its smallest dart and why (at most 8 entries).
     std::vector<std::pair<int, std::string>> unresolved;
+    /// For each entry of unresolved: the group's darts and its broken cells.
+    std::vector<std::pair<long, long>> unresolved_size;
 };
 
 /// Finds the broken hex cells among the alive darts (countDefectiveHexCells() over all

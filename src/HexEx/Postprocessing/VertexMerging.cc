@@ -337,7 +337,21 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             // surviving and removed regular darts' positions is such a vertex, it is the only
             // preferred candidate.
             Vec3d atVertex(0, 0, 0);
-            const bool hasVertex = onlyAtMeshVertex(allDist, true, atVertex);
+            bool hasVertex = onlyAtMeshVertex(allDist, true, atVertex);
+            // Where no surviving or removed regular dart sits at a vertex of the tet mesh and the
+            // survivors are split over several positions with no majority, the annihilated anti
+            // darts may decide: every tet at the proper preimage can be flipped, and then only
+            // fold copies survive (pig folded by 1.2 and 1.5, seed 29: 9 of 10 anti darts at the
+            // source position, a boundary vertex of the tet mesh, the 18 surviving darts at two
+            // boundary and two interior copies, 5/7/2/4). If exactly one of their positions is a
+            // boundary vertex of the tet mesh, it is the only preferred candidate. Not where the
+            // survivors agree (one position, or a majority): on S1 perturbed by 0.7 two such
+            // vertices have anti darts at a tet-mesh vertex, and their output stays as it was.
+            if (!hasVertex && !flippedPts.empty() && !hasMajor && allDist.size() > 1) {
+                bool anyAtVertex = false;
+                for (const Vec3d& p : allDist) anyAtVertex = anyAtVertex || atMeshVertex(p, false);
+                if (!anyAtVertex) hasVertex = onlyAtMeshVertex(distinctPositions(flippedPts, tol), true, atVertex);
+            }
             if (dist.size() == 1 && extra.empty() && !(hasMajor && (major - dist[0]).norm() > tol && takeMajor(dist[0])) &&
                 !(hasVertex && (atVertex - dist[0]).norm() > tol)) {
                 out[l] = dist[0];
