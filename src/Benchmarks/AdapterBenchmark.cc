@@ -16,7 +16,10 @@
 /// built with OpenVolumeMesh, ovm (tetrahedral kernel with the halfface map -> hexahedral
 /// kernel, through OvmTetMesh and OvmHexOutput) and ovm-native (the one-call overload
 /// extractHexMesh(tetMesh, halffaceProperty, hexMesh), timed stage by stage through the
-/// same detail functions it calls). Run one measurement per process:
+/// same detail functions it calls) and ovm-native-split (the same with the hex mesh's
+/// bottom-up incidences turned off before the writing, so that cpu_write_s is HexEx's own
+/// writing, and OpenVolumeMesh's enable_bottom_up_incidences() afterwards timed apart as
+/// cpu_incidences_s: the two parts of ovm-native's cpu_write_s). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
 /// `key=value` pairs; building the input in the user's structure is not timed (input_mb:
 /// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
@@ -99,6 +102,7 @@ struct Timings {
     double write = 0;    ///< fromHexMesh() into the output structure
     double total = 0;    ///< all of them
     double cpu_copy = 0, cpu_extract = 0, cpu_write = 0;  ///< CPU seconds of copy, extract, write
+    double cpu_incidences = 0;  ///< CPU seconds of OpenVolumeMesh's incidence rebuild (ovm-native-split)
 };
 
 /// Runs view -> copy -> extraction -> write-back: @p makeView returns the input view,
@@ -165,7 +169,7 @@ int main(int argc, char** argv) {
         std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube20|cylinder6m|cube8|cylinder6s "
                      "builtin|builtin-provenance|arrays|lcc|lcc-native"
 #ifdef HEXEX_BENCH_OVM
-                     "|ovm|ovm-native"
+                     "|ovm|ovm-native|ovm-native-split"
 #endif
                      "\n";
         return 2;
@@ -244,13 +248,15 @@ int main(int argc, char** argv) {
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
         r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
         hexes = out.cells().size();
-    } else if (path == "ovm-native") {
+    } else if (path == "ovm-native" || path == "ovm-native-split") {
         OvmTets tm;
         HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
         inputMb = rssMb();
         const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
         OvmHexes hexMesh;
+        const bool split = path == "ovm-native-split";
+        if (split) hexMesh.enable_bottom_up_incidences(false);
         r = timeOneCall(
             [&] {
                 return HexEx::detail::ovmToParametrizedTetMesh(
@@ -260,6 +266,11 @@ int main(int argc, char** argv) {
                     0);
             },
             HexEx::OvmHexOutput<OvmHexes>(hexMesh));
+        if (split) {
+            const double c0 = cpuNow();
+            hexMesh.enable_bottom_up_incidences(true);
+            r.cpu_incidences = cpuNow() - c0;
+        }
         hexes = hexMesh.n_cells();
 #endif
     } else {
@@ -267,8 +278,8 @@ int main(int argc, char** argv) {
         return 2;
     }
     std::printf("case=%s path=%s hexes=%zu view_s=%.3f copy_s=%.3f extract_s=%.3f write_s=%.3f total_s=%.3f peak_mb=%.0f "
-                "input_mb=%.0f cpu_copy_s=%.3f cpu_extract_s=%.3f cpu_write_s=%.3f\n",
+                "input_mb=%.0f cpu_copy_s=%.3f cpu_extract_s=%.3f cpu_write_s=%.3f cpu_incidences_s=%.3f\n",
                 c.c_str(), path.c_str(), hexes, r.view, r.copy, r.extract, r.write, r.total, peakMb(), inputMb, r.cpu_copy,
-                r.cpu_extract, r.cpu_write);
+                r.cpu_extract, r.cpu_write, r.cpu_incidences);
     return 0;
 }

@@ -195,6 +195,50 @@ TEST(CgalLccAdapter, NonTetVolumeIsAnInputError) {
     }
 }
 
+TEST(CgalLccAdapter, OpenAndTwoFacedVolumesAreInputErrors) {
+    // The adapter's own closed-tetrahedron check rejects what CGAL's
+    // is_volume_combinatorial_tetrahedron() rejects: a lone triangle (2-free darts) and a
+    // closed volume of two triangles 2-sewn along all three edges.
+    using P = TetLcc::Point;
+    const auto expectRejected = [](const TetLcc& lcc) {
+        EXPECT_FALSE(lcc.is_volume_combinatorial_tetrahedron(lcc.darts().begin()));
+        try {
+            HexEx::LccTetMesh view(lcc);
+            ADD_FAILURE() << "no exception";
+        } catch (const HexEx::InputError& e) {
+            EXPECT_STREQ(e.what(), "LCC volume 0 is not a closed combinatorial tetrahedron");
+        }
+    };
+    TetLcc triangle;
+    triangle.make_triangle(P(0, 0, 0), P(1, 0, 0), P(0, 1, 0));
+    expectRejected(triangle);
+
+    TetLcc pillow;
+    const TetLcc::Dart_handle a = pillow.make_triangle(P(0, 0, 0), P(1, 0, 0), P(0, 1, 0));
+    const TetLcc::Dart_handle b = pillow.make_triangle(P(0, 0, 0), P(0, 1, 0), P(1, 0, 0));
+    int sewn = 0;
+    TetLcc::Dart_handle x = a;
+    for (int i = 0; i < 3; ++i, x = pillow.beta(x, 1)) {
+        TetLcc::Dart_handle y = b;
+        for (int j = 0; j < 3; ++j, y = pillow.beta(y, 1))
+            if (pillow.point(x) == pillow.point(pillow.beta(y, 1)) && pillow.point(y) == pillow.point(pillow.beta(x, 1)) &&
+                pillow.is_sewable<2>(x, y)) {
+                pillow.sew<2>(x, y);
+                ++sewn;
+                break;
+            }
+    }
+    ASSERT_EQ(sewn, 3);
+    EXPECT_EQ(pillow.number_of_darts(), 6u);
+    expectRejected(pillow);
+
+    // A tetrahedron made by CGAL passes both checks.
+    TetLcc tet;
+    tet.make_tetrahedron(P(0, 0, 0), P(1, 0, 0), P(0, 1, 0), P(0, 0, 1));
+    EXPECT_TRUE(tet.is_volume_combinatorial_tetrahedron(tet.darts().begin()));
+    EXPECT_TRUE(HexEx::detail::lccIsClosedTet(tet, tet.darts().begin()));
+}
+
 TEST(CgalLccAdapter, PolyhedraBecomeClosedVolumes) {
     // A square pyramid and a hexahedron sharing the pyramid's base: one 3-sewn quad.
     HexLcc lcc;

@@ -81,13 +81,57 @@ struct IsLcc3<T, std::void_t<typename T::Dart_const_handle, typename T::Vertex_a
                              decltype(T::dimension), decltype(T::ambient_dimension)>>
     : std::bool_constant<T::dimension == 3 && T::ambient_dimension == 3> {};
 
+/// True if the volume of @p d is a closed combinatorial tetrahedron: four distinct
+/// triangles (beta1 cycles of three darts: the face of @p d and the faces 2-sewn to its
+/// darts), each 2-sewn to the three others. The condition of CGAL's
+/// is_volume_combinatorial_tetrahedron(), checked on the volume's 12 darts without the
+/// marks and the queue of CGAL's traversal.
+template <class LCC>
+bool lccIsClosedTet(const LCC& lcc, typename LCC::Dart_const_handle d) {
+    using Dart = typename LCC::Dart_const_handle;
+    Dart faces[4][3];
+    // The face of d, then the faces across its three edges; every dart 1- and 2-sewn.
+    const auto triangle = [&](Dart x, Dart* out) {
+        for (int i = 0; i < 3; ++i) {
+            if (lcc.template is_free<1>(x) || lcc.template is_free<2>(x)) return false;
+            out[i] = x;
+            x = lcc.beta(x, 1);
+        }
+        return x == out[0];
+    };
+    if (!triangle(d, faces[0])) return false;
+    for (int k = 1; k < 4; ++k)
+        if (!triangle(lcc.beta(faces[0][k - 1], 2), faces[k])) return false;
+    const auto faceOf = [&](Dart x) {
+        int found = -1;
+        for (int k = 0; k < 4; ++k)
+            for (int i = 0; i < 3; ++i)
+                if (faces[k][i] == x) {
+                    if (found >= 0) return -2;  // the same dart in two faces: faces not distinct
+                    found = k;
+                }
+        return found;
+    };
+    for (int k = 0; k < 4; ++k) {
+        unsigned neighbours = 0;
+        for (int i = 0; i < 3; ++i) {
+            if (faceOf(faces[k][i]) != k) return false;
+            const int n = faceOf(lcc.beta(faces[k][i], 2));
+            if (n < 0 || n == k) return false;
+            neighbours |= 1u << n;
+        }
+        if (neighbours != (15u & ~(1u << k))) return false;
+    }
+    return true;
+}
+
 /// The four corner darts of the tet volume of @p d (first dart of tet number @p t, for the
 /// error message): the darts of its corners in LccTetMesh's order. Throws InputError if
 /// the volume is not a closed combinatorial tetrahedron.
 template <class LCC>
 std::array<typename LCC::Dart_const_handle, 4> lccTetCornerDarts(const LCC& lcc, typename LCC::Dart_const_handle d,
                                                                  std::size_t t) {
-    if (lcc.template is_free<1>(d) || lcc.template is_free<2>(d) || !lcc.is_volume_combinatorial_tetrahedron(d))
+    if (!lccIsClosedTet(lcc, d))
         throw InputError("LCC volume " + std::to_string(t) + " is not a closed combinatorial tetrahedron");
     return {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
 }

@@ -22,42 +22,95 @@
 namespace HexEx {
 namespace detail {
 
+/// Reads the loop of face @p f of @p mesh (along its halfface 0) into @p out; false if the
+/// face is not a triangle. Reads the edges' stored endpoints (halfedge 2e + 1 is edge e
+/// reversed) instead of building a halfedge per vertex.
+template <class Mesh>
+bool ovmFaceLoop(const Mesh& mesh, const OpenVolumeMesh::FaceHandle& f, OpenVolumeMesh::VertexHandle out[3]) {
+    const std::vector<OpenVolumeMesh::HalfEdgeHandle>& hes = mesh.face(f).halfedges();
+    if (hes.size() != 3) return false;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const auto& e = mesh.edge(hes[i].edge_handle());
+        out[i] = (hes[i].idx() & 1) ? e.to_vertex() : e.from_vertex();
+    }
+    return true;
+}
+
 template <class Mesh>
 void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
                    std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite) {
-    const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
-    const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs = mesh.cell(ch).halffaces();
+    using VH = OpenVolumeMesh::VertexHandle;
+    const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs =
+        mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(c))).halffaces();
     const auto fail = [c](const std::string& why) {
         throw InputError("OpenVolumeMesh cell " + std::to_string(c) + why);
     };
     if (hfs.size() != 4) fail(" has " + std::to_string(hfs.size()) + " halffaces, not a tetrahedron");
-    std::array<std::array<OpenVolumeMesh::VertexHandle, 3>, 4> loops;
+    VH loops[4][3];
     for (std::size_t k = 0; k < 4; ++k) {
         // The face's halfedges run along its halfface 0; halfface 1 is the reversed loop.
-        const std::vector<OpenVolumeMesh::HalfEdgeHandle>& hes = mesh.face(hfs[k].face_handle()).halfedges();
-        if (hes.size() != 3) fail(" has a halfface that is not a triangle");
-        for (std::size_t i = 0; i < 3; ++i) loops[k][i] = mesh.from_vertex_handle(hes[i]);
+        if (!ovmFaceLoop(mesh, hfs[k].face_handle(), loops[k])) fail(" has a halfface that is not a triangle");
         if (hfs[k].idx() & 1) std::swap(loops[k][1], loops[k][2]);
     }
-    cv = {loops[0][0], loops[0][1], loops[0][2], OpenVolumeMesh::VertexHandle()};
-    for (const auto& l : loops)
-        for (const auto& v : l)
-            if (std::find(cv.begin(), cv.end(), v) == cv.end()) {
-                if (cv[3].is_valid()) fail(" spans more than four vertices");
-                cv[3] = v;
+    // q: the first loop, then the first other vertex met; mask[k]: which of q are in loop k.
+    VH q[4] = {loops[0][0], loops[0][1], loops[0][2], VH()};
+    unsigned mask[4] = {0, 0, 0, 0};
+    for (std::size_t k = 0; k < 4; ++k)
+        for (const VH& v : loops[k]) {
+            const unsigned p = v == q[0] ? 0u : v == q[1] ? 1u : v == q[2] ? 2u : 3u;
+            if (p == 3) {
+                if (!q[3].is_valid()) q[3] = v;
+                else if (v != q[3]) fail(" spans more than four vertices");
             }
-    if (!cv[3].is_valid() || cv[0] == cv[1] || cv[1] == cv[2] || cv[0] == cv[2]) fail(" spans fewer than four vertices");
-    const auto inLoop = [&](std::size_t k, const OpenVolumeMesh::VertexHandle& v) {
-        return std::find(loops[k].begin(), loops[k].end(), v) != loops[k].end();
-    };
-    for (int r = 0; r < 3 && inLoop(3, cv[0]); ++r) std::rotate(cv.begin(), cv.begin() + 1, cv.begin() + 3);
+            mask[k] |= 1u << p;
+        }
+    if (!q[3].is_valid() || q[0] == q[1] || q[1] == q[2] || q[0] == q[2]) fail(" spans fewer than four vertices");
+    // Rotate the first three so that corner 0 is the vertex opposite the last halfface.
+    unsigned perm[4] = {0, 1, 2, 3};
+    for (int r = 0; r < 3 && (mask[3] >> perm[0] & 1u); ++r) {
+        const unsigned t = perm[0];
+        perm[0] = perm[1];
+        perm[1] = perm[2];
+        perm[2] = t;
+    }
     for (std::size_t i = 0; i < 4; ++i) {
+        cv[i] = q[perm[i]];
         std::size_t k = 4;
         for (std::size_t j = 0; j < 4; ++j)
-            if (!inLoop(j, cv[i])) k = j;
+            if (!(mask[j] >> perm[i] & 1u)) k = j;
         if (k == 4) fail(": no halfface opposite vertex " + std::to_string(cv[i].idx()));
         opposite[i] = hfs[k];
     }
+}
+
+/// Asks the processor to start loading what ovmTetCorners() will read for cell @p c, one
+/// level of OpenVolumeMesh's indirections per @p stage: 0 the cell's halfface list, 1 its
+/// faces, 2 their halfedge lists, 3 the edges. A hint only (no effect on results); called
+/// ahead of the cells being read, it overlaps the cache misses of consecutive cells.
+template <class Mesh>
+void ovmPrefetchCell(const Mesh& mesh, std::size_t c, int stage) {
+#if defined(__GNUC__)
+    const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs =
+        mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(c))).halffaces();
+    if (stage == 0) {
+        __builtin_prefetch(hfs.data());
+        return;
+    }
+    for (const OpenVolumeMesh::HalfFaceHandle& hf : hfs) {
+        const auto& face = mesh.face(hf.face_handle());
+        if (stage == 1) {
+            __builtin_prefetch(&face);
+        } else if (stage == 2) {
+            __builtin_prefetch(face.halfedges().data());
+        } else {
+            for (const OpenVolumeMesh::HalfEdgeHandle& he : face.halfedges()) __builtin_prefetch(&mesh.edge(he.edge_handle()));
+        }
+    }
+#else
+    (void)mesh;
+    (void)c;
+    (void)stage;
+#endif
 }
 
 /// Copies the tets of @p mesh into the built-in kernel, corners as OvmTetMesh reads them, the
@@ -75,25 +128,35 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     if (nv > kMax || nc > kMax)
         throw InputError("mesh too large: " + std::to_string(nv) + " vertices, " + std::to_string(nc) +
                          " tets (at most " + std::to_string(kMax) + " each)");
+    // Filled once each (reserve + push_back, no zeroing pass) and moved into the kernel.
+    std::vector<Vec3d> positions;
+    std::vector<std::array<VertexHandle, 4>> cells;
     ParametrizedTetMesh pm;
-    pm.mesh.reserve(nv, nc);
-    pm.params.resize(nc);
+    positions.reserve(nv);
+    cells.reserve(nc);
+    pm.params.reserve(nc);
     if (given) givenOut->assign(4 * nc, 0);
     for (std::size_t v = 0; v < nv; ++v) {
         const auto& p = mesh.vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
-        pm.mesh.add_vertex(Vec3d(p[0], p[1], p[2]));
+        positions.emplace_back(p[0], p[1], p[2]);
     }
     std::array<OpenVolumeMesh::VertexHandle, 4> cv;
     std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
     std::array<VertexHandle, 4> h;
+    std::array<Vec3d, 4> u;
     double volume = 0;
+    // Cells are read in order; the records of the next cells are requested ahead, one
+    // indirection level per distance (see ovmPrefetchCell()).
+    constexpr std::size_t kAhead[4] = {16, 12, 8, 4};
     for (std::size_t c = 0; c < nc; ++c) {
+        for (int stage = 0; stage < 4; ++stage)
+            if (c + kAhead[stage] < nc) ovmPrefetchCell(mesh, c + kAhead[stage], stage);
         ovmTetCorners(mesh, c, cv, opposite);
         const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
         for (std::size_t i = 0; i < 4; ++i) {
             h[i] = VertexHandle(cv[i].idx());
-            const auto& u = paramOf(opposite[i], ch, cv[i]);
-            pm.params[c][i] = Vec3d(u[0], u[1], u[2]);
+            const auto& ui = paramOf(opposite[i], ch, cv[i]);
+            u[i] = Vec3d(ui[0], ui[1], ui[2]);
             if (given) {
                 const int r = (*given)[opposite[i]];
                 const bool interior = mesh.incident_cell(mesh.opposite_halfface_handle(opposite[i])).is_valid();
@@ -103,18 +166,20 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
                 (*givenOut)[4 * c + i] = interior ? r : 0;
             }
         }
-        const Vec3d a = pm.mesh.position(h[0]);
-        const Vec3d e1 = pm.mesh.position(h[1]) - a, e2 = pm.mesh.position(h[2]) - a, e3 = pm.mesh.position(h[3]) - a;
+        pm.params.push_back(u);
+        const Vec3d& a = positions[h[0].uidx()];
+        const Vec3d e1 = positions[h[1].uidx()] - a, e2 = positions[h[2].uidx()] - a, e3 = positions[h[3].uidx()] - a;
         volume += e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
                   e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
-        pm.mesh.add_cell(h);
+        cells.push_back(h);
     }
     if (volume < 0)  // stored with outward halffaces: turn every tet the other way
         for (std::size_t c = 0; c < nc; ++c) {
-            pm.mesh.swap_corners(CellHandle(static_cast<int>(c)), 1, 2);
+            std::swap(cells[c][1], cells[c][2]);
             std::swap(pm.params[c][1], pm.params[c][2]);
             if (given) std::swap((*givenOut)[4 * c + 1], (*givenOut)[4 * c + 2]);
         }
+    pm.mesh.assign(std::move(positions), std::move(cells));
     pm.mesh.build_adjacency(threads);
     return pm;
 }
