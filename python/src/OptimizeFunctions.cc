@@ -59,6 +59,7 @@ nb::dict optimizeReportToDict(const HexEx::OptimizeReport& r) {
     d["seconds"] = r.seconds;
     d["pillowed_hexes"] = r.pillowed_hexes;
     d["pillow_vertices"] = r.pillow_vertices;
+    d["trimmed_hexes"] = r.trimmed_hexes;
     d["min_scaled_jacobian_pillowed"] = r.min_scaled_jacobian_pillowed;
     d["pillow_invalid"] = r.pillow_invalid;
     d["reached_target"] = r.reached_target;
