@@ -29,9 +29,9 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         // re-link them; if that leaves none broken, the other orders are not tried.
         AnnihilationRetry retry = in.retry;
         if (retry.enabled && in.darts)
-            retry.repair = [&](const std::vector<int>& changed) {
+            retry.repair = [&](const std::vector<int>& broken) {
                 std::vector<std::pair<int, std::array<int, 4>>> undo;
-                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &changed, &undo);
+                out.reconnection = reconnectBrokenCells(*in.alpha, out.alive, in.darts->darts, in.chart_components, &broken, &undo);
                 const ReconnectionStats& r = out.reconnection;
                 // Groups broken only in alpha_3 are left to the face repair and relinking, as
                 // AnnihilationRetry::keep_alpha3_only leaves them.

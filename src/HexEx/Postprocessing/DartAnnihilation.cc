@@ -134,8 +134,10 @@ private:
         return c;
     }
 
-    /// Broken cells among the cells of the alive darts in @p c.
-    long brokenCells(const std::vector<int>& c) { return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone); }
+    /// Broken cells among the cells of the alive darts in @p c (their darts appended to @p bad if given).
+    long brokenCells(const std::vector<int>& c, std::vector<int>* bad = nullptr) {
+        return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone, bad);
+    }
 
     /// True if every broken cell among those of @p c is a hex once the alpha_3 links of the
     /// broken cells' darts are ignored (crossed or partial quads only, which the face repair
@@ -331,8 +333,10 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
         ++st.retry_runs;
         runVariant(k);
         lastRun = k;
-        const std::vector<int> changed = changedDarts();
-        long now = brokenCells(changed);
+        // The darts of the broken cells are collected once: the checks below (quads only,
+        // the repair) need only those cells, not another pass over every changed dart's cell.
+        std::vector<int> broken;
+        long now = brokenCells(changedDarts(), &broken);
         // A run that leaves no broken cell can still have crossed alpha_3 links around an
         // edge so that two vertices become one (every cell a hex, every vertex link a
         // sphere): such a run ranks below every run that merges none.
@@ -345,7 +349,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             best = now;
             bestOrder = k;
         }
-        if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(changed)) {
+        if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(broken)) {
             // Only quads are crossed or partial, every cell is a hex inside: the face repair
             // and relinking finish this run; another order would cost a whole run each.
             st.alpha3_only_kept = true;
@@ -353,7 +357,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             st.broken_cells_after = now;
             return;
         }
-        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair(changed)) {
+        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair(broken)) {
             // The cells phase by phase leaves broken were re-linked into hexes: keep that.
             st.repaired = true;
             st.reordered = 1;

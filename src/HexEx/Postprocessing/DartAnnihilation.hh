@@ -50,7 +50,7 @@ struct AnnihilationRetry {
     /// linked to no other broken cell (the relinking would find no partner for its quads).
     bool keep_alpha3_only = true;
     /// Called once, after the first retry (phase by phase) if it leaves broken cells, with the
-    /// alive darts whose links the run changed (only their cells can be broken): may re-link
+    /// darts of the broken cells (found among the cells of the darts the run changed): may re-link
     /// the darts of those cells (reconnectBrokenCells()) and returns true if no broken cell
     /// is left; then no further order is tried and that result is kept.
     std::function<bool(const std::vector<int>& changed)> repair;
