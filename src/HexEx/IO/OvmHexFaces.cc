@@ -12,6 +12,7 @@
 
 #include "OvmHexFaces.hh"
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
@@ -89,7 +90,7 @@ std::size_t prefix(std::vector<std::size_t>& counts) {
 /// The corners (8 h + local index) around every vertex (in no particular order within a vertex).
 struct CornerStars {
     std::vector<int> start;   ///< per vertex the first entry of corner (and the end)
-    std::vector<int> corner;  ///< 8 h + local index, grouped by vertex
+    std::vector<int, DefaultInitAllocator<int>> corner;  ///< 8 h + local index, grouped by vertex (every entry written)
     /// Counting sort of the corners of @p mesh by vertex, counted and filled on @p chunks threads
     /// (atomic slots: the order within a vertex varies, which no caller depends on).
     CornerStars(const HexMesh& mesh, int chunks) : start(mesh.vertices.size() + 1, 0), corner(8 * mesh.hexes.size()) {
@@ -113,7 +114,7 @@ struct CornerStars {
     /// Frees both arrays (the stars are needed by the first per-vertex pass only).
     void release() {
         std::vector<int>().swap(start);
-        std::vector<int>().swap(corner);
+        std::vector<int, DefaultInitAllocator<int>>().swap(corner);
     }
     /// Asks the cache for the hexes around vertex @p v (if it exists) ahead of their use: the
     /// per-vertex passes wait on these scattered loads otherwise.
@@ -168,6 +169,14 @@ struct VertexEdges {
     }
 };
 
+/// Number of set bits of @p x, inline (__builtin_popcount is a library call on a target
+/// without the popcnt instruction, and it is called per halfedge).
+inline int bitCount(std::uint32_t x) {
+    x = x - ((x >> 1) & 0x55555555u);
+    x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
+    return static_cast<int>((((x + (x >> 4)) & 0x0F0F0F0Fu) * 0x01010101u) >> 24);
+}
+
 /// Position of local edge @p e in its smaller quad kT.edgeFaces[e][0].
 int firstPosition(int e) {
     const int i = kT.edgeFaces[e][0];
@@ -206,7 +215,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     // filled hex by hex in face order instead of per vertex again (scattered over memory).
     std::vector<int> nb(nLoops);
     std::vector<std::uint32_t> owned(nHex, 0);
-    std::vector<std::uint32_t> ownerRef(12 * nHex);
+    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
     parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
         struct Quad {  // a loop and its other three vertices, sorted
             int loop, a, b, d;
@@ -303,10 +312,10 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     // Edges: numbered in order of their first loop and position (count, prefix, rank of the
     // owner bit); then hex by hex, every owner writes its edges and every first loop its
     // halfedges (looked up through the owner references).
-    std::vector<int> edgeBase(nHex);  // per hex its first owned edge (< INT_MAX / 2, checked)
+    std::vector<int, DefaultInitAllocator<int>> edgeBase(nHex);  // per hex its first owned edge (< INT_MAX / 2, checked)
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
-        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(__builtin_popcount(owned[h]));
+        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(owned[h]));
         base[static_cast<std::size_t>(c)] = n;
     });
     const std::size_t nEdges = prefix(base);
@@ -315,7 +324,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         std::size_t n = base[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
             edgeBase[h] = static_cast<int>(n);
-            n += static_cast<std::size_t>(__builtin_popcount(owned[h]));
+            n += static_cast<std::size_t>(bitCount(owned[h]));
         }
     });
     out.edges.resize(nEdges);
@@ -326,7 +335,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });
     const auto edgeId = [&](std::size_t h, int bit) {
-        return static_cast<std::size_t>(edgeBase[h]) + static_cast<std::size_t>(__builtin_popcount(owned[h] & ((1u << bit) - 1u)));
+        return static_cast<std::size_t>(edgeBase[h]) + static_cast<std::size_t>(bitCount(owned[h] & ((1u << bit) - 1u)));
     };
     parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
         for (std::size_t h = h0; h < h1; ++h) {
