@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "TestMeshChecks.hh"
@@ -117,6 +118,10 @@ TEST(FoldedBoundary, OutsideHexesConnectedToTheSeeds) {
     EXPECT_TRUE(hexesOutsideSurface(row, s, {1}).empty());    // inside: not flooded from
     EXPECT_TRUE(hexesOutsideSurface(row, s, {}).empty());
     EXPECT_EQ(hexesOutsideSurface(row, s, {0, 3, 99, -1}), (std::vector<int>{2, 3}));  // out of range ignored
+    TriangleSurface inward = s;  // the same box with its triangles turned inward
+    for (auto& t : inward.triangles) std::swap(t[1], t[2]);
+    EXPECT_NEAR(windingNumber(inward, Vec3d(1, 0.5, 0.5)), -1.0, 1e-12);
+    EXPECT_EQ(hexesOutsideSurface(row, inward, {1, 3}), (std::vector<int>{2, 3}));
 }
 
 TEST(FoldedBoundary, RemoveHexesKeepsOrderAndReportsTheExposedVertices) {

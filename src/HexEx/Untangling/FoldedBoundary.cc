@@ -103,7 +103,7 @@ std::vector<int> hexesOutsideSurface(const HexMesh& mesh, const TriangleSurface&
     auto outside = [&](int c) {
         Vec3d centre(0, 0, 0);
         for (const int v : mesh.hexes[static_cast<std::size_t>(c)]) centre += mesh.vertices[static_cast<std::size_t>(v)] * 0.125;
-        return windingNumber(surface, centre) < 0.5;
+        return std::abs(windingNumber(surface, centre)) < 0.5;  // -1 inside an inward-oriented surface
     };
     std::vector<char> seen(nh, 0), out(nh, 0);
     std::vector<int> stack;

@@ -40,7 +40,7 @@ std::vector<int> boundaryDoublets(const HexMesh& mesh);
 double windingNumber(const TriangleSurface& surface, const Vec3d& p);
 
 /// Hexes of @p mesh whose centre (mean of the 8 corners) lies outside @p surface (winding
-/// number below 1/2) and that are connected to a hex of @p seeds through faces of such
+/// number below 1/2 in magnitude, so that a surface oriented inward counts the same) and that are connected to a hex of @p seeds through faces of such
 /// hexes: the seeds that are outside, and the outside hexes reached from them across shared
 /// quads. In increasing order. A seed out of range is ignored.
 std::vector<int> hexesOutsideSurface(const HexMesh& mesh, const TriangleSurface& surface, const std::vector<int>& seeds);
