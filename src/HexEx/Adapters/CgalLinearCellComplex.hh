@@ -81,15 +81,12 @@ struct IsLcc3<T, std::void_t<typename T::Dart_const_handle, typename T::Vertex_a
                              decltype(T::dimension), decltype(T::ambient_dimension)>>
     : std::bool_constant<T::dimension == 3 && T::ambient_dimension == 3> {};
 
-/// True if the volume of @p d is a closed combinatorial tetrahedron: four distinct
-/// triangles (beta1 cycles of three darts: the face of @p d and the faces 2-sewn to its
-/// darts), each 2-sewn to the three others. The condition of CGAL's
-/// is_volume_combinatorial_tetrahedron(), checked on the volume's 12 darts without the
-/// marks and the queue of CGAL's traversal.
+/// True if the volume of @p d is a closed combinatorial tetrahedron (see lccIsClosedTet());
+/// then @p faces holds its 12 darts, face by face: the face of @p d from @p d on, then the
+/// faces 2-sewn to its darts in order.
 template <class LCC>
-bool lccIsClosedTet(const LCC& lcc, typename LCC::Dart_const_handle d) {
+bool lccClosedTetFaces(const LCC& lcc, typename LCC::Dart_const_handle d, typename LCC::Dart_const_handle (&faces)[4][3]) {
     using Dart = typename LCC::Dart_const_handle;
-    Dart faces[4][3];
     // The face of d, then the faces across its three edges; every dart 1- and 2-sewn.
     const auto triangle = [&](Dart x, Dart* out) {
         for (int i = 0; i < 3; ++i) {
@@ -125,13 +122,27 @@ bool lccIsClosedTet(const LCC& lcc, typename LCC::Dart_const_handle d) {
     return true;
 }
 
+/// True if the volume of @p d is a closed combinatorial tetrahedron: four distinct
+/// triangles (beta1 cycles of three darts: the face of @p d and the faces 2-sewn to its
+/// darts), each 2-sewn to the three others. The condition of CGAL's
+/// is_volume_combinatorial_tetrahedron(), checked on the volume's 12 darts without the
+/// marks and the queue of CGAL's traversal.
+template <class LCC>
+bool lccIsClosedTet(const LCC& lcc, typename LCC::Dart_const_handle d) {
+    typename LCC::Dart_const_handle faces[4][3];
+    return lccClosedTetFaces(lcc, d, faces);
+}
+
 /// The four corner darts of the tet volume of @p d (first dart of tet number @p t, for the
-/// error message): the darts of its corners in LccTetMesh's order. Throws InputError if
-/// the volume is not a closed combinatorial tetrahedron.
+/// error message): the darts of its corners in LccTetMesh's order. With @p faces, also the
+/// volume's 12 darts (see lccClosedTetFaces()). Throws InputError if the volume is not a
+/// closed combinatorial tetrahedron.
 template <class LCC>
 std::array<typename LCC::Dart_const_handle, 4> lccTetCornerDarts(const LCC& lcc, typename LCC::Dart_const_handle d,
-                                                                 std::size_t t) {
-    if (!lccIsClosedTet(lcc, d))
+                                                                 std::size_t t,
+                                                                 typename LCC::Dart_const_handle (*faces)[4][3] = nullptr) {
+    typename LCC::Dart_const_handle own[4][3];
+    if (!lccClosedTetFaces(lcc, d, faces ? *faces : own))
         throw InputError("LCC volume " + std::to_string(t) + " is not a closed combinatorial tetrahedron");
     return {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
 }

@@ -37,6 +37,26 @@ typename LCC::Dart_const_handle lccFaceOpposite(const LCC& lcc, const std::array
     }
 }
 
+/// A mark of a CGAL combinatorial map, released (every dart unmarked first) when the
+/// object goes out of scope, exceptions included.
+template <class LCC>
+struct LccMark {
+    /// Reserves a mark of @p lcc (marks are mutable in CGAL: a const map can be marked).
+    explicit LccMark(const LCC& lcc) : map(lcc), id(lcc.get_new_mark()) {}
+    /// Unmarks every dart and frees the mark.
+    ~LccMark() {
+        map.unmark_all(id);
+        map.free_mark(id);
+    }
+    /// Not copyable: the mark is freed once.
+    LccMark(const LccMark&) = delete;
+    /// Not copyable: the mark is freed once.
+    LccMark& operator=(const LccMark&) = delete;
+
+    const LCC& map;                   ///< the marked map
+    typename LCC::size_type id;       ///< the mark
+};
+
 /// Copies the tets of @p lcc into the built-in kernel (the order of LccTetMesh) with the
 /// parameters given by @p param (see the accessor overload of extractHexMesh()) and builds
 /// the adjacency with @p threads threads. With @p tetDarts, fills it with the first dart of
@@ -62,9 +82,17 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
         pm.mesh.add_vertex(lccToVec3d(it->point()));
     std::array<VertexHandle, 4> h;
     std::array<Vec3d, 4> u;
-    for (auto it = lcc.template one_dart_per_cell<3>().begin(); it != lcc.template one_dart_per_cell<3>().end(); ++it) {
+    // One dart per volume in the order of one_dart_per_cell<3>() (the darts in container
+    // order, each unmarked one starting a volume whose darts are then marked), marking the
+    // 12 darts the tetrahedron check has already found instead of walking the volume again.
+    const LccMark<LCC> mark(lcc);
+    Dart faces[4][3];
+    for (auto it = lcc.darts().begin(); it != lcc.darts().end(); ++it) {
+        if (lcc.is_marked(it, mark.id)) continue;
         const std::size_t t = pm.params.size();
-        const std::array<Dart, 4> c = lccTetCornerDarts(lcc, Dart(it), t);
+        const std::array<Dart, 4> c = lccTetCornerDarts(lcc, Dart(it), t, &faces);
+        for (const auto& f : faces)
+            for (const Dart& x : f) lcc.mark(x, mark.id);
         for (std::size_t i = 0; i < 4; ++i) {
             h[i] = VertexHandle(static_cast<int>(lccVertexOf(lcc, index, c[i], t)));
             u[i] = lccToVec3d(param(lcc, c[i]));
