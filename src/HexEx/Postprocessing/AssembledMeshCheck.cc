@@ -1,6 +1,7 @@
 /// @file AssembledMeshCheck.cc
 /// Implementation of checkAssembledHexes(): counting sorts by vertex, small sorts per bucket;
-/// the hex and quad passes in parallel chunks (quads as compact records, one per face).
+/// the hex, quad and per-vertex boundary passes in parallel chunks (quads as compact records,
+/// one per face).
 
 #include "AssembledMeshCheck.hh"
 
@@ -245,55 +246,71 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
     bucketByVertex(
         nv, ne, [&](long e) { return std::min(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)); },
         start, order);
-    std::vector<int> others;
-    for (long v = 0; v < nv; ++v) {
-        others.clear();
-        for (long i = start[static_cast<std::size_t>(v)]; i < start[static_cast<std::size_t>(v) + 1]; ++i) {
-            const long e = order[static_cast<std::size_t>(i)];
-            others.push_back(std::max(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)));
+    // Both per-vertex passes in chunks of vertices; the counts are summed in chunk order.
+    std::vector<long> perChunk(static_cast<std::size_t>(chunks), 0);
+    auto sumChunks = [&perChunk] {
+        long n = 0;
+        for (long& x : perChunk) {
+            n += x;
+            x = 0;
         }
-        std::sort(others.begin(), others.end());
-        for (std::size_t i = 0; i < others.size();) {
-            std::size_t j = i + 1;
-            while (j < others.size() && others[j] == others[i]) ++j;
-            if (j - i != 2) ++r.nonmanifold_boundary_edges;
-            i = j;
+        return n;
+    };
+    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
+        std::vector<int> others;
+        for (std::size_t v = v0; v < v1; ++v) {
+            others.clear();
+            for (long i = start[v]; i < start[v + 1]; ++i) {
+                const long e = order[static_cast<std::size_t>(i)];
+                others.push_back(std::max(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)));
+            }
+            std::sort(others.begin(), others.end());
+            for (std::size_t i = 0; i < others.size();) {
+                std::size_t j = i + 1;
+                while (j < others.size() && others[j] == others[i]) ++j;
+                if (j - i != 2) ++perChunk[static_cast<std::size_t>(k)];
+                i = j;
+            }
         }
-    }
+    });
+    r.nonmanifold_boundary_edges = sumChunks();
 
     // Fans: the corners at v link its two neighbours in the quad; one fan iff connected.
     bucketByVertex(nv, ne, [&](long c) { return loopVertex(c / 4, static_cast<int>(c % 4)); }, start, order);
-    std::vector<int> parent;
-    for (long v = 0; v < nv; ++v) {
-        const long s = start[static_cast<std::size_t>(v)], t = start[static_cast<std::size_t>(v) + 1];
-        if (t - s == 0) continue;
-        others.clear();
-        for (long i = s; i < t; ++i) {
-            const long c = order[static_cast<std::size_t>(i)];
-            others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 3));
-            others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 1));
-        }
-        std::sort(others.begin(), others.end());
-        others.erase(std::unique(others.begin(), others.end()), others.end());
-        parent.resize(others.size());
-        for (std::size_t k = 0; k < parent.size(); ++k) parent[k] = static_cast<int>(k);
-        auto find = [&](int x) {
-            while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-            return x;
-        };
-        auto local = [&](int u) { return static_cast<int>(std::lower_bound(others.begin(), others.end(), u) - others.begin()); };
-        long components = static_cast<long>(others.size());
-        for (long i = s; i < t; ++i) {
-            const long c = order[static_cast<std::size_t>(i)];
-            const int x = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 3)));
-            const int y = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 1)));
-            if (x != y) {
-                parent[static_cast<std::size_t>(x)] = y;
-                --components;
+    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
+        std::vector<int> others, parent;
+        for (std::size_t v = v0; v < v1; ++v) {
+            const long s = start[v], t = start[v + 1];
+            if (t - s == 0) continue;
+            others.clear();
+            for (long i = s; i < t; ++i) {
+                const long c = order[static_cast<std::size_t>(i)];
+                others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 3));
+                others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 1));
             }
+            std::sort(others.begin(), others.end());
+            others.erase(std::unique(others.begin(), others.end()), others.end());
+            parent.resize(others.size());
+            for (std::size_t q = 0; q < parent.size(); ++q) parent[q] = static_cast<int>(q);
+            auto find = [&](int x) {
+                while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+                return x;
+            };
+            auto local = [&](int u) { return static_cast<int>(std::lower_bound(others.begin(), others.end(), u) - others.begin()); };
+            long components = static_cast<long>(others.size());
+            for (long i = s; i < t; ++i) {
+                const long c = order[static_cast<std::size_t>(i)];
+                const int x = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 3)));
+                const int y = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 1)));
+                if (x != y) {
+                    parent[static_cast<std::size_t>(x)] = y;
+                    --components;
+                }
+            }
+            if (components > 1) ++perChunk[static_cast<std::size_t>(k)];
         }
-        if (components > 1) ++r.nonmanifold_boundary_vertices;
-    }
+    });
+    r.nonmanifold_boundary_vertices = sumChunks();
     return r;
 }
 

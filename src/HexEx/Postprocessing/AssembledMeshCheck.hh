@@ -30,7 +30,8 @@ struct AssembledMeshCheck {
 
 /// Checks the hexes of @p mesh (its polyhedra are ignored) in time linear in its size:
 /// quads are bucketed by their smallest vertex, boundary edges and corners likewise. The
-/// hex and quad passes run on @p threads threads (>= 1); the result does not depend on it.
+/// hex, quad and per-vertex boundary passes run on @p threads threads (>= 1); the result
+/// does not depend on it.
 AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads = 1);
 
 } // namespace HexEx
