@@ -56,6 +56,39 @@ double cornerSJWithGradient(const Vec3d& a, const Vec3d& b, const Vec3d& c, Vec3
     return s;
 }
 
+/// Smallest exponent of the soft minimum's terms that is evaluated: exp(-60) < 1e-26, so the
+/// corners skipped by it change the energy (at least about exp(0) from the worst corner) by
+/// less than its rounding.
+constexpr double kMinExponent = -60;
+
+/// Scaled Jacobian of one corner with the intermediate values its gradient needs.
+struct CornerSJ {
+    double s = -2;          ///< det(a,b,c)/(|a||b||c|); -2 if an edge has zero length or not finite
+    double la = 0, lb = 0, lc = 0, len = 0;  ///< edge lengths and their product
+    Vec3d bc;               ///< b x c
+};
+
+/// Value part of cornerSJWithGradient() (same operations, so the same bits).
+CornerSJ cornerSJ(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
+    CornerSJ r;
+    r.la = a.norm();
+    r.lb = b.norm();
+    r.lc = c.norm();
+    r.len = r.la * r.lb * r.lc;
+    if (!(r.len > 0) || !std::isfinite(r.len)) return r;
+    r.bc = b % c;
+    const double s = (r.bc | a) / r.len;
+    r.s = std::isfinite(s) ? s : -2;
+    return r;
+}
+
+/// Gradient part of cornerSJWithGradient() for a corner with r.s > 0.
+void cornerSJGradient(const CornerSJ& r, const Vec3d& a, const Vec3d& b, const Vec3d& c, Vec3d& ga, Vec3d& gb, Vec3d& gc) {
+    ga = r.bc / r.len - a * (r.s / (r.la * r.la));
+    gb = (c % a) / r.len - b * (r.s / (r.lb * r.lb));
+    gc = (a % b) / r.len - c * (r.s / (r.lc * r.lc));
+}
+
 /// Vertex -> hexes incidence in CSR form.
 struct VertexHexes {
     std::vector<int> offset, hexes;
@@ -612,14 +645,21 @@ private:
                     const Vec3d a = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[1])])] - o;
                     const Vec3d b2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[2])])] - o;
                     const Vec3d c2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[3])])] - o;
-                    Vec3d ga, gb, gc;
-                    const double s = cornerSJWithGradient(a, b2, c2, &ga, &gb, &gc);
+                    const CornerSJ cs = cornerSJ(a, b2, c2);
+                    const double s = cs.s;
                     if (!(s > 0)) {
                         sum = std::numeric_limits<double>::infinity();
                         break;
                     }
-                    const double w = std::exp(std::min(k * (m0 - s), kMaxExponent));
+                    // Terms below exp(kMinExponent) (relative to the worst corner's, about 1)
+                    // change neither the sum nor the gradient in double precision: skipped,
+                    // gradient not computed (most corners once k has grown).
+                    const double x = k * (m0 - s);
+                    if (x < kMinExponent) continue;
+                    const double w = std::exp(std::min(x, kMaxExponent));
                     sum += w;
+                    Vec3d ga, gb, gc;
+                    cornerSJGradient(cs, a, b2, c2, ga, gb, gc);
                     const double dw = -k * w;
                     g[static_cast<std::size_t>(f[1])] += ga * dw;
                     g[static_cast<std::size_t>(f[2])] += gb * dw;
