@@ -73,6 +73,8 @@ void setOptimizeValues(hexex_result* r, const HexEx::OptimizeReport& q) {
     r->values[HEXEX_VALUE_OPTIMIZE_INVALID_AFTER] = static_cast<double>(q.invalid_after);
     r->values[HEXEX_VALUE_OPTIMIZE_MAX_SURFACE_DISTANCE] = q.max_surface_distance;
     r->values[HEXEX_VALUE_OPTIMIZE_SECONDS] = q.seconds;
+    r->values[HEXEX_VALUE_OPTIMIZE_PILLOWED_HEXES] = static_cast<double>(q.pillowed_hexes);
+    r->values[HEXEX_VALUE_OPTIMIZE_TRIMMED_HEXES] = static_cast<double>(q.trimmed_hexes);
 }
 
 /// Optimises a copy of @p mesh with the C options @p options (NULL: defaults) into

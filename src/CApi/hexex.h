@@ -57,7 +57,7 @@
 #endif
 
 /** Version of this interface: raised when functions, values or option fields are added. */
-#define HEXEX_C_API_VERSION 2
+#define HEXEX_C_API_VERSION 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -131,7 +131,9 @@ typedef enum hexex_value {
     HEXEX_VALUE_OPTIMIZE_REACHED_TARGET = 85,       /**< 1 if the worst scaled Jacobian reached the target */
     HEXEX_VALUE_OPTIMIZE_INVALID_AFTER = 86,        /**< hexes not certified valid afterwards */
     HEXEX_VALUE_OPTIMIZE_MAX_SURFACE_DISTANCE = 87, /**< largest distance of a boundary vertex to the surface */
-    HEXEX_VALUE_OPTIMIZE_SECONDS = 88               /**< wall-clock seconds of the optimisation */
+    HEXEX_VALUE_OPTIMIZE_SECONDS = 88,              /**< wall-clock seconds of the optimisation */
+    HEXEX_VALUE_OPTIMIZE_PILLOWED_HEXES = 89,       /**< hexes added by the boundary layer (`pillow`; since version 3) */
+    HEXEX_VALUE_OPTIMIZE_TRIMMED_HEXES = 90         /**< hexes of a flap outside the surface removed before the layer (`pillow`; since version 3) */
 } hexex_value;
 
 /** Options of hexex_extract(); set the defaults with hexex_extraction_options_init(). The

@@ -298,6 +298,7 @@ static void test_optimize(void) {
     CHECK(value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_AFTER) >
           value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_BEFORE) + 0.1);
     CHECK(value(r, HEXEX_VALUE_OPTIMIZE_INVALID_AFTER) == 0);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_PILLOWED_HEXES) == 0 && value(r, HEXEX_VALUE_OPTIMIZE_TRIMMED_HEXES) == 0);
     CHECK(value(r, HEXEX_VALUE_INVALID_HEXES) == 0);
     CHECK(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) == value(r, HEXEX_VALUE_OPTIMIZE_MIN_SCALED_JACOBIAN_AFTER));
     CHECK(strstr(hexex_result_report_json(r), "\"min_scaled_jacobian_after\"") != NULL);
@@ -356,6 +357,8 @@ static void test_optimize_pillow(void) {
     CHECK(value(r, HEXEX_VALUE_OPTIMIZE_INVALID_AFTER) == 0);
     CHECK(value(r, HEXEX_VALUE_OPTIMIZE_MAX_SURFACE_DISTANCE) < 1e-12);
     CHECK(value(r, HEXEX_VALUE_MIN_SCALED_JACOBIAN) > 0);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_PILLOWED_HEXES) == 24);
+    CHECK(value(r, HEXEX_VALUE_OPTIMIZE_TRIMMED_HEXES) == 0); /* every hex valid: no flap removed */
     CHECK(strstr(hexex_result_report_json(r), "\"pillowed_hexes\": 24") != NULL);
     /* The 26 boundary vertices stay on the faces of the unit cube; the 26 copies are inside. */
     for (i = 0; i < 53; ++i) {
