@@ -634,6 +634,8 @@ private:
         e_val_.resize(ne);
         if (grad) e_grad_.resize(ne);
         const auto& pos = mesh_.vertices;
+        const double skip_above = m0 - kMinExponent / k;  // corners above this SJ are skipped
+        const double skip2 = skip_above > 0 ? skip_above * skip_above : std::numeric_limits<double>::infinity();
         parallelChunks(ne, ne < 2048 ? 1 : threads_, [&](int, std::size_t b, std::size_t e) {
             for (std::size_t i = b; i < e; ++i) {
                 const auto& hx = mesh_.hexes[static_cast<std::size_t>(elems_[i])];
@@ -645,6 +647,10 @@ private:
                     const Vec3d a = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[1])])] - o;
                     const Vec3d b2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[2])])] - o;
                     const Vec3d c2 = pos[static_cast<std::size_t>(hx[static_cast<std::size_t>(f[3])])] - o;
+                    // Quick skip without square roots: SJ > skip_above <=> det^2 > skip_above^2
+                    // |a|^2 |b|^2 |c|^2 (det > 0); the term is then below exp(kMinExponent).
+                    const double det = (b2 % c2) | a;
+                    if (det > 0 && det * det > skip2 * (a.sqrnorm() * b2.sqrnorm() * c2.sqrnorm())) continue;
                     const CornerSJ cs = cornerSJ(a, b2, c2);
                     const double s = cs.s;
                     if (!(s > 0)) {
