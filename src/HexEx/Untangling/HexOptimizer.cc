@@ -759,7 +759,8 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
     if (options.pillow && !mesh.hexes.empty()) {
         sj_input = scaledJacobians(mesh);
         if (*std::min_element(sj_input.begin(), sj_input.end()) > 0) {
-            for (const auto v : hexValidities(mesh, options.threads)) invalid_input += v != HexValidity::Valid;
+            const std::vector<HexValidity> validity = hexValidities(mesh, options.threads);  // of the input
+            for (const auto v : validity) invalid_input += v != HexValidity::Valid;
             PillowOptions po;
             po.depth = options.pillow_depth;
             po.skip_patch_angle_deg = options.pillow_skip_patch_angle_deg;
@@ -790,7 +791,6 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
             if (invalid_input > 0 && surface != nullptr && options.boundary == BoundaryMode::Surface &&
                 mesh.polyhedra.empty()) {
                 std::vector<int> seeds;
-                const std::vector<HexValidity> validity = hexValidities(mesh, options.threads);
                 for (std::size_t c = 0; c < validity.size(); ++c)
                     if (validity[c] != HexValidity::Valid) seeds.push_back(static_cast<int>(c));
                 const std::vector<int> flap = hexesOutsideSurface(mesh, *surface, seeds);
