@@ -5,6 +5,7 @@
 
 #include "../Core/Parallel.hh"
 #include "../Mesh/HexArcs.hh"
+#include "../Mesh/HexFaceRecords.hh"
 #include "../Mesh/HexMeshQuality.hh"
 #include "../Mesh/HexValidity.hh"
 
@@ -21,13 +22,6 @@
 namespace HexEx {
 
 namespace {
-
-/// A hex face: its sorted vertices (the key), the hex and the face number.
-struct FaceRecord {
-    std::array<int, 4> key;
-    int hex;
-    int face;
-};
 
 /// "(a b c d)" for messages.
 std::string quadText(const std::array<int, 4>& q) {
@@ -49,8 +43,6 @@ int findRoot(std::vector<int>& parent, int i) {
 /// Throws std::invalid_argument on the input errors listed in pillowBoundary().
 std::vector<std::array<int, 4>> boundaryQuads(const HexMesh& mesh, std::vector<int>& owner, std::vector<int>& owner_face) {
     const long nv = static_cast<long>(mesh.vertices.size());
-    std::vector<FaceRecord> rec;
-    rec.reserve(mesh.hexes.size() * 6);
     for (std::size_t c = 0; c < mesh.hexes.size(); ++c) {
         const auto& h = mesh.hexes[c];
         for (std::size_t i = 0; i < 8; ++i) {
@@ -62,18 +54,8 @@ std::vector<std::array<int, 4>> boundaryQuads(const HexMesh& mesh, std::vector<i
                     throw std::invalid_argument("pillowing: hex " + std::to_string(c) + " has the vertex " +
                                                 std::to_string(h[i]) + " twice");
         }
-        for (int f = 0; f < 6; ++f) {
-            FaceRecord r;
-            for (int k = 0; k < 4; ++k) r.key[static_cast<std::size_t>(k)] = h[static_cast<std::size_t>(HexArcs::kHexFaces[f][k])];
-            std::sort(r.key.begin(), r.key.end());
-            r.hex = static_cast<int>(c);
-            r.face = f;
-            rec.push_back(r);
-        }
     }
-    std::sort(rec.begin(), rec.end(), [](const FaceRecord& a, const FaceRecord& b) {
-        return a.key != b.key ? a.key < b.key : std::make_pair(a.hex, a.face) < std::make_pair(b.hex, b.face);
-    });
+    const std::vector<HexFaceRecord> rec = sortedHexFaces(mesh);
     std::vector<std::pair<int, int>> bnd;  // (hex, face), sorted below
     for (std::size_t i = 0; i < rec.size();) {
         std::size_t j = i;

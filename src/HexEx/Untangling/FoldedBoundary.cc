@@ -4,6 +4,7 @@
 #include "FoldedBoundary.hh"
 
 #include "../Mesh/HexArcs.hh"
+#include "../Mesh/HexFaceRecords.hh"
 
 #include <algorithm>
 #include <array>
@@ -14,39 +15,8 @@
 
 namespace HexEx {
 
-namespace {
-
-/// A hex face: sorted vertices (the key), its hex and face number.
-struct FaceKey {
-    std::array<int, 4> key;
-    int hex;
-    int face;
-};
-
-/// All hex faces of @p mesh sorted by their vertex sets (then hex, face).
-std::vector<FaceKey> sortedFaces(const HexMesh& mesh) {
-    std::vector<FaceKey> faces;
-    faces.reserve(mesh.hexes.size() * 6);
-    for (std::size_t c = 0; c < mesh.hexes.size(); ++c)
-        for (int f = 0; f < 6; ++f) {
-            FaceKey k;
-            for (int i = 0; i < 4; ++i)
-                k.key[static_cast<std::size_t>(i)] = mesh.hexes[c][static_cast<std::size_t>(HexArcs::kHexFaces[f][i])];
-            std::sort(k.key.begin(), k.key.end());
-            k.hex = static_cast<int>(c);
-            k.face = f;
-            faces.push_back(k);
-        }
-    std::sort(faces.begin(), faces.end(), [](const FaceKey& a, const FaceKey& b) {
-        return a.key != b.key ? a.key < b.key : std::make_pair(a.hex, a.face) < std::make_pair(b.hex, b.face);
-    });
-    return faces;
-}
-
-} // namespace
-
 std::vector<int> boundaryDoublets(const HexMesh& mesh) {
-    const std::vector<FaceKey> faces = sortedFaces(mesh);
+    const std::vector<HexFaceRecord> faces = sortedHexFaces(mesh);
     // Per boundary vertex: its boundary quads' neighbours along the quad edges at it.
     std::vector<std::pair<int, std::array<int, 2>>> corners;  // (vertex, {next, prev})
     for (std::size_t i = 0; i < faces.size();) {
@@ -92,7 +62,7 @@ double windingNumber(const TriangleSurface& surface, const Vec3d& p) {
 
 std::vector<int> hexesOutsideSurface(const HexMesh& mesh, const TriangleSurface& surface, const std::vector<int>& seeds) {
     const std::size_t nh = mesh.hexes.size();
-    const std::vector<FaceKey> faces = sortedFaces(mesh);
+    const std::vector<HexFaceRecord> faces = sortedHexFaces(mesh);
     // Face neighbours: position of each (hex, face) record, and the record's partner.
     std::vector<int> partner(nh * 6, -1);
     for (std::size_t i = 0; i + 1 < faces.size(); ++i)
@@ -139,7 +109,7 @@ std::vector<int> removeHexes(HexMesh& mesh, const std::vector<int>& hexes) {
     for (const int c : hexes)
         if (c >= 0 && static_cast<std::size_t>(c) < nh) gone[static_cast<std::size_t>(c)] = 1;
     std::vector<char> exposed(nv, 0);
-    const std::vector<FaceKey> faces = sortedFaces(mesh);
+    const std::vector<HexFaceRecord> faces = sortedHexFaces(mesh);
     for (std::size_t i = 0; i + 1 < faces.size(); ++i)
         if (faces[i].key == faces[i + 1].key &&
             gone[static_cast<std::size_t>(faces[i].hex)] != gone[static_cast<std::size_t>(faces[i + 1].hex)])
