@@ -457,6 +457,10 @@ TEST_F(CliEndToEndTest, UntangleAFoldedCylinderInExtractAndAlone) {
     EXPECT_NE(json.find("\"inverted_after\": 0"), std::string::npos) << json;
     EXPECT_NE(json.find("\"success\": true"), std::string::npos) << json;
     EXPECT_NE(json.find("\"inverted_hexes\": 0"), std::string::npos) << json;  // quality after untangling
+    EXPECT_EQ(json.find("\"optimize\""), std::string::npos) << json;  // untangling sufficed: no pillowing repair
+    r = run({"extract", path("p.hexex"), "-o", path("x.vtu"), "--pillow", "--no-pillow"});
+    EXPECT_EQ(r.status, 2);
+    EXPECT_NE(r.err.find("--pillow and --no-pillow exclude each other"), std::string::npos) << r.err;
 
     // The same from the written mesh with the map's boundary as the surface.
     r = run({"untangle", path("before.vtu"), "--surface-from", path("p.hexex"), "-o", path("alone.vtu")});

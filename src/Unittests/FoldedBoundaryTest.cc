@@ -8,6 +8,7 @@
 #include <HexEx/Mesh/HexMeshQuality.hh>
 #include <HexEx/Untangling/FoldedBoundary.hh>
 #include <HexEx/Untangling/HexOptimizer.hh>
+#include <HexEx/Untangling/UntangleWithRepair.hh>
 
 #include <gtest/gtest.h>
 
@@ -172,4 +173,48 @@ TEST(FoldedBoundary, PillowRemovesAnInvalidFlapOutsideTheSurface) {
     }
     EXPECT_EQ(results[0].vertices, results[1].vertices);
     EXPECT_EQ(results[0].hexes, results[1].hexes);
+}
+
+// untangleWithRepair() (`hexex extract --untangle`): untangling alone cannot make the flap
+// valid (its far vertices are boundary vertices kept on the box's surface planes), so with
+// PillowPolicy::IfNeeded the pillowing repair runs and every hex ends certified valid; with
+// PillowPolicy::Never the hexes stay as they were and the bad one is reported.
+TEST(FoldedBoundary, UntangleFallsBackToPillowingOnlyWhenNeeded) {
+    const TriangleSurface surface = box();
+    {
+        HexMesh m = rowWithInvalidFlap();
+        RepairOptions o;
+        o.pillow = PillowPolicy::Never;
+        const RepairReport r = untangleWithRepair(m, o, &surface);
+        EXPECT_EQ(r.untangle.invalid_before, 1);
+        EXPECT_EQ(r.untangle.invalid_after + r.untangle.undecided_after, 1);
+        EXPECT_FALSE(r.optimized);
+        EXPECT_FALSE(r.repaired);
+        EXPECT_TRUE(r.note.empty()) << r.note;
+        EXPECT_EQ(m.hexes.size(), 3u);
+    }
+    HexMesh results[2];
+    for (int threads = 1; threads <= 2; ++threads) {
+        HexMesh m = rowWithInvalidFlap();
+        RepairOptions o;
+        o.untangle.threads = o.optimize.threads = threads;
+        const RepairReport r = untangleWithRepair(m, o, &surface);
+        EXPECT_TRUE(r.optimized);
+        EXPECT_TRUE(r.repaired);
+        EXPECT_EQ(r.optimize.trimmed_hexes, 1);
+        EXPECT_EQ(r.optimize.pillowed_hexes, 10);
+        EXPECT_EQ(m.hexes.size(), 12u);
+        EXPECT_EQ(HexExTest::notCertifiedValid(m), 0);
+        EXPECT_EQ(r.note, "untangling alone left 1 hexes not certified valid; repaired as with --pillow: 1 hexes "
+                          "outside the surface removed, 10 hexes added along the boundary, then untangled and "
+                          "optimised (0 hexes invalid after)");
+        results[threads - 1] = m;
+    }
+    EXPECT_EQ(results[0].vertices, results[1].vertices);
+    EXPECT_EQ(results[0].hexes, results[1].hexes);
+    // A valid mesh is left as it is (no layer).
+    HexMesh row = cubeRow();
+    const RepairReport plain = untangleWithRepair(row, RepairOptions{}, nullptr);
+    EXPECT_FALSE(plain.optimized);
+    EXPECT_EQ(row.hexes.size(), 4u);
 }

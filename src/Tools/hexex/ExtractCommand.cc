@@ -24,6 +24,7 @@
 #include <HexEx/Untangling/TriangleSurface.hh>
 #include <HexEx/Untangling/HexOptimizer.hh>
 #include <HexEx/Untangling/Untangler.hh>
+#include <HexEx/Untangling/UntangleWithRepair.hh>
 
 #include <cctype>
 #include <chrono>
@@ -72,7 +73,11 @@ const char* kExtractUsage =
     "  --target SJ             with --optimize: stop once the worst scaled Jacobian reaches SJ (default 0.9)\n"
     "  --pillow                before optimising, insert a layer of hexes along the boundary (one per\n"
     "                          boundary quad; patches with flat corners along feature curves get a strip\n"
-    "                          of quads instead; implies --optimize; needs an all-hex result)\n"
+    "                          of quads instead; implies --optimize; needs an all-hex result).\n"
+    "                          Without it, --untangle takes this path only if untangling alone\n"
+    "                          leaves hexes certified invalid (the report says so)\n"
+    "  --no-pillow             never insert the layer: --untangle keeps the hexes as extracted,\n"
+    "                          even if some stay invalid\n"
     "  -q, --quiet             print nothing but errors\n"
     "IN is read as OpenVolumeMesh if it ends in .ovm or .ovmb, as .hexex otherwise;\n"
     "it may be '-' for standard input (.hexex).\n"
@@ -209,12 +214,13 @@ int runExtract(const Args& args) {
         {"--no-annihilation-retries", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
         {"--optimize", false, ""},        {"--target", true, ""},           {"--pillow", false, ""},
+        {"--no-pillow", false, ""},
     };
     std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
     HexEx::HexArcs arcs;
     HexEx::ExtractionOptions opt;
     HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
-    bool quiet = false, untangle = false, optimize = false;
+    bool quiet = false, untangle = false, optimize = false, pillow_fallback = true;
     HexEx::OptimizeOptions optimize_opt;
     try {
         const ParsedArgs pa = parseArgs(args, spec);
@@ -258,6 +264,8 @@ int runExtract(const Args& args) {
         optimize = pa.has("--optimize") || pa.has("--pillow");
         optimize_opt.pillow = pa.has("--pillow");
         untangle = pa.has("--untangle") || optimize;
+        if (pa.has("--pillow") && pa.has("--no-pillow")) throw UsageError("--pillow and --no-pillow exclude each other");
+        pillow_fallback = !pa.has("--no-pillow");
         optimize_opt.target = pa.getDouble("--target", optimize_opt.target, -1, 1);
         surface_path = pa.get("--surface");
         if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))
@@ -322,28 +330,35 @@ int runExtract(const Args& args) {
                                "vertices and " + std::to_string(dropped.second) + " cells that could not be written");
     }
     extras.quality = HexEx::computeQuality(hm, opt.threads);
-    HexEx::UntangleReport untangle_rep;
-    HexEx::OptimizeReport optimize_rep;
+    HexEx::RepairReport repair;
+    const HexEx::UntangleReport& untangle_rep = repair.untangle;
+    const HexEx::OptimizeReport& optimize_rep = repair.optimize;
     if (untangle) {
         const HexEx::TriangleSurface input_boundary = HexEx::tetMeshBoundary(pm.mesh);
-        HexEx::UntangleOptions uo;
-        uo.threads = opt.threads;
-        untangle_rep = HexEx::untangleHexMesh(hm, uo, &input_boundary);
+        HexEx::RepairOptions ro;
+        ro.untangle.threads = opt.threads;
+        ro.optimize = optimize_opt;
+        ro.optimize.threads = opt.threads;
+        ro.optimize_quality = optimize;
+        ro.pillow = optimize_opt.pillow ? HexEx::PillowPolicy::Always
+                                        : (pillow_fallback ? HexEx::PillowPolicy::IfNeeded : HexEx::PillowPolicy::Never);
+        try {
+            repair = HexEx::untangleWithRepair(hm, ro, &input_boundary);
+        } catch (const std::invalid_argument& e) {
+            progress.finish();
+            std::cerr << "hexex extract: error: " << (optimize_opt.pillow ? "--pillow: " : "") << e.what() << "\n";
+            return 2;
+        }
         extras.untangle = &untangle_rep;
-        if (optimize) {
-            optimize_opt.threads = opt.threads;
-            try {
-                optimize_rep = HexEx::optimizeHexMesh(hm, optimize_opt, &input_boundary);
-            } catch (const std::invalid_argument& e) {
-                progress.finish();
-                std::cerr << "hexex extract: error: " << (optimize_opt.pillow ? "--pillow: " : "") << e.what() << "\n";
-                return 2;
-            }
-            extras.optimize = &optimize_rep;
-            if (optimize_rep.pillowed_hexes > 0) {  // the written mesh has the layer
-                rep.output.hexes = static_cast<long>(hm.hexes.size());
-                rep.output.vertices = static_cast<long>(hm.vertices.size());
-            }
+        if (!repair.note.empty()) {
+            if (!quiet) std::cerr << "hexex extract: " << repair.note << "\n";
+            extras.warnings.push_back(repair.note);
+        }
+        optimize = repair.optimized;
+        if (optimize) extras.optimize = &optimize_rep;
+        if (optimize && optimize_rep.pillowed_hexes > 0) {  // the written mesh has the layer
+            rep.output.hexes = static_cast<long>(hm.hexes.size());
+            rep.output.vertices = static_cast<long>(hm.vertices.size());
         }
         extras.quality = HexEx::computeQuality(hm, opt.threads);
     }
@@ -414,7 +429,7 @@ int runExtract(const Args& args) {
         std::cerr << "hexex extract: " << untangle_rep.message << "\n";
         // Hexes with several faces on the boundary can be beyond any placement with the
         // boundary on its surface (algorithm.md, boundary pillowing); a layer changes that.
-        if (!optimize_opt.pillow)
+        if (!optimize_opt.pillow && !repair.optimized)
             std::cerr << "hexex extract: hint: a hex with two or more faces on the boundary may have no valid "
                          "placement with the boundary kept on its surface; --pillow first inserts a layer of "
                          "hexes along the boundary (more hexes) and then untangles and optimises\n";
