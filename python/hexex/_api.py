@@ -50,7 +50,7 @@ def _check_float(value, name: str) -> float:
 
 def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, merge: bool = True,
             rotations=None, max_memory: int = 0, cheap_folds: bool = True, untangle: bool = False,
-            annihilation_retries: bool = True, optimize: bool = False, pillow: bool = False,
+            annihilation_retries: bool = True, optimize: bool = False, pillow=None,
             provenance: bool = False) -> ExtractionResult:
     """Extracts the hex mesh of a tet mesh with an integer-grid map.
 
@@ -87,8 +87,13 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
             boundary vertices on the boundary of the input tet mesh; implies ``untangle``
             (``hexex extract --optimize``). The report then also has the key ``optimize``
             and its ``quality`` is measured after optimising.
-        pillow: before optimising, insert a layer of hexes along the boundary (see
-            :func:`optimize`); implies ``optimize`` (``hexex extract --pillow``).
+        pillow: True: before optimising, insert a layer of hexes along the boundary (see
+            :func:`optimize`); implies ``optimize`` (``hexex extract --pillow``). None (the
+            default): with ``untangle`` or ``optimize``, only if untangling alone leaves
+            hexes not certified valid; hexes outside the input's boundary are then removed,
+            the layer is added, and the mesh is untangled and optimised (the report's
+            ``warnings`` say so; not with ``provenance``). False: never
+            (``hexex extract --no-pillow``).
         provenance: also return where each hex and vertex comes from, as
             ``result.provenance``: a dict of int32 arrays ``hex_source_tet`` (h,) (the tet
             whose parameter image contains the hex's centre), ``hex_grid_cell`` (h, 3) (the
@@ -122,16 +127,48 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
                                                         max_memory, bool(cheap_folds), bool(annihilation_retries),
                                                         bool(provenance))
     report = json.loads(report)
-    optimize = optimize or pillow
+    if pillow is not None and not isinstance(pillow, bool):
+        raise TypeError(f"pillow must be True, False or None, got {type(pillow).__name__}")
+    optimize = optimize or bool(pillow)
     if untangle or optimize:
         boundary = _boundary_triangles(tets)
         pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, boundary, False,
                                                   threads, 1, 40.0, False, 10)
         report["untangle"] = u
-        if optimize:
+        # As hexex extract (HexEx::untangleWithRepair): untangling moves vertices only; where
+        # it leaves hexes not certified valid, the layer of --pillow is the repair.
+        bad = u["invalid_after"] + u["undecided_after"]
+        repair = pillow is None and bad > 0
+        if repair and (len(polyhedra) > 0 or provenance):
+            why = "the mesh has polyhedra" if len(polyhedra) > 0 else "provenance=True (pillowing adds hexes)"
+            report.setdefault("warnings", []).append(
+                f"untangling alone left {bad} hexes not certified valid; no pillowing repair: {why}")
+            repair = False
+        if repair:
+            try:
+                repaired = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
+                                          0.9, 40.0, 40, 60, True)
+            except ValueError as e:  # the layer's input checks (e.g. a non-manifold boundary)
+                report.setdefault("warnings", []).append(
+                    f"untangling alone left {bad} hexes not certified valid; the pillowing repair was not "
+                    f"possible: {e}")
+                repair = False
+        if repair:
+            pts, hexes, polyhedra, o = repaired
+            report["optimize"] = o
+        elif optimize:
             pts, hexes, polyhedra, o = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
                                                       0.9, 40.0, 40, 60, bool(pillow))
             report["optimize"] = o
+        if repair and not o["success"]:
+            report.setdefault("warnings", []).append(
+                f"untangling alone left {bad} hexes not certified valid; the pillowing repair did not succeed: "
+                f"{o['message']}")
+        elif repair:
+            report.setdefault("warnings", []).append(
+                f"untangling alone left {bad} hexes not certified valid; repaired as with --pillow: "
+                f"{o['trimmed_hexes']} hexes outside the surface removed, {o['pillowed_hexes']} hexes added "
+                f"along the boundary, then untangled and optimised ({o['invalid_after']} hexes invalid after)")
         # The quality keys of the report, measured on the moved mesh (as hexex extract does).
         quality = _core.validate(pts, hexes, polyhedra)["quality"]
         report["quality"] = {k: quality[k] for k in ("min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes",
