@@ -6,6 +6,7 @@
 
 #include "../Core/Parallel.hh"
 #include "BoundaryPillowing.hh"
+#include "FlatCornerSplitting.hh"
 #include "FoldedBoundary.hh"
 #include "SurfaceProjection.hh"
 #include "../Mesh/HexArcs.hh"
@@ -35,6 +36,9 @@ enum Kind : char {
 
 /// Number of variables of a vertex kind.
 int dofOf(char k) { return k == kInterior ? 3 : k == kSurface ? 2 : k == kCurve ? 1 : 0; }
+
+/// Problem size (hexes of a global block) above which OptimizeOptions::pillow_handover_gain applies.
+constexpr std::size_t kHandoverElements = 2000;
 
 /// Largest exponent of the soft minimum's terms (keeps exp() finite).
 constexpr double kMaxExponent = 600;
@@ -292,6 +296,9 @@ public:
                 valid_[c] = new_valid[i] != 0;
             }
             const double m1 = minSJ();
+            if (opt_.pillow && opt_.pillow_handover_gain > 0 && elems_.size() > kHandoverElements &&
+                m1 - m0 < opt_.pillow_handover_gain)
+                break;  // large layered mesh, slow block: the local phase takes over
             if (m1 - m0 < 1e-4) {
                 if (++slow >= 3) {
                     k *= 2.5;
@@ -848,6 +855,13 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
                         }
                     }
                 }
+            }
+            if (options.pillow_flat_corners && rep.pillowed_hexes > 0) {
+                FlatCornerOptions fo;
+                fo.feature_angle_deg = options.feature_angle_deg;
+                const FlatCornerReport fr = splitFlatFeatureCorners(mesh, fo);
+                rep.pillowed_hexes += fr.hexes_added;
+                rep.pillow_vertices += fr.vertices_added;
             }
         } else {
             sj_input.clear();  // refused below by Optimizer::start()

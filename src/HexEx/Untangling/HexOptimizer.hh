@@ -69,6 +69,18 @@ struct OptimizeOptions {
     /// layer too (PillowOptions::layered_from): relieves their hexes with two flat boundary
     /// faces at the cost of more hexes.
     bool pillow_second_layer = false;
+    /// After the layer (and the untangling it may need), split the hexes of boundary quads
+    /// with a flat corner (above 150 degrees) between two feature edges by a local pillow
+    /// (splitFlatFeatureCorners(), FlatCornerSplitting.hh): removes the bound sin(corner
+    /// angle) that the layer keeps there. Its hexes and vertices count in pillowed_hexes and
+    /// pillow_vertices.
+    bool pillow_flat_corners = true;
+    /// With OptimizeOptions::pillow: the global phase hands over to the local phase after the
+    /// first accepted block over more than 2,000 hexes that raises the worst scaled Jacobian
+    /// by less than this (0: never). On a large layered mesh the worst hexes are then a few
+    /// local spots, which the local phase's vertex moves raise at a fraction of the cost of
+    /// more global blocks over thousands of hexes. Small meshes are not affected.
+    double pillow_handover_gain = 0.005;
 };
 
 /// What optimizeHexMesh() did. Scaled Jacobians are per hex (minimum over its 8 corners).
@@ -105,8 +117,8 @@ struct OptimizeReport {
     long local_moves = 0;                    ///< accepted vertex moves of the local phase
     double seconds = 0;                      ///< wall time
     bool reached_target = false;             ///< min_scaled_jacobian_after >= OptimizeOptions::target
-    long pillowed_hexes = 0;                 ///< hexes added by OptimizeOptions::pillow (one per boundary quad; 0 without)
-    long pillow_vertices = 0;                ///< vertices added by the pillowing (one per boundary vertex)
+    long pillowed_hexes = 0;                 ///< hexes added by OptimizeOptions::pillow (one per boundary quad, 5 per hex split at a flat corner; 0 without)
+    long pillow_vertices = 0;                ///< vertices added by the pillowing (one per boundary vertex, 8 per split hex)
     double min_scaled_jacobian_pillowed = 0; ///< worst SJ right after the pillowing (and the untangling it may need)
     long pillow_invalid = 0;                 ///< hexes not certified valid right after the pillowing (the untangler then runs)
     /// Hexes removed before the pillowing: a flap outside the surface that held hexes not
