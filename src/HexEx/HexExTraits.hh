@@ -11,6 +11,7 @@
 #include "Mesh/MeshTraits.hh"
 
 #include <type_traits>
+#include <utility>
 
 namespace HexEx {
 
@@ -32,7 +33,8 @@ inline constexpr bool useTraitsOverload =
 ///
 /// The input is copied into the built-in kernel (toParametrizedTetMesh(), which builds the
 /// adjacency; a ParametrizedTetMesh whose adjacency is already built is used in place), the
-/// extraction runs as in the non-template overload, and the result is written through the
+/// extraction runs as in the non-template overload (taking the copy's parameters over as its
+/// working copy), and the result is written through the
 /// output traits (fromHexMesh(); a HexMesh output is written directly). @p output is
 /// cleared first and is left untouched if an exception is thrown before the writing starts.
 ///
@@ -43,12 +45,13 @@ inline constexpr bool useTraitsOverload =
 template <class InMesh, class OutMesh,
           std::enable_if_t<detail::useTraitsOverload<InMesh, OutMesh>, int> = 0>
 ExtractionReport extractHexMesh(const InMesh& input, OutMesh& output, const ExtractionOptions& options = {}) {
-    auto run = [&](const ParametrizedTetMesh& pm) {
+    // pm: the input in place (const) or its copy, whose parameters the pipeline takes over.
+    auto run = [&](auto&& pm) {
         if constexpr (std::is_same_v<OutMesh, HexMesh>) {
-            return extractHexMesh(pm, output, options);
+            return extractHexMesh(std::forward<decltype(pm)>(pm), output, options);
         } else {
             HexMesh hm;
-            ExtractionReport report = extractHexMesh(pm, hm, options);
+            ExtractionReport report = extractHexMesh(std::forward<decltype(pm)>(pm), hm, options);
             fromHexMesh(hm, output);
             return report;
         }

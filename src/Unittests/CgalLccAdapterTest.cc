@@ -457,3 +457,24 @@ TEST(CgalLccAdapter, ProvenanceThroughCallables) {
         EXPECT_EQ(points[v], hm.vertices[v]);
     }
 }
+
+TEST(CgalLccAdapter, VertexNumberingFollowsTheContainerWithHoles) {
+    // 1,000 attributes fill several of CGAL's blocks; erasing every seventh leaves holes,
+    // and 20 new ones go into some of them.
+    TetLcc lcc;
+    std::vector<TetLcc::Vertex_attribute_handle> made;
+    for (int i = 0; i < 1000; ++i) made.push_back(lcc.create_vertex_attribute(TetLcc::Point(i, 0, 0)));
+    for (std::size_t i = 0; i < made.size(); i += 7) lcc.erase_vertex_attribute(made[i]);
+    for (int i = 0; i < 20; ++i) lcc.create_vertex_attribute(TetLcc::Point(-i, 1, 0));
+    const HexEx::detail::LccVertexNumbering numbering(lcc);
+    ASSERT_EQ(numbering.size(), 1000u - 143u + 20u);
+    std::size_t k = 0;
+    for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it, ++k) {
+        ASSERT_EQ(numbering.find(&*it), k);
+        // An address inside an attribute is none of them.
+        EXPECT_EQ(numbering.find(reinterpret_cast<const char*>(&*it) + 1), HexEx::detail::LccVertexNumbering::npos);
+    }
+    EXPECT_EQ(k, numbering.size());
+    const TetLcc::Point elsewhere(0, 0, 0);
+    EXPECT_EQ(numbering.find(&elsewhere), HexEx::detail::LccVertexNumbering::npos);
+}

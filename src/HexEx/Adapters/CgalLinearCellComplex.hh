@@ -18,6 +18,7 @@
 #include "../Core/Vec.hh"
 #include "../HexExTraits.hh"
 #include "../Mesh/HexProvenance.hh"
+#include "LccVertexNumbering.hh"
 
 #include <CGAL/number_utils.h>
 
@@ -147,24 +148,17 @@ std::array<typename LCC::Dart_const_handle, 4> lccTetCornerDarts(const LCC& lcc,
     return {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
 }
 
-/// Numbers the vertex attributes of @p lcc in their order: attribute address -> index.
+/// The number (LccVertexNumbering of @p lcc) of the vertex of dart @p d of tet @p t; throws
+/// InputError if the dart has no vertex attribute or one that is not among the LCC's.
 template <class LCC>
-std::unordered_map<const void*, std::size_t> lccVertexIndex(const LCC& lcc) {
-    std::unordered_map<const void*, std::size_t> index;
-    index.reserve(lcc.vertex_attributes().size());
-    for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
-        index.emplace(static_cast<const void*>(&*it), index.size());
-    return index;
-}
-
-/// The index of the vertex of dart @p d of tet @p t (see lccVertexIndex()); throws
-/// InputError if the dart has no vertex attribute.
-template <class LCC>
-std::size_t lccVertexOf(const LCC& lcc, const std::unordered_map<const void*, std::size_t>& index,
-                        typename LCC::Dart_const_handle d, std::size_t t) {
+std::size_t lccVertexOf(const LCC& lcc, const LccVertexNumbering& index, typename LCC::Dart_const_handle d,
+                        std::size_t t) {
     const auto va = lcc.vertex_attribute(d);
     if (va == nullptr) throw InputError("LCC volume " + std::to_string(t) + ": a dart has no vertex attribute");
-    return index.at(static_cast<const void*>(&*va));
+    const std::size_t v = index.find(static_cast<const void*>(&*va));
+    if (v == LccVertexNumbering::npos)
+        throw InputError("LCC volume " + std::to_string(t) + ": a dart's vertex attribute is not one of the LCC's");
+    return v;
 }
 
 } // namespace detail
@@ -264,7 +258,7 @@ public:
     explicit LccTetMesh(const LCC& lcc, ParamFn param = ParamFn()) : lcc_(&lcc), param_(std::move(param)) {
         static_assert(LCC::dimension == 3 && LCC::ambient_dimension == 3,
                       "HexEx::LccTetMesh needs a Linear_cell_complex of dimension 3 in 3D");
-        const std::unordered_map<const void*, std::size_t> index = detail::lccVertexIndex(lcc);
+        const detail::LccVertexNumbering index(lcc);
         for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
             vertices_.push_back(it);
         for (auto it = lcc.template one_dart_per_cell<3>().begin(); it != lcc.template one_dart_per_cell<3>().end();

@@ -18,6 +18,7 @@
 #include <functional>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace HexEx {
@@ -67,7 +68,7 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
                                              const std::function<int(const LCC&, typename LCC::Dart_const_handle)>* given = nullptr,
                                              std::vector<int>* givenOut = nullptr) {
     using Dart = typename LCC::Dart_const_handle;
-    const std::unordered_map<const void*, std::size_t> index = lccVertexIndex(lcc);
+    const LccVertexNumbering index(lcc);
     // A closed tet volume has 12 darts: the number of tets without a pass over the darts
     // (one_dart_per_cell<3>().size() walks them all).
     const std::size_t nv = index.size(), nt = lcc.number_of_darts() / 12;
@@ -75,11 +76,16 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
     if (nv > kMax || nt > kMax)
         throw InputError("mesh too large: " + std::to_string(nv) + " vertices, " + std::to_string(nt) +
                          " tets (at most " + std::to_string(kMax) + " each)");
+    // Filled once each (reserve + push_back, no per-cell growth of the kernel's property
+    // arrays) and moved into the kernel.
+    std::vector<Vec3d> positions;
+    std::vector<std::array<VertexHandle, 4>> cells;
     ParametrizedTetMesh pm;
-    pm.mesh.reserve(nv, nt);
+    positions.reserve(nv);
+    cells.reserve(nt);
     pm.params.reserve(nt);
     for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
-        pm.mesh.add_vertex(lccToVec3d(it->point()));
+        positions.push_back(lccToVec3d(it->point()));
     std::array<VertexHandle, 4> h;
     std::array<Vec3d, 4> u;
     // One dart per volume in the order of one_dart_per_cell<3>() (the darts in container
@@ -97,7 +103,7 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
             h[i] = VertexHandle(static_cast<int>(lccVertexOf(lcc, index, c[i], t)));
             u[i] = lccToVec3d(param(lcc, c[i]));
         }
-        pm.mesh.add_cell(h);
+        cells.push_back(h);
         pm.params.push_back(u);
         if (tetDarts) tetDarts->push_back(c[0]);
         if (given && *given) {
@@ -115,6 +121,7 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
             }
         }
     }
+    pm.mesh.assign(std::move(positions), std::move(cells));
     pm.mesh.build_adjacency(threads);
     return pm;
 }
@@ -184,12 +191,14 @@ ExtractionReport extractLcc(const TetLcc& tets, const ParamFn& param, HexLcc& he
     {
         std::vector<int> given;
         ExtractionOptions opt = options;
-        const ParametrizedTetMesh pm = lccToParametrizedTetMesh(tets, param, options.threads,
-                                                                results.any() ? &tetDarts : nullptr,
-                                                                &results.given_rotation, &given);
+        ParametrizedTetMesh pm = lccToParametrizedTetMesh(tets, param, options.threads,
+                                                          results.any() ? &tetDarts : nullptr,
+                                                          &results.given_rotation, &given);
         if (results.given_rotation) opt.given_rotations = &given;
         if (provenance) opt.provenance = &prov;
-        report = extractHexMesh(pm, hm, opt);
+        // The pipeline takes the parameters over unless the transitions are reported from them.
+        if (results.transition || results.singular_edge) report = extractHexMesh(pm, hm, opt);
+        else report = extractHexMesh(std::move(pm), hm, opt);
         reportLccTetResults(tets, pm, tetDarts, opt, results);
     }
     LccHexOutput<HexLcc> out(hexes);

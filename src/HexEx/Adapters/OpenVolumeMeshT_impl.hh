@@ -270,11 +270,13 @@ ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT
     {
         std::vector<int> given;
         ExtractionOptions opt = options;
-        const ParametrizedTetMesh pm =
+        ParametrizedTetMesh pm =
             ovmToParametrizedTetMesh(tetMesh, paramOf, options.threads, results.given_rotation, &given);
         if (results.given_rotation) opt.given_rotations = &given;
         if (hexResults.any() && !opt.provenance) opt.provenance = &prov;
-        report = extractHexMesh(pm, hm, opt);
+        // The pipeline takes the parameters over unless the transitions are written from them.
+        if (results.rotation || results.translation || results.singular_valence) report = extractHexMesh(pm, hm, opt);
+        else report = extractHexMesh(std::move(pm), hm, opt);
         writeOvmTetProperties(tetMesh, pm, opt, results);
     }  // the copy of the input is freed before the output is written
     OvmHexOutput<HexMeshT> out(hexMesh);

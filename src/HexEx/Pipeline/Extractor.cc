@@ -56,8 +56,8 @@ struct PipelineState {
 // The pipeline (Documentation/algorithm.md, "Stages"): every stage is a function of
 // src/HexEx/Pipeline with a plain input and output struct; its counts go into the report
 // as they come.
-ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt,
-                             PipelineState& state) {
+ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* ownedParams, HexMesh& output,
+                             const ExtractionOptions& opt, PipelineState& state) {
     ExtractionReport rep;
     const TetMesh& mesh = input.mesh;
     const int threads = resolveThreadCount(opt.threads);
@@ -72,7 +72,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     StageClock clock;
 
     enter("preprocess");
-    const PreprocessOutput pre = preprocess({&input, opt.given_rotations, opt.epsilon, opt.max_hexes, threads});
+    const PreprocessOutput pre = preprocess({&input, opt.given_rotations, opt.epsilon, opt.max_hexes, threads, ownedParams});
     addToReport(pre, rep);
     const bool implicit = useImplicitCells(opt.implicit_cells, pre.stats.flipped_tets);
     const bool cheapFolds = opt.cheap_folds && !opt.arcs;
@@ -144,12 +144,14 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, HexMesh& output, 
     progress("done", 1);
     return rep;
 }
-} // namespace
 
-ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt) {
+/// Runs the pipeline on @p input (its parameters taken over if @p ownedParams is
+/// input.params) and turns an allocation failure into a ResourceError.
+ExtractionReport extractGuarded(const ParametrizedTetMesh& input, CornerParams* ownedParams, HexMesh& output,
+                                const ExtractionOptions& opt) {
     PipelineState state;
     try {
-        return runPipeline(input, output, opt, state);
+        return runPipeline(input, ownedParams, output, opt, state);
     } catch (const std::bad_alloc&) {
         // Whatever failed to allocate has been freed by the unwinding: there is room for the message.
         const MemoryEstimate& est = state.estimate;
@@ -159,6 +161,15 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
                      ", estimated need " + formatBytes(est.bytes) + ")";
         throw ResourceError(memoryRefusal(cause, est.largest_tets.empty() ? nullptr : &est));
     }
+}
+} // namespace
+
+ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output, const ExtractionOptions& opt) {
+    return extractGuarded(input, nullptr, output, opt);
+}
+
+ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output, const ExtractionOptions& opt) {
+    return extractGuarded(input, &input.params, output, opt);
 }
 
 } // namespace HexEx

@@ -19,4 +19,11 @@ namespace HexEx {
 ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& output,
                                 const ExtractionOptions& options = {});
 
+/// The same, taking the corner parameters of @p input over as the pipeline's working copy
+/// instead of copying them (one copy of 96 bytes per tet less in time and peak memory):
+/// for an input built only for this call, e.g. read from another mesh kernel. Same result
+/// as the overload above; afterwards `input.params` is empty and `input.mesh` unchanged.
+ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output,
+                                const ExtractionOptions& options = {});
+
 } // namespace HexEx

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <iomanip>
 #include <sstream>
+#include <utility>
 
 namespace HexEx {
 
@@ -194,7 +195,9 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     out.stats.vertices = static_cast<long>(mesh.n_vertices());
     out.stats.tets = static_cast<long>(mesh.n_cells());
     out.stats.boundary_faces = static_cast<long>(mesh.n_boundary_faces());
-    out.params = input.params;  // the working copy: sanitization changes it
+    // The working copy (sanitization changes it), taken over when the caller owns the input.
+    if (in.owned_params) out.params = std::move(*in.owned_params);
+    else out.params = input.params;
     // Unusable maps are refused up front with a clear message rather than exhausting memory.
     out.abs_volume = checkedAbsVolume(out.params, in.threads, out.cost.largest_input);
     // The volume limit is checked after the sanitization, which may repair corrupted corners

@@ -22,6 +22,9 @@ struct PreprocessInput {
     double epsilon = 1e-6;                              ///< sanitization tolerance
     double max_hexes = 4e7;                             ///< limit on the unsigned parametric volume
     int threads = 1;                                    ///< worker threads (resolved, >= 1)
+    /// If set, the parameters taken (moved from) as the working copy instead of copying
+    /// input->params; they must be input->params itself (a caller that owns the input).
+    CornerParams* owned_params = nullptr;
 };
 
 /// What the memory estimate (estimateMemory()) needs from every tet, gathered by the
