@@ -502,15 +502,26 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     std::vector<DartLinks> alpha(n);
     const int chunks = std::max(1, threads);
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
-    // alpha_0 and alpha_3 are the expensive traces (they cross tets). Pass 1 traces them only
-    // from the darts whose d1 (alpha_0) or d3 (alpha_3) points in the positive axis direction
-    // of their own chart; a found partner that is still pending gets the link back (the
-    // smallest dart that found it); pass 2 traces whatever is still pending (partners seen through a
-    // transition that flips the direction, boundaries, failures).
+    // Each link is traced from one of its two darts where the frames tell which: pass 1
+    // traces alpha_i only from the darts that are not deferred for i, a found partner that
+    // is deferred gets the link back (the smallest dart that found it), and pass 2 traces
+    // whatever is still pending (partners seen through a transition that changes the
+    // frame's orientation, boundaries, failures). A regular dart is deferred for alpha_0 if
+    // d1 points in the negative axis direction of its chart, for alpha_3 if d3 does, for
+    // alpha_1 if d1 > d2 (direction codes) and for alpha_2 if d2 > d3; the two darts of a
+    // link within one chart and of one sign have (d1, -d1), (-d3, d3), swapped (d1, d2) or
+    // swapped (d2, d3), so exactly one of them is deferred. An anti dart is deferred in the
+    // opposite cases: a link between a regular and an anti dart joins the same frame at
+    // the same grid point (the walk crosses the fold and comes back), so with the same
+    // rule both would be traced (or both deferred). Where every traced link is mutual
+    // (the report's asymmetric_links is 0), the links are exactly those of tracing every
+    // dart itself; a one-sided link can end up mutual here where that would have cut it.
     constexpr int kPending = std::numeric_limits<int>::min();
     auto deferred = [&](std::size_t d, int i) {
-        const auto& f = darts.darts[d].d;
-        return (i == 0 && dirSign(f[0]) < 0) || (i == 3 && dirSign(f[2]) < 0);
+        const Dart& D = darts.darts[d];
+        const auto& f = D.d;
+        const bool upper = i == 0 ? dirSign(f[0]) < 0 : i == 1 ? f[0] > f[1] : i == 2 ? f[1] > f[2] : dirSign(f[2]) < 0;
+        return upper != (D.sign < 0);
     };
     auto record = [&](TraceStats& st, std::size_t d, int i, long p) {
         alpha[d][i] = static_cast<int>(p);
@@ -590,7 +601,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     // Other threads only read entries that are not deferred, so these never conflict.
     parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d)
-            for (int i : {0, 3}) {
+            for (int i = 0; i < 4; ++i) {
                 if (deferred(d, i)) continue;
                 const int p = alpha[d][i];
                 if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) continue;
@@ -606,7 +617,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st;
         for (std::size_t d = b; d < e; ++d)
-            for (int i : {0, 3})
+            for (int i = 0; i < 4; ++i)
                 if (alpha[d][i] == kPending) record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
         part2[static_cast<std::size_t>(k)] = st;
     });
