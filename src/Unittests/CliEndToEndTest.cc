@@ -13,10 +13,12 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -485,4 +487,39 @@ TEST_F(CliEndToEndTest, UntangleReleasesFeatureVerticesUnlessKept) {
         << r.err;
     r = run({"untangle", fold, "-o", path("x.vtk"), "--quality-iterations", "-1"});
     EXPECT_EQ(r.status, 2) << r.out << r.err;
+}
+
+TEST_F(CliEndToEndTest, ProvenanceCsvNamesEveryHexsTetAndCell) {
+    generateCube("cube.hexex", 2, 3);  // 48 tets, parameters in [0, 3]^3: 27 hexes
+    const RunResult r = run({"extract", path("cube.hexex"), "-o", path("cube.vtu"), "--provenance", path("p.csv")});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("wrote the provenance of 27 hexes to"), std::string::npos) << r.err;
+    std::istringstream in(slurp(path("p.csv")));
+    std::string line;
+    ASSERT_TRUE(std::getline(in, line));
+    EXPECT_EQ(line, "hex,tet,i,j,k");
+    std::set<std::array<int, 3>> cells;
+    int expectedHex = 0;
+    while (std::getline(in, line)) {
+        int h = -1, t = -1;
+        std::array<int, 3> c{};
+        char sep[4];
+        std::istringstream ls(line);
+        ls >> h >> sep[0] >> t >> sep[1] >> c[0] >> sep[2] >> c[1] >> sep[3] >> c[2];
+        ASSERT_TRUE(ls && sep[0] == ',' && sep[3] == ',') << line;
+        EXPECT_EQ(h, expectedHex++);
+        EXPECT_GE(t, 0);
+        EXPECT_LT(t, 48);
+        for (const int x : c) {
+            EXPECT_GE(x, 0) << line;
+            EXPECT_LE(x, 2) << line;
+        }
+        cells.insert(c);
+    }
+    EXPECT_EQ(expectedHex, 27);
+    EXPECT_EQ(cells.size(), 27u);  // every grid cell of the cube once
+    const RunResult pillow =
+        run({"extract", path("cube.hexex"), "-o", path("c2.vtu"), "--provenance", path("q.csv"), "--pillow"});
+    EXPECT_EQ(pillow.status, 2);
+    EXPECT_NE(pillow.err.find("--provenance and --pillow exclude each other"), std::string::npos) << pillow.err;
 }

@@ -18,6 +18,7 @@
 #include <HexEx/IO/ReportJson.hh>
 #include <HexEx/Mesh/BoundarySurface.hh>
 #include <HexEx/Mesh/HexMeshQuality.hh>
+#include <HexEx/Mesh/HexProvenance.hh>
 #include <HexEx/Predicates/ExactPredicates.hh>
 #include <HexEx/Preprocessing/SingularityGraph.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
@@ -26,6 +27,7 @@
 #include <HexEx/Untangling/Untangler.hh>
 #include <HexEx/Untangling/UntangleWithRepair.hh>
 
+#include <array>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -65,6 +67,9 @@ const char* kExtractUsage =
     "  --edge-arcs A.vtu       write the exact image of every hex edge in the input as VTK polylines\n"
     "                          (cell data edge_id, vertex0, vertex1)\n"
     "  --face-patches P.vtu    write the exact image of every hex face as VTK triangles (cell data face_id)\n"
+    "  --provenance P.csv      write per hex its source tet and integer grid cell (CSV: hex,tet,i,j,k;\n"
+    "                          the cell is [i,i+1]x[j,j+1]x[k,k+1] in the tet's chart); not with\n"
+    "                          --pillow, and --untangle then keeps the hexes as extracted (--no-pillow)\n"
     "  --untangle              move vertices so that no hex is inverted (folded maps), boundary\n"
     "                          vertices on the input's boundary surface; prints a report\n"
     "  --optimize              then raise the worst scaled Jacobian (implies --untangle; boundary\n"
@@ -163,6 +168,20 @@ void writeParamMeshVtk(const std::string& path, const HexEx::ParametrizedTetMesh
     if (!out) throw HexEx::InputError(path + ": write failed");
 }
 
+/// Per hex its source tet and integer grid cell (HexProvenance) as CSV lines
+/// `hex,tet,i,j,k` after a header line; throws InputError if the file cannot be written.
+void writeProvenanceCsv(const std::string& path, const HexEx::HexProvenance& prov) {
+    std::ofstream out(path);
+    if (!out) throw HexEx::InputError(path + ": cannot open for writing");
+    out << "hex,tet,i,j,k\n";
+    for (std::size_t h = 0; h < prov.hex_source_tet.size(); ++h) {
+        const std::array<int, 3>& c = prov.hex_grid_cell[h];
+        out << h << ',' << prov.hex_source_tet[h] << ',' << c[0] << ',' << c[1] << ',' << c[2] << '\n';
+    }
+    out.flush();
+    if (!out) throw HexEx::InputError(path + ": write failed");
+}
+
 /// Singular edges of the input (transitions inferred from the parameters), in 3D.
 void writeSingularities(const std::string& path, const HexEx::ParametrizedTetMesh& pm, long* n_edges) {
     const HexEx::SingularityGraph g = HexEx::singularityGraph(pm);
@@ -214,10 +233,11 @@ int runExtract(const Args& args) {
         {"--no-annihilation-retries", false, ""},
         {"--edge-arcs", true, ""},        {"--face-patches", true, ""},    {"--untangle", false, ""},
         {"--optimize", false, ""},        {"--target", true, ""},           {"--pillow", false, ""},
-        {"--no-pillow", false, ""},
+        {"--no-pillow", false, ""},       {"--provenance", true, ""},
     };
-    std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path;
+    std::string input, output, report_path, sing_path, param_path, surface_path, arcs_path, patches_path, provenance_path;
     HexEx::HexArcs arcs;
+    HexEx::HexProvenance provenance;
     HexEx::ExtractionOptions opt;
     HexEx::VtuEncoding encoding = HexEx::VtuEncoding::Binary;
     bool quiet = false, untangle = false, optimize = false, pillow_fallback = true;
@@ -266,6 +286,14 @@ int runExtract(const Args& args) {
         untangle = pa.has("--untangle") || optimize;
         if (pa.has("--pillow") && pa.has("--no-pillow")) throw UsageError("--pillow and --no-pillow exclude each other");
         pillow_fallback = !pa.has("--no-pillow");
+        provenance_path = pa.get("--provenance");
+        if (pa.has("--provenance")) {
+            // The layer adds hexes of no source tet (and may remove some): the indices would not match.
+            if (pa.has("--pillow"))
+                throw UsageError("--provenance and --pillow exclude each other (the layer's hexes have no source tet)");
+            pillow_fallback = false;
+            opt.provenance = &provenance;
+        }
         optimize_opt.target = pa.getDouble("--target", optimize_opt.target, -1, 1);
         surface_path = pa.get("--surface");
         if (pa.has("--surface") && !HexEx::isSurfaceMeshPath(surface_path))
@@ -388,6 +416,14 @@ int runExtract(const Args& args) {
     if (!arcs_path.empty()) {
         if (!write([&] { HexEx::writeEdgeArcsVtu(arcs_path, arcs); return std::vector<std::string>{}; })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote " << rep.arcs.edges - rep.arcs.failed_edges << " edge arcs to " << arcs_path << "\n";
+    }
+    if (!provenance_path.empty()) {
+        if (dropped.second > 0) {  // the hexes after a dropped one moved: indices would not match
+            std::cerr << "hexex extract: error: " << provenance_path << ": not written (cells were dropped)\n";
+            return 2;
+        }
+        if (!write([&] { writeProvenanceCsv(provenance_path, provenance); return std::vector<std::string>{}; })) return 2;
+        if (!quiet) std::cerr << "hexex extract: wrote the provenance of " << provenance.hex_source_tet.size() << " hexes to " << provenance_path << "\n";
     }
     if (!patches_path.empty()) {
         if (!write([&] { HexEx::writeFacePatchesVtu(patches_path, arcs); return std::vector<std::string>{}; })) return 2;
