@@ -9,7 +9,10 @@
 # Usage: scripts/stage-scaling.sh [BUILD_DIR]     (default BUILD_DIR: <repo>/build; needs the
 #        targets hexex, stage_benchmark and writer_benchmark)
 # Environment: REPEAT=3 (runs per measurement, the best is printed), CASES="cyl pig2",
-#              HEXEX_SHARED=DIR (default <repo>/../shared; pig2 is skipped without it).
+#              HEXEX_SHARED=DIR (default <repo>/../shared; pig2 is skipped without it),
+#              WRITE_TO=DIR (the writers write files into DIR, as hexex does, instead of
+#              growing an std::ostringstream; the times then include the kernel's copy of
+#              the bytes into the page cache).
 # On a shared machine the wall columns mean little; the CPU columns stay comparable.
 set -euo pipefail
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
@@ -39,9 +42,9 @@ for c in $CASES; do
     "$STAGES" "$TMP/$c.hexex" 1 "$REPEAT" > "$TMP/s1.txt"
     "$STAGES" "$TMP/$c.hexex" 2 "$REPEAT" > "$TMP/s2.txt"
     "$HEXEX" extract "$TMP/$c.hexex" -o "$TMP/$c.vtu" --threads 2 --quiet || [[ $? -eq 3 ]]
-    "$WRITERS" "$TMP/$c.vtu" 2 "$REPEAT" > "$TMP/w.txt"
+    "$WRITERS" "$TMP/$c.vtu" 2 "$REPEAT" ${WRITE_TO:+all "$WRITE_TO"} > "$TMP/w.txt"
     python3 - "$c" "$TMP/s1.txt" "$TMP/s2.txt" "$TMP/w.txt" <<'EOF'
-import sys
+import os, sys
 case, f1, f2, fw = sys.argv[1:]
 def stages(path):
     rows = {}
@@ -57,7 +60,7 @@ for name in s1:
     up = f"{w1 / w2:.2f}x" if w2 > 0 else "-"
     print(f"  {name:<12} {w1:8.3f} / {c1:6.3f}      {w2:8.3f} / {c2:6.3f}        {up}")
 ext, extCpu = s2["total"]
-print(f"{case}: writer (2 threads)  wall / cpu     wall / extraction wall ({ext:.3f} s)   cpu / extraction cpu ({extCpu:.3f} s)")
+print(f"{case}: writer (2 threads{', to files' if os.environ.get('WRITE_TO') else ', to memory'})  wall / cpu     wall / extraction wall ({ext:.3f} s)   cpu / extraction cpu ({extCpu:.3f} s)")
 for line in open(fw).read().splitlines()[1:]:
     parts = line.split()
     name, wall, cpu = parts[0], float(parts[1]), float(parts[4])

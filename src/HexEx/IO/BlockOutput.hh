@@ -6,6 +6,7 @@
 /// formats the items of a long range on several threads in the same byte order.
 
 #include "../Core/Parallel.hh"
+#include "DecimalFormat.hh"
 
 #include <algorithm>
 #include <charconv>
@@ -69,14 +70,18 @@ public:
     /// Appends an integer in decimal.
     template <class I, class = std::enable_if_t<std::is_integral_v<I> && !std::is_same_v<I, char>>>
     BlockOutput& operator<<(I v) {
-        used_ = static_cast<std::size_t>(std::to_chars(&buf_[used_], &buf_[used_] + 24, v).ptr - buf_.data());
+        char* at = &buf_[used_];
+        // formatUnsigned() for 0 to 2^32 - 1 (the same bytes, fewer divisions), to_chars otherwise.
+        bool small = static_cast<std::uint64_t>(v) <= 0xffffffffu;
+        if constexpr (std::is_signed_v<I>) small = small && v >= 0;
+        at = small ? formatUnsigned(at, static_cast<std::uint32_t>(v)) : std::to_chars(at, at + 24, v).ptr;
+        used_ = static_cast<std::size_t>(at - buf_.data());
         flushIfFull();
         return *this;
     }
     /// Appends @p x as printf's "%.17g" does (the same bytes; reads back bit-identically).
     BlockOutput& real17(double x) {
-        used_ = static_cast<std::size_t>(
-            std::to_chars(&buf_[used_], &buf_[used_] + 40, x, std::chars_format::general, 17).ptr - buf_.data());
+        used_ = static_cast<std::size_t>(formatReal17(&buf_[used_], x) - buf_.data());
         flushIfFull();
         return *this;
     }

@@ -1,5 +1,6 @@
 #include "ArcStage.hh"
 
+#include "../Core/HugePages.hh"
 #include "../Core/Parallel.hh"
 #include "../Core/Prefetch.hh"
 #include "HexElementNumbering.hh"
@@ -10,10 +11,6 @@
 #include <cstdint>
 #include <mutex>
 #include <optional>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace HexEx {
 
@@ -290,21 +287,6 @@ void traceBlock(const ArcInput& in, const HexElementOwners& edgeOwner, const Hex
             R.patch_size.push_back(R.triangles.size() - trisBefore);
         }
     }
-}
-
-/// Lets the kernel back the untouched range [p, p + bytes) with huge pages where it can:
-/// the output is written once, front to back, and 4 KiB page faults would cost more than
-/// filling it (Linux only; elsewhere, and if refused, nothing changes).
-void adviseHugePages(const void* p, std::size_t bytes) {
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    constexpr std::uintptr_t kHuge = std::uintptr_t(1) << 21;
-    const std::uintptr_t b = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
-    const std::uintptr_t e = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
-    if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_HUGEPAGE);
-#else
-    (void)p;
-    (void)bytes;
-#endif
 }
 
 /// Reserves room for @p more elements in @p v, extrapolating the final size from the
