@@ -15,8 +15,8 @@
 /// changes, into six hexes (5 hexes and 8 vertices are appended, H's index is kept for H*).
 ///
 /// Where the copies go: Q* is Q shrunk by the factor 1 - t about the midpoint of v and the
-/// vertex opposite it, and the inner copy of each of Q's vertices lies (1 - t) times H's
-/// edge from that vertex to F below it. t starts at FlatCornerOptions::width and is halved
+/// vertex opposite it (in Q's plane if Q is planar), and the copies of F's vertices lie t of
+/// the way from them to H's centroid. t starts at FlatCornerOptions::width and is halved
 /// until the six hexes are certified valid (classifyHexValidity()); if they never are, H is
 /// left as it was.
 ///
