@@ -12,11 +12,14 @@
 
 namespace {
 
-/// Extracts @p pm once through the const overload and once through the taking one.
+/// Extracts @p pm once through the const overload (1 thread) and once through the taking
+/// one (2 threads).
 void checkSameAsCopying(HexEx::ParametrizedTetMesh pm, std::size_t expectedHexes) {
     pm.mesh.build_adjacency();
     HexEx::HexMesh copied, taken;
-    const HexEx::ExtractionReport a = HexEx::extractHexMesh(pm, copied);
+    HexEx::ExtractionOptions one;
+    one.threads = 1;
+    const HexEx::ExtractionReport a = HexEx::extractHexMesh(pm, copied, one);
     const std::size_t cells = pm.mesh.n_cells(), faces = pm.mesh.n_faces();
     HexEx::ExtractionOptions opt;
     opt.threads = 2;
