@@ -1,15 +1,16 @@
 #pragma once
 /// @file HugePages.hh
 /// @ingroup kernel
-/// Large arrays on transparent huge pages: on Linux with transparent huge pages in "madvise"
-/// mode, an untouched range advised with MADV_HUGEPAGE is backed by 2 MiB pages at its first
-/// touch, one page fault per 2 MiB instead of one per 4 KiB. On this project's VM that makes
-/// the first touch of 300 MB about 4 times cheaper in CPU time (0.15 -> 0.04 s) once the
-/// guest has backed the memory. Elsewhere, or if the kernel refuses, nothing changes.
+/// Advice for transparent huge pages on large arrays: on Linux with transparent huge pages
+/// in "madvise" mode, an untouched range advised with MADV_HUGEPAGE is backed by 2 MiB pages
+/// at its first touch. Whether that pays depends on the machine: on this project's VM it
+/// cut the page faults but raised the system time of one-shot `hexex` runs (issue 36, third
+/// round, in performance.md), so the writers and the extraction stages do not use it; the
+/// arc stage advises its growing output arrays. Elsewhere, or if the kernel refuses,
+/// nothing changes.
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -30,18 +31,6 @@ inline void adviseHugePages(const void* p, std::size_t bytes) {
     (void)p;
     (void)bytes;
 #endif
-}
-
-/// Resizes @p v to @p n elements, advising the new storage for huge pages before the new
-/// elements are constructed (value-initialised, or left as they are by an allocator such
-/// as DefaultInitAllocator). Meant for empty vectors of many MiB that are then filled.
-template <class T, class Alloc>
-void resizeOnHugePages(std::vector<T, Alloc>& v, std::size_t n) {
-    if (n > v.capacity()) {
-        v.reserve(n);
-        adviseHugePages(v.data() + v.size(), (n - v.size()) * sizeof(T));
-    }
-    v.resize(n);
 }
 
 } // namespace HexEx

@@ -1,7 +1,6 @@
 #include "ConnectionTracing.hh"
 
 #include "../Core/Error.hh"
-#include "../Core/HugePages.hh"
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
@@ -500,10 +499,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     const std::size_t n = darts.darts.size();
     if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
-    // Every entry is written below; on huge pages its first touch (the zeroing) costs
-    // one page fault per 2 MiB instead of per 4 KiB (111 MB on the cylinder).
-    std::vector<DartLinks> alpha;
-    resizeOnHugePages(alpha, n);
+    std::vector<DartLinks> alpha(n);
     const int chunks = std::max(1, threads);
     std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     // Each link is traced from one of its two darts where the frames tell which: pass 1

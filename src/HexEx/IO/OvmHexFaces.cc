@@ -13,7 +13,6 @@
 #include "OvmHexFaces.hh"
 
 #include "../Core/DefaultInitAllocator.hh"
-#include "../Core/HugePages.hh"
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
@@ -94,10 +93,8 @@ struct CornerStars {
     std::vector<int, DefaultInitAllocator<int>> corner;  ///< 8 h + local index, grouped by vertex (every entry written)
     /// Counting sort of the corners of @p mesh by vertex, counted and filled on @p chunks threads
     /// (atomic slots: the order within a vertex varies, which no caller depends on).
-    CornerStars(const HexMesh& mesh, int chunks) {
+    CornerStars(const HexMesh& mesh, int chunks) : start(mesh.vertices.size() + 1, 0), corner(8 * mesh.hexes.size()) {
         const std::size_t nHex = mesh.hexes.size();
-        resizeOnHugePages(start, mesh.vertices.size() + 1);
-        resizeOnHugePages(corner, 8 * nHex);
         int* count = start.data() + 1;
         parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
             for (std::size_t h = h0; h < h1; ++h)
@@ -216,13 +213,9 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     // loop (bit 4 i + j of owned[h]: quad i, position j). Every hex edge (12 h + local edge)
     // gets a reference to its owner (32 owner hex + bit), so that the halfedges can then be
     // filled hex by hex in face order instead of per vertex again (scattered over memory).
-    // The large arrays are advised for huge pages before their first touch (HugePages.hh).
-    std::vector<int> nb;
-    resizeOnHugePages(nb, nLoops);
-    std::vector<std::uint32_t> owned;
-    resizeOnHugePages(owned, nHex);
-    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef;  // every entry written, no zeroing
-    resizeOnHugePages(ownerRef, 12 * nHex);
+    std::vector<int> nb(nLoops);
+    std::vector<std::uint32_t> owned(nHex, 0);
+    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
     parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
         struct Quad {  // a loop and its other three vertices, sorted
             int loop, a, b, d;
@@ -319,8 +312,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     // Edges: numbered in order of their first loop and position (count, prefix, rank of the
     // owner bit); then hex by hex, every owner writes its edges and every first loop its
     // halfedges (looked up through the owner references).
-    std::vector<int, DefaultInitAllocator<int>> edgeBase;  // per hex its first owned edge (< INT_MAX / 2, checked)
-    resizeOnHugePages(edgeBase, nHex);
+    std::vector<int, DefaultInitAllocator<int>> edgeBase(nHex);  // per hex its first owned edge (< INT_MAX / 2, checked)
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
         for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(owned[h]));
@@ -335,13 +327,10 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             n += static_cast<std::size_t>(bitCount(owned[h]));
         }
     });
-    out.edges.clear();
-    resizeOnHugePages(out.edges, nEdges);
+    out.edges.resize(nEdges);
     IntLists& fh = out.faceHalfedges;
-    fh.offsets.clear();
-    resizeOnHugePages(fh.offsets, nFaces + 1);
-    fh.values.clear();
-    resizeOnHugePages(fh.values, 4 * nFaces);
+    fh.offsets.resize(nFaces + 1);
+    fh.values.resize(4 * nFaces);
     parallelChunks(nFaces + 1, chunksFor(nFaces, threads), [&](int, std::size_t f0, std::size_t f1) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });

@@ -4,7 +4,6 @@
 #include "OvmModel.hh"
 
 #include "../Mesh/HexMeshCheck.hh"
-#include "../Core/HugePages.hh"
 #include "../Core/Parallel.hh"
 #include "OvmHexFaces.hh"
 #include "VtkCells.hh"
@@ -137,8 +136,7 @@ OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads) {
     const std::size_t nHex = mesh.hexes.size();
     const int chunks = nHex >= 20000 ? std::max(1, threads) : 1;
     if (mesh.polyhedra.empty()) {
-        m.cells.offsets.clear();
-        resizeOnHugePages(m.cells.offsets, nHex + 1);
+        m.cells.offsets.resize(nHex + 1);
         parallelChunks(nHex, chunks, [&](int, std::size_t c0, std::size_t c1) {
             for (std::size_t c = c0; c < c1; ++c) {
                 m.cells.offsets[c + 1] = 6 * (c + 1);
