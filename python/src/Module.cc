@@ -19,6 +19,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace HexExPython {
@@ -70,7 +71,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
         HexEx::ExtractionReport rep;
         {
             // The converted mesh lives only in this scope; freeing it counts in the total.
-            const HexEx::ParametrizedTetMesh pm = toTetMesh(points, tetIdx, params);
+            HexEx::ParametrizedTetMesh pm = toTetMesh(points, tetIdx, params);
             extras.read_s = secondsSince(t_start);
             HexEx::ExtractionOptions opt;
             opt.threads = threads;
@@ -81,7 +82,7 @@ nb::tuple extract(const DoubleArray& points, const nb::handle& tets, const Doubl
             opt.annihilation_retries = annihilation_retries;
             if (rotations) opt.given_rotations = &given;
             if (provenance) opt.provenance = &prov;
-            rep = HexEx::extractHexMesh(pm, hm, opt);
+            rep = HexEx::extractHexMesh(std::move(pm), hm, opt);  // takes the parameters over, no copy
         }
         extras.quality = HexEx::computeQuality(hm, threads);
         extras.total_s = secondsSince(t_start);

@@ -10,6 +10,7 @@
 
 #include <chrono>
 #include <cstring>
+#include <utility>
 
 namespace HexExC {
 
@@ -114,7 +115,7 @@ void extract(hexex_result* r, const double* points, std::int64_t n_points, const
         const std::string problem = pm.mesh.check_manifold();
         if (!problem.empty()) throw HexEx::InputError(problem);
         r->extras.read_s = std::chrono::duration<double>(Clock::now() - t0).count();
-        rep = HexEx::extractHexMesh(pm, hm, opt);
+        rep = HexEx::extractHexMesh(std::move(pm), hm, opt);  // takes the parameters over, no copy
     }
     r->extras.quality = HexEx::computeQuality(hm);
     r->extras.total_s = std::chrono::duration<double>(Clock::now() - t0).count();
