@@ -234,12 +234,18 @@ public:
     }
 
     double minSJ() const { return sj_.empty() ? 0.0 : *std::min_element(sj_.begin(), sj_.end()); }
+    /// True if the global phase handed over to the local phase before its block limit.
+    bool handedOver() const { return !std::isnan(handover_min_); }
+    /// The worst SJ when the global phase handed over (NaN if it did not).
+    double handoverMin() const { return handover_min_; }
 
-    /// Global phase: L-BFGS blocks on the soft minimum.
-    void globalPhase() {
+    /// Global phase: L-BFGS blocks on the soft minimum, at most max_global_blocks over all
+    /// calls. With @p handover it may stop early and hand over to the local phase (see
+    /// OptimizeOptions::pillow_handover_gain); handed_over_ then holds the worst SJ at that point.
+    void globalPhase(bool handover) {
         double k = 20;
         int slow = 0;
-        for (int block = 0; block < opt_.max_global_blocks; ++block) {
+        for (; blocks_done_ < opt_.max_global_blocks; ++blocks_done_) {
             const double m0 = minSJ();
             if (m0 >= opt_.target) break;
             buildProblem(m0 + opt_.window);
@@ -296,9 +302,12 @@ public:
                 valid_[c] = new_valid[i] != 0;
             }
             const double m1 = minSJ();
-            if (opt_.pillow && opt_.pillow_handover_gain > 0 && elems_.size() > kHandoverElements &&
-                m1 - m0 < opt_.pillow_handover_gain)
-                break;  // large layered mesh, slow block: the local phase takes over
+            if (handover && opt_.pillow_handover_gain > 0 && elems_.size() > kHandoverElements &&
+                m1 - m0 < opt_.pillow_handover_gain) {
+                handover_min_ = m1;
+                ++blocks_done_;
+                break;  // large mesh, slow block: the local phase takes over
+            }
             if (m1 - m0 < 1e-4) {
                 if (++slow >= 3) {
                     k *= 2.5;
@@ -717,6 +726,8 @@ private:
     std::vector<int> loc_, corner_of_;
     std::vector<char> boundary_;
     std::vector<double> sj_;
+    int blocks_done_ = 0;  ///< global blocks run so far (all calls of globalPhase())
+    double handover_min_ = std::numeric_limits<double>::quiet_NaN();  ///< see handoverMin()
     std::vector<bool> valid_;
     double diag_ = 1;
     // Global phase problem.
@@ -895,8 +906,15 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
     }
     opt.setup(surface);
     rep.min_scaled_jacobian_projected = opt.minSJ();
-    opt.globalPhase();
+    opt.globalPhase(true);
     opt.localPhase();
+    // If the local phase could not go on where the global phase handed over (its vertex
+    // moves gain nothing, e.g. the worst hex needs several vertices to move together), the
+    // global phase resumes with the blocks left, then the local phase again.
+    if (opt.handedOver() && opt.minSJ() < opt.handoverMin() + options.pillow_handover_gain) {
+        opt.globalPhase(false);
+        opt.localPhase();
+    }
     opt.measureDistances();
     return finish();
 }

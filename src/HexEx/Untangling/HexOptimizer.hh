@@ -75,11 +75,13 @@ struct OptimizeOptions {
     /// angle) that the layer keeps there. Its hexes and vertices count in pillowed_hexes and
     /// pillow_vertices.
     bool pillow_flat_corners = true;
-    /// With OptimizeOptions::pillow: the global phase hands over to the local phase after the
-    /// first accepted block over more than 2,000 hexes that raises the worst scaled Jacobian
-    /// by less than this (0: never). On a large layered mesh the worst hexes are then a few
-    /// local spots, which the local phase's vertex moves raise at a fraction of the cost of
-    /// more global blocks over thousands of hexes. Small meshes are not affected.
+    /// The global phase hands over to the local phase after the first accepted block over
+    /// more than 2,000 hexes that raises the worst scaled Jacobian by less than this (0:
+    /// never); if the local phase then gains less than this too, the global phase resumes
+    /// with the blocks left. On a large mesh the worst hexes are then a few local spots,
+    /// which the local phase's vertex moves raise at a fraction of the cost of more global
+    /// blocks over thousands of hexes. Small meshes are not affected. (Named for the layered
+    /// meshes of OptimizeOptions::pillow where it was introduced; it applies to all.)
     double pillow_handover_gain = 0.005;
 };
 
