@@ -1,11 +1,13 @@
 /// @file OvmHexFaces.cc
 /// Face and edge numbering of all-hex OpenVolumeMesh models (OvmHexFaces.hh). Loop 6h + i is
-/// quad i of hex h. One parallel pass over the vertices, each looking at the corners of the
-/// hexes around it (prefetched a few vertices ahead), matches the quads whose smallest vertex
-/// it is (the neighbour loop) and finds the owner of every edge whose smaller vertex it is:
-/// the smallest hex with that edge, whose smaller quad through it is the edge's first
-/// occurrence; every hex edge keeps a reference to its owner. A face's first loop is the
-/// smaller of its loops; faces are numbered in order of first loops (count per chunk,
+/// quad i of hex h. The quads are filed by their smallest vertex (16-byte records: the other
+/// three vertices sorted and the loop) in compressed-row buckets built from counts, by
+/// vertex-range chunks that each read the hexes in order; a sort in each small bucket matches
+/// them (the neighbour loop). The hex edges are then filed the same way by their smaller vertex
+/// (8 bytes: the larger vertex and 12 h + local edge, in the same buffer); sorted, the first use
+/// of an edge is its owner: the smallest hex with it, whose smaller quad through it is the
+/// edge's first occurrence; every hex edge keeps a reference to its owner. A face's first loop
+/// is the smaller of its loops; faces are numbered in order of first loops (count per chunk,
 /// prefix, number; the halffaces overwrite the neighbour loops in place), edges in order of
 /// first loop and position (the same), and a last pass over the hexes, in face order, writes
 /// the edges and every face's halfedges.
@@ -18,6 +20,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace HexEx {
@@ -70,10 +73,6 @@ constexpr HexTables kT;
 /// Fewer hexes than this are handled on one thread.
 constexpr std::size_t kParallelHexes = 20000;
 
-/// How many vertices ahead the per-vertex passes prefetch the hexes around a vertex (4 and 8
-/// gave the same, 0 about 20 % more CPU time in the two per-vertex passes on the cylinder).
-constexpr std::size_t kPrefetchAhead = 4;
-
 int chunksFor(std::size_t n, int threads) { return n >= kParallelHexes ? std::max(1, threads) : 1; }
 
 /// Exclusive prefix sums of per-chunk counts in place; @return the total.
@@ -87,87 +86,61 @@ std::size_t prefix(std::vector<std::size_t>& counts) {
     return sum;
 }
 
-/// The corners (8 h + local index) around every vertex (in no particular order within a vertex).
-struct CornerStars {
-    std::vector<int> start;   ///< per vertex the first entry of corner (and the end)
-    std::vector<int, DefaultInitAllocator<int>> corner;  ///< 8 h + local index, grouped by vertex (every entry written)
-    /// Counting sort of the corners of @p mesh by vertex, counted and filled on @p chunks threads
-    /// (atomic slots: the order within a vertex varies, which no caller depends on).
-    CornerStars(const HexMesh& mesh, int chunks) : start(mesh.vertices.size() + 1, 0), corner(8 * mesh.hexes.size()) {
-        const std::size_t nHex = mesh.hexes.size();
-        int* count = start.data() + 1;
-        parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
-            for (std::size_t h = h0; h < h1; ++h)
-                for (const int v : mesh.hexes[h]) __atomic_fetch_add(&count[v], 1, __ATOMIC_RELAXED);
+/// Records filed in buckets by a vertex, compressed-row: the records of vertex v are
+/// rec[start[v]] to rec[start[v + 1]] - 1.
+/// The records live in a buffer that the caller gives (the quads' and then the edges'
+/// buckets reuse one buffer: pages touched once, not twice).
+template <class Rec>
+struct VertexBuckets {
+    std::vector<int> start;  ///< per vertex its first record (and the end)
+    Rec* rec;                ///< the records, grouped by vertex (in the caller's buffer)
+
+    /// Files @p perHex items of every hex of @p nHex: item i of hex h goes to the bucket of
+    /// vertex key(h, i) as make(h, i). Chunk c of @p vChunks owns a range of vertices, reads
+    /// all hexes (in order, which the prefetcher follows) and files the items of its vertices
+    /// only: no atomics, and a bucket holds its records in hex order for any thread count.
+    /// @p buffer must hold perHex * nHex records.
+    template <class Key, class Make>
+    VertexBuckets(void* buffer, std::size_t nHex, std::size_t nv, int vChunks, int perHex, Key&& key, Make&& make)
+        : start(nv + 1, 0), rec(static_cast<Rec*>(buffer)) {
+        parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+            for (std::size_t h = 0; h < nHex; ++h)
+                for (int i = 0; i < perHex; ++i) {
+                    const std::size_t v = static_cast<std::size_t>(key(h, i));
+                    if (v >= v0 && v < v1) ++start[v + 1];
+                }
         });
-        for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
-        std::vector<int> fill(start.begin(), start.end() - 1);
-        parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
-            for (std::size_t h = h0; h < h1; ++h)
-                for (int k = 0; k < 8; ++k) {
-                    const int slot = __atomic_fetch_add(&fill[static_cast<std::size_t>(mesh.hexes[h][static_cast<std::size_t>(k)])], 1,
-                                                        __ATOMIC_RELAXED);
-                    corner[static_cast<std::size_t>(slot)] = static_cast<int>(8 * h) + k;
+        for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
+        std::vector<int, DefaultInitAllocator<int>> pos(start.begin(), start.end() - 1);
+        parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+            for (std::size_t h = 0; h < nHex; ++h)
+                for (int i = 0; i < perHex; ++i) {
+                    const std::size_t v = static_cast<std::size_t>(key(h, i));
+                    if (v >= v0 && v < v1) rec[static_cast<std::size_t>(pos[v]++)] = make(h, i);
                 }
         });
     }
-    /// Frees both arrays (the stars are needed by the first per-vertex pass only).
-    void release() {
-        std::vector<int>().swap(start);
-        std::vector<int, DefaultInitAllocator<int>>().swap(corner);
-    }
-    /// Asks the cache for the hexes around vertex @p v (if it exists) ahead of their use: the
-    /// per-vertex passes wait on these scattered loads otherwise.
-    void prefetch(const HexMesh& mesh, std::size_t v) const {
-        if (v + 1 >= start.size()) return;
-        for (int s = start[v]; s < start[v + 1]; ++s)
-            __builtin_prefetch(&mesh.hexes[static_cast<std::size_t>(corner[static_cast<std::size_t>(s)] / 8)]);
-    }
+    /// The records of vertex @p v.
+    Rec* begin(std::size_t v) { return rec + start[v]; }
+    /// The end of the records of vertex @p v.
+    Rec* end(std::size_t v) { return rec + start[v + 1]; }
 };
 
-/// The hex edges whose smaller vertex is one vertex v: per distinct edge (v, other) the
-/// smallest hex with it and its local edge there, and every use of it.
-struct VertexEdges {
-    /// One hex edge through v: which distinct edge, the hex, its local edge.
-    struct Use {
-        int edgeIndex;  ///< index into other/hex/edge
-        int hex;        ///< the hex
-        int edge;       ///< its local edge (index into kEdges)
-    };
-    std::vector<int> other;  ///< per distinct edge its larger vertex
-    std::vector<int> hex;    ///< per distinct edge the smallest hex with it
-    std::vector<int> edge;   ///< per distinct edge its local edge in that hex
-    std::vector<Use> uses;   ///< every use
-
-    /// Collects the edges of vertex @p v from the corners around it (a linear search among
-    /// the few distinct edges instead of sorting the uses).
-    void collect(const HexMesh& mesh, const CornerStars& st, std::size_t v) {
-        other.clear();
-        hex.clear();
-        edge.clear();
-        uses.clear();
-        for (int s = st.start[v]; s < st.start[v + 1]; ++s) {
-            const int c = st.corner[static_cast<std::size_t>(s)], h = c / 8, k = c % 8;
-            const auto& hx = mesh.hexes[static_cast<std::size_t>(h)];
-            for (const int m : kT.cornerNext[k]) {
-                const int u = hx[static_cast<std::size_t>(m)];
-                if (u <= static_cast<int>(v)) continue;
-                const int e = kT.edgeOf[k][m];
-                std::size_t d = 0;
-                while (d < other.size() && other[d] != u) ++d;
-                if (d == other.size()) {
-                    other.push_back(u);
-                    hex.push_back(h);
-                    edge.push_back(e);
-                } else if (h < hex[d]) {
-                    hex[d] = h;
-                    edge[d] = e;
-                }
-                uses.push_back({static_cast<int>(d), h, e});
-            }
-        }
+/// Sorts [@p b, @p e) by @p less: insertion sort for the usual few records, std::sort for
+/// large buckets.
+template <class Rec, class Less>
+void sortBucket(Rec* b, Rec* e, Less less) {
+    if (e - b > 32) {
+        std::sort(b, e, less);
+        return;
     }
-};
+    for (Rec* x = b + 1; x < e; ++x) {
+        const Rec r = *x;
+        Rec* y = x;
+        for (; y > b && less(r, y[-1]); --y) *y = y[-1];
+        *y = r;
+    }
+}
 
 /// Number of set bits of @p x, inline (__builtin_popcount is a library call on a target
 /// without the popcnt instruction, and it is called per halfedge).
@@ -205,73 +178,97 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                         ok[static_cast<std::size_t>(c)] = 0;
     });
     if (!allOk()) return false;
-    CornerStars st(mesh, chunks);
+    int ownerBit[12];  // per local edge the bit of its first loop position (4 quad + position)
+    for (int e = 0; e < 12; ++e) ownerBit[e] = 4 * kT.edgeFaces[e][0] + firstPosition(e);
 
-    // Per vertex v: the quads whose smallest vertex is v, matched by their other three
-    // vertices (neighbour loop or -1), and the owner of every edge whose smaller vertex is
-    // v: the smallest hex with the edge, whose smaller quad through it is the edge's first
-    // loop (bit 4 i + j of owned[h]: quad i, position j). Every hex edge (12 h + local edge)
-    // gets a reference to its owner (32 owner hex + bit), so that the halfedges can then be
-    // filled hex by hex in face order instead of per vertex again (scattered over memory).
+    // Quads: filed by their smallest vertex with their other three vertices sorted, matched in
+    // each bucket by a sort (neighbour loop or -1; more than two equal quads: not covered).
     std::vector<int> nb(nLoops);
-    std::vector<std::uint32_t> owned(nHex, 0);
-    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
-    parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
-        struct Quad {  // a loop and its other three vertices, sorted
-            int loop, a, b, d;
+    // One buffer for both kinds of records: 6 quads of 16 bytes or 12 edges of 8 bytes per hex.
+    static_assert(sizeof(std::uint64_t) * 12 == 16 * 6, "records of a hex");
+    std::unique_ptr<std::uint64_t[]> records(new std::uint64_t[12 * nHex]);  // not zeroed: every entry written
+    {
+        struct Quad {  // the other three vertices, sorted, and the loop
+            int a, b, d, loop;
         };
-        std::vector<Quad> quads;
-        VertexEdges edges;
-        for (std::size_t v = v0; v < v1; ++v) {
-            st.prefetch(mesh, v + kPrefetchAhead);
-            quads.clear();
-            for (int s = st.start[v]; s < st.start[v + 1]; ++s) {
-                const int cr = st.corner[static_cast<std::size_t>(s)], h = cr / 8, k = cr % 8;
-                const auto& hx = mesh.hexes[static_cast<std::size_t>(h)];
-                for (const int i : kT.cornerFaces[k]) {
-                    int q[3], n = 0;
-                    bool smallest = true;
-                    for (int j = 0; j < 4; ++j) {
-                        const int w = hx[static_cast<std::size_t>(kOvmHexFaces[i][j])];
-                        if (w == static_cast<int>(v)) continue;
-                        if (w < static_cast<int>(v)) smallest = false;
-                        q[n++] = w;
-                    }
-                    if (!smallest) continue;
-                    std::sort(q, q + 3);
-                    quads.push_back({6 * h + i, q[0], q[1], q[2]});
+        const auto quadKey = [&](std::size_t h, int i) {
+            const auto& hx = mesh.hexes[h];
+            const int* q = kOvmHexFaces[i];
+            return std::min(std::min(hx[static_cast<std::size_t>(q[0])], hx[static_cast<std::size_t>(q[1])]),
+                            std::min(hx[static_cast<std::size_t>(q[2])], hx[static_cast<std::size_t>(q[3])]));
+        };
+        const auto quadRec = [&](std::size_t h, int i) {
+            const auto& hx = mesh.hexes[h];
+            int w[4];
+            for (int j = 0; j < 4; ++j) w[j] = hx[static_cast<std::size_t>(kOvmHexFaces[i][j])];
+            int m = 0;
+            for (int j = 1; j < 4; ++j)
+                if (w[j] < w[m]) m = j;
+            int x = w[(m + 1) & 3], y = w[(m + 2) & 3], z = w[(m + 3) & 3];
+            if (x > y) std::swap(x, y);
+            if (y > z) std::swap(y, z);
+            if (x > y) std::swap(x, y);
+            return Quad{x, y, z, static_cast<int>(6 * h) + i};
+        };
+        static_assert(sizeof(Quad) == 16, "quad record");
+        VertexBuckets<Quad> qb(records.get(), nHex, nv, vChunks, 6, quadKey, quadRec);
+        const auto less = [](const Quad& p, const Quad& q) {
+            return p.a != q.a ? p.a < q.a : p.b != q.b ? p.b < q.b : p.d < q.d;
+        };
+        parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
+            for (std::size_t v = v0; v < v1; ++v) {
+                Quad* b = qb.begin(v);
+                Quad* e = qb.end(v);
+                sortBucket(b, e, less);
+                for (Quad* x = b; x < e;) {
+                    Quad* y = x + 1;
+                    while (y < e && !less(*x, *y)) ++y;
+                    if (y - x > 2) ok[static_cast<std::size_t>(c)] = 0;
+                    const bool pair = y - x == 2;
+                    nb[static_cast<std::size_t>(x[0].loop)] = pair ? x[1].loop : -1;
+                    if (pair) nb[static_cast<std::size_t>(x[1].loop)] = x[0].loop;
+                    x = y;
                 }
             }
-            // Equal vertex triples lie next to each other once sorted (insertion sort: few quads).
-            const auto less = [](const Quad& p, const Quad& q) {
-                return p.a != q.a ? p.a < q.a : p.b != q.b ? p.b < q.b : p.d < q.d;
-            };
-            for (std::size_t x = 1; x < quads.size(); ++x)
-                for (std::size_t y = x; y > 0 && less(quads[y], quads[y - 1]); --y) std::swap(quads[y], quads[y - 1]);
-            for (std::size_t x = 0; x < quads.size();) {
-                std::size_t y = x + 1;
-                while (y < quads.size() && !less(quads[x], quads[y])) ++y;
-                if (y - x > 2) ok[static_cast<std::size_t>(c)] = 0;
-                const bool pair = y - x == 2;
-                nb[static_cast<std::size_t>(quads[x].loop)] = pair ? quads[x + 1].loop : -1;
-                if (pair) nb[static_cast<std::size_t>(quads[x + 1].loop)] = quads[x].loop;
-                x = y;
-            }
-            edges.collect(mesh, st, v);
-            for (std::size_t d = 0; d < edges.other.size(); ++d) {
-                const int e = edges.edge[d], bit = 4 * kT.edgeFaces[e][0] + firstPosition(e);
-                __atomic_fetch_or(&owned[static_cast<std::size_t>(edges.hex[d])], 1u << bit, __ATOMIC_RELAXED);
-                edges.edge[d] = bit;  // from here on: the owner's bit
-            }
-            for (const auto& use : edges.uses) {
-                const std::size_t d = static_cast<std::size_t>(use.edgeIndex);
-                ownerRef[12 * static_cast<std::size_t>(use.hex) + static_cast<std::size_t>(use.edge)] =
-                    32u * static_cast<std::uint32_t>(edges.hex[d]) + static_cast<std::uint32_t>(edges.edge[d]);
-            }
-        }
-    });
+        });
+    }
     if (!allOk()) return false;
-    st.release();
+
+    // Edges: every hex edge filed by its smaller vertex as (larger vertex, 12 h + local edge);
+    // sorted, an edge's uses lie together and its first is the smallest hex with it, the owner,
+    // whose smaller quad through it is the edge's first loop (bit 4 i + j of owned[h]: quad i,
+    // position j). Every hex edge gets a reference to its owner (32 owner hex + bit), so that
+    // the halfedges can then be filled hex by hex in face order.
+    std::vector<std::uint32_t> owned(nHex, 0);
+    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
+    {
+        const auto edgeKey = [&](std::size_t h, int e) {
+            const auto& hx = mesh.hexes[h];
+            return std::min(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
+        };
+        const auto edgeRec = [&](std::size_t h, int e) {
+            const auto& hx = mesh.hexes[h];
+            const int u = std::max(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
+            return static_cast<std::uint64_t>(u) << 32 | static_cast<std::uint64_t>(12 * h + static_cast<std::size_t>(e));
+        };
+        VertexBuckets<std::uint64_t> eb(records.get(), nHex, nv, vChunks, 12, edgeKey, edgeRec);
+        parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+            for (std::size_t v = v0; v < v1; ++v) {
+                std::uint64_t* b = eb.begin(v);
+                std::uint64_t* e = eb.end(v);
+                sortBucket(b, e, [](std::uint64_t p, std::uint64_t q) { return p < q; });
+                for (std::uint64_t* x = b; x < e;) {
+                    const std::uint32_t id = static_cast<std::uint32_t>(*x);
+                    const std::uint32_t oh = id / 12, bit = static_cast<std::uint32_t>(ownerBit[id % 12]);
+                    __atomic_fetch_or(&owned[oh], 1u << bit, __ATOMIC_RELAXED);
+                    const std::uint32_t ref = 32u * oh + bit;
+                    const std::uint64_t u = *x >> 32;
+                    for (; x < e && *x >> 32 == u; ++x) ownerRef[static_cast<std::uint32_t>(*x)] = ref;
+                }
+            }
+        });
+    }
+    records.reset();
 
     // Faces: number the first loops (no neighbour or a later one) in loop order, then give
     // every second loop its halfface. The halffaces overwrite the neighbour loops in place:

@@ -1,11 +1,11 @@
 #pragma once
 /// @file OvmHexFaces.hh
-/// Faces and edges of the OpenVolumeMesh model of an all-hex mesh, found per vertex among the
-/// hexes around it: a face is a quad shared by two hexes (or a boundary quad), an edge a hex
-/// edge's vertex pair. The numbering is the one of buildOvmFaces() (OvmFaces.hh) on the hexes'
-/// quads: faces and edges in order of first use, the same halfface and halfedge orientations,
-/// so the files' bytes do not change; it needs no copy of the loops, no sorting of buckets
-/// and no sequential numbering pass.
+/// Faces and edges of the OpenVolumeMesh model of an all-hex mesh, found in small buckets of
+/// quads and edges filed by their smallest vertex: a face is a quad shared by two hexes (or a
+/// boundary quad), an edge a hex edge's vertex pair. The numbering is the one of
+/// buildOvmFaces() (OvmFaces.hh) on the hexes' quads: faces and edges in order of first use,
+/// the same halfface and halfedge orientations, so the files' bytes do not change; it needs no
+/// copy of the loops and no sequential numbering pass.
 
 #include "../Mesh/HexMesh.hh"
 #include "OvmFaces.hh"
@@ -27,8 +27,8 @@ constexpr int kOvmHexOrder[6] = {0, 1, 5, 3, 4, 2};
 /// Numbers the faces and edges of the hexes of @p mesh (no polyhedra; vertex indices
 /// checked by the caller) as buildOvmFaces() numbers the hexes' quads in loop order (loop
 /// 6h + i is quad detail::kOvmHexFaces[i] of hex h): per loop its halfface, per face its four
-/// halfedges, the edges' end points. Matches quads and finds edge owners per vertex on the
-/// hexes around it, then fills the halfedges hex by hex, in parallel.
+/// halfedges, the edges' end points. Matches quads and finds edge owners in per-vertex
+/// buckets of records, then fills the halfedges hex by hex, in parallel.
 /// Same result for any @p threads.
 /// @return false (and @p out unspecified) if the mesh is outside what it covers: a hex with a
 /// repeated vertex, a quad whose vertices bound quads of more than two hexes, or more than
