@@ -178,8 +178,17 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                         ok[static_cast<std::size_t>(c)] = 0;
     });
     if (!allOk()) return false;
-    int ownerBit[12];  // per local edge the bit of its first loop position (4 quad + position)
-    for (int e = 0; e < 12; ++e) ownerBit[e] = 4 * kT.edgeFaces[e][0] + firstPosition(e);
+    // A local edge's first occurrence in a hex is position j of quad i (4 i + j); the hex's
+    // owned edges are numbered in that order, so each local edge gets its rank among them.
+    int rankOf[12], rankPos[12];  // local edge -> rank; rank -> 4 i + j
+    bool startsAtFirstEnd[12];    // the first occurrence runs from kEdges[e][0] to kEdges[e][1]
+    for (int e = 0; e < 12; ++e) {
+        const int pos = 4 * kT.edgeFaces[e][0] + firstPosition(e);
+        rankOf[e] = 0;
+        for (int f = 0; f < 12; ++f) rankOf[e] += 4 * kT.edgeFaces[f][0] + firstPosition(f) < pos ? 1 : 0;
+        rankPos[rankOf[e]] = pos;
+        startsAtFirstEnd[e] = kOvmHexFaces[pos / 4][pos % 4] == kEdges[e][0];
+    }
 
     // Quads: filed by their smallest vertex with their other three vertices sorted, matched in
     // each bucket by a sort (neighbour loop or -1; more than two equal quads: not covered).
@@ -234,12 +243,15 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     }
     if (!allOk()) return false;
 
-    // Edges: every hex edge filed by its smaller vertex as (larger vertex, 12 h + local edge);
-    // sorted, an edge's uses lie together and its first is the smallest hex with it, the owner,
-    // whose smaller quad through it is the edge's first loop (bit 4 i + j of owned[h]: quad i,
-    // position j). Every hex edge gets a reference to its owner (32 owner hex + bit), so that
-    // the halfedges can then be filled hex by hex in face order.
-    std::vector<std::uint32_t> owned(nHex, 0);
+    // Edges: every hex edge filed by its smaller vertex as (larger vertex, 2 (12 h + local
+    // edge) + 1 if kEdges' first end is the smaller vertex); sorted, an edge's uses lie together
+    // and its first is the smallest hex with it, the owner, whose smaller quad through it is the
+    // edge's first loop. Per hex, ownInfo holds the edges it owns (bit r for rank r), whether
+    // each one's first occurrence starts at its smaller vertex (bit 12 + r) and, from below, its
+    // first edge number (bits 32-63): the halfedges then need one look-up in the owner's
+    // entry. Every hex edge gets a reference to its owner (16 owner hex + rank), so that the
+    // halfedges can be filled hex by hex in face order.
+    std::vector<std::uint64_t> ownInfo(nHex, 0);
     std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
     {
         const auto edgeKey = [&](std::size_t h, int e) {
@@ -249,7 +261,9 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         const auto edgeRec = [&](std::size_t h, int e) {
             const auto& hx = mesh.hexes[h];
             const int u = std::max(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
-            return static_cast<std::uint64_t>(u) << 32 | static_cast<std::uint64_t>(12 * h + static_cast<std::size_t>(e));
+            const bool firstSmaller = hx[static_cast<std::size_t>(kEdges[e][0])] < hx[static_cast<std::size_t>(kEdges[e][1])];
+            return static_cast<std::uint64_t>(u) << 32 |
+                   static_cast<std::uint64_t>(2 * (12 * h + static_cast<std::size_t>(e)) + (firstSmaller ? 1 : 0));
         };
         VertexBuckets<std::uint64_t> eb(records.get(), nHex, nv, vChunks, 12, edgeKey, edgeRec);
         parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
@@ -258,12 +272,15 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                 std::uint64_t* e = eb.end(v);
                 sortBucket(b, e, [](std::uint64_t p, std::uint64_t q) { return p < q; });
                 for (std::uint64_t* x = b; x < e;) {
-                    const std::uint32_t id = static_cast<std::uint32_t>(*x);
-                    const std::uint32_t oh = id / 12, bit = static_cast<std::uint32_t>(ownerBit[id % 12]);
-                    __atomic_fetch_or(&owned[oh], 1u << bit, __ATOMIC_RELAXED);
-                    const std::uint32_t ref = 32u * oh + bit;
+                    const std::uint32_t id = static_cast<std::uint32_t>(*x) >> 1;
+                    const bool firstSmaller = (*x & 1u) != 0;
+                    const std::uint32_t oh = id / 12, eo = id % 12, r = static_cast<std::uint32_t>(rankOf[eo]);
+                    const bool startsSmaller = startsAtFirstEnd[eo] == firstSmaller;
+                    __atomic_fetch_or(&ownInfo[oh], (std::uint64_t(1) << r) | (std::uint64_t(startsSmaller ? 1 : 0) << (12 + r)),
+                                      __ATOMIC_RELAXED);
+                    const std::uint32_t ref = 16u * oh + r;
                     const std::uint64_t u = *x >> 32;
-                    for (; x < e && *x >> 32 == u; ++x) ownerRef[static_cast<std::uint32_t>(*x)] = ref;
+                    for (; x < e && *x >> 32 == u; ++x) ownerRef[static_cast<std::uint32_t>(*x) >> 1] = ref;
                 }
             }
         });
@@ -306,13 +323,13 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         }
     });
 
-    // Edges: numbered in order of their first loop and position (count, prefix, rank of the
-    // owner bit); then hex by hex, every owner writes its edges and every first loop its
-    // halfedges (looked up through the owner references).
-    std::vector<int, DefaultInitAllocator<int>> edgeBase(nHex);  // per hex its first owned edge (< INT_MAX / 2, checked)
+    // Edges: numbered in order of their first loop and position (count, prefix, rank); then
+    // hex by hex, every owner writes its edges and every first loop its halfedges (looked up
+    // through the owner references).
+    const auto ownedMask = [](std::uint64_t info) { return static_cast<std::uint32_t>(info & 0xFFFu); };
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
-        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(owned[h]));
+        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(ownedMask(ownInfo[h])));
         base[static_cast<std::size_t>(c)] = n;
     });
     const std::size_t nEdges = prefix(base);
@@ -320,8 +337,9 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = base[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
-            edgeBase[h] = static_cast<int>(n);
-            n += static_cast<std::size_t>(bitCount(owned[h]));
+            const std::uint64_t info = ownInfo[h];
+            ownInfo[h] = info | static_cast<std::uint64_t>(n) << 32;  // n < INT_MAX / 2
+            n += static_cast<std::size_t>(bitCount(ownedMask(info)));
         }
     });
     out.edges.resize(nEdges);
@@ -331,15 +349,13 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     parallelChunks(nFaces + 1, chunksFor(nFaces, threads), [&](int, std::size_t f0, std::size_t f1) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });
-    const auto edgeId = [&](std::size_t h, int bit) {
-        return static_cast<std::size_t>(edgeBase[h]) + static_cast<std::size_t>(bitCount(owned[h] & ((1u << bit) - 1u)));
-    };
     parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
         for (std::size_t h = h0; h < h1; ++h) {
-            for (std::uint32_t bits = owned[h]; bits != 0; bits &= bits - 1) {
-                const int bit = __builtin_ctz(bits), i = bit / 4, j = bit % 4;
+            std::size_t id = static_cast<std::size_t>(ownInfo[h] >> 32);
+            for (std::uint32_t bits = ownedMask(ownInfo[h]); bits != 0; bits &= bits - 1) {
+                const int pos = rankPos[__builtin_ctz(bits)], i = pos / 4, j = pos % 4;
                 const std::size_t l = 6 * h + static_cast<std::size_t>(i);
-                out.edges[edgeId(h, bit)] = {{loopVertex(l, j), loopVertex(l, j + 1)}};
+                out.edges[id++] = {{loopVertex(l, j), loopVertex(l, j + 1)}};
             }
             for (int i = 0; i < 6; ++i) {
                 if (!(firstMask[h] >> i & 1u)) continue;
@@ -347,10 +363,13 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                 int* values = &fh.values[2 * static_cast<std::size_t>(hf[l])];
                 for (int j = 0; j < 4; ++j) {
                     const std::uint32_t ref = ownerRef[12 * h + static_cast<std::size_t>(kT.edgeAt[i][j])];
-                    const std::size_t oh = ref / 32;
-                    const int bit = static_cast<int>(ref % 32);
-                    const int start = loopVertex(6 * oh + static_cast<std::size_t>(bit / 4), bit % 4);
-                    values[j] = static_cast<int>(2 * edgeId(oh, bit)) + (loopVertex(l, j) == start ? 0 : 1);
+                    const std::uint64_t info = ownInfo[ref / 16];
+                    const std::uint32_t r = ref % 16;
+                    const std::size_t id = static_cast<std::size_t>(info >> 32) +
+                                           static_cast<std::size_t>(bitCount(ownedMask(info) & ((1u << r) - 1u)));
+                    const bool startsSmaller = (info >> (12 + r) & 1u) != 0;
+                    const bool fromSmaller = loopVertex(l, j) < loopVertex(l, j + 1);
+                    values[j] = static_cast<int>(2 * id) + (fromSmaller == startsSmaller ? 0 : 1);
                 }
             }
         }
