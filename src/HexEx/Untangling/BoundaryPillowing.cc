@@ -4,6 +4,7 @@
 #include "BoundaryPillowing.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/UnionFind.hh"
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexFaceRecords.hh"
 #include "../Mesh/HexMeshQuality.hh"
@@ -12,7 +13,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <tuple>
@@ -27,15 +27,6 @@ namespace {
 std::string quadText(const std::array<int, 4>& q) {
     return "(" + std::to_string(q[0]) + " " + std::to_string(q[1]) + " " + std::to_string(q[2]) + " " +
            std::to_string(q[3]) + ")";
-}
-
-/// Smallest representative of a set of union-find parents.
-int findRoot(std::vector<int>& parent, int i) {
-    while (parent[static_cast<std::size_t>(i)] != i) {
-        parent[static_cast<std::size_t>(i)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(i)])];
-        i = parent[static_cast<std::size_t>(i)];
-    }
-    return i;
 }
 
 /// Outward boundary quads of @p mesh (loops oriented outward), in hex then face order;
@@ -104,8 +95,7 @@ void checkManifold(const std::vector<std::array<int, 4>>& quads, const std::vect
     for (std::size_t v = 0; v + 1 < vq_off.size(); ++v) {
         const int b = vq_off[v], e = vq_off[v + 1];
         if (e - b < 2) continue;
-        std::vector<int> parent(static_cast<std::size_t>(e - b));
-        std::iota(parent.begin(), parent.end(), 0);
+        UnionFind sheet(static_cast<std::size_t>(e - b));
         std::vector<std::pair<int, int>> nb;  // (neighbour vertex along an edge at v, local quad)
         for (int i = b; i < e; ++i) {
             const auto& q = quads[static_cast<std::size_t>(vq[static_cast<std::size_t>(i)])];
@@ -118,11 +108,10 @@ void checkManifold(const std::vector<std::array<int, 4>>& quads, const std::vect
         std::sort(nb.begin(), nb.end());
         for (std::size_t i = 0; i + 1 < nb.size(); ++i)
             if (nb[i].first == nb[i + 1].first) {
-                const int r1 = findRoot(parent, nb[i].second), r2 = findRoot(parent, nb[i + 1].second);
-                parent[static_cast<std::size_t>(std::max(r1, r2))] = std::min(r1, r2);
+                sheet.unite(nb[i].second, nb[i + 1].second);
             }
         int sheets = 0;
-        for (int i = 0; i < e - b; ++i) sheets += findRoot(parent, i) == i;
+        for (int i = 0; i < e - b; ++i) sheets += sheet.find(i) == i;
         if (sheets > 1)
             throw std::invalid_argument("pillowing: non-manifold boundary: " + std::to_string(sheets) +
                                         " separate sheets of the boundary meet at vertex " + std::to_string(v));
@@ -160,16 +149,14 @@ std::vector<char> layerQuads(const HexMesh& mesh, const std::vector<std::array<i
         return std::tie(x.a, x.b, x.q) < std::tie(y.a, y.b, y.q);
     });
     const double cos_feature = std::cos(opt.feature_angle_deg * M_PI / 180.0);
-    std::vector<int> parent(nq);
-    std::iota(parent.begin(), parent.end(), 0);
+    UnionFind patch(nq);
     std::vector<std::pair<int, int>> feature;  // feature edges (min, max), sorted
     for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
         const int q1 = edges[i].q, q2 = edges[i + 1].q;
         if ((normal[static_cast<std::size_t>(q1)] | normal[static_cast<std::size_t>(q2)]) < cos_feature) {
             feature.emplace_back(edges[i].a, edges[i].b);
         } else {
-            const int r1 = findRoot(parent, q1), r2 = findRoot(parent, q2);
-            parent[static_cast<std::size_t>(std::max(r1, r2))] = std::min(r1, r2);
+            patch.unite(q1, q2);
         }
     }
     auto isFeature = [&](int a, int b) {
@@ -185,12 +172,12 @@ std::vector<char> layerQuads(const HexMesh& mesh, const std::vector<std::array<i
             const Vec3d& P = mesh.vertices[static_cast<std::size_t>(v)];
             const Vec3d ea = mesh.vertices[static_cast<std::size_t>(a)] - P, eb = mesh.vertices[static_cast<std::size_t>(b)] - P;
             const double la = ea.norm(), lb = eb.norm();
-            if (la > 0 && lb > 0 && (ea | eb) / (la * lb) < cos_skip) skip[static_cast<std::size_t>(findRoot(parent, static_cast<int>(i)))] = 1;
+            if (la > 0 && lb > 0 && (ea | eb) / (la * lb) < cos_skip) skip[static_cast<std::size_t>(patch.find(static_cast<int>(i)))] = 1;
         }
     }
     std::vector<char> in(nq, 1);
     for (std::size_t i = 0; i < nq; ++i) {
-        const int r = findRoot(parent, static_cast<int>(i));
+        const int r = patch.find(static_cast<int>(i));
         rep.boundary_patches += r == static_cast<int>(i);
         rep.skipped_patches += r == static_cast<int>(i) && skip[i];
         in[i] = !skip[static_cast<std::size_t>(r)];
@@ -315,8 +302,7 @@ PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layere
         for (int k = vq_off[v]; k < vq_off[v + 1]; ++k)
             if ((in_layer[static_cast<std::size_t>(vq[static_cast<std::size_t>(k)])] != 0) == layer)
                 local.push_back(vq[static_cast<std::size_t>(k)]);
-        std::vector<int> parent(local.size());
-        std::iota(parent.begin(), parent.end(), 0);
+        UnionFind fan(local.size());
         std::vector<std::pair<int, int>> nb;
         for (std::size_t i = 0; i < local.size(); ++i) {
             const auto& q = quads[static_cast<std::size_t>(local[i])];
@@ -329,11 +315,10 @@ PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layere
         std::sort(nb.begin(), nb.end());
         for (std::size_t i = 0; i + 1 < nb.size(); ++i)
             if (nb[i].first == nb[i + 1].first) {
-                const int r1 = findRoot(parent, nb[i].second), r2 = findRoot(parent, nb[i + 1].second);
-                parent[static_cast<std::size_t>(std::max(r1, r2))] = std::min(r1, r2);
+                fan.unite(nb[i].second, nb[i + 1].second);
             }
         int fans = 0;
-        for (std::size_t i = 0; i < local.size(); ++i) fans += findRoot(parent, static_cast<int>(i)) == static_cast<int>(i);
+        for (std::size_t i = 0; i < local.size(); ++i) fans += fan.find(static_cast<int>(i)) == static_cast<int>(i);
         return fans;
     };
     // Marks the rim vertices; false if the layer would end on itself at a vertex.
