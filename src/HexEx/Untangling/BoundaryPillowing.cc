@@ -5,6 +5,7 @@
 
 #include "../Core/Parallel.hh"
 #include "../Core/UnionFind.hh"
+#include "FeatureCorners.hh"
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexFaceRecords.hh"
 #include "../Mesh/HexMeshQuality.hh"
@@ -150,29 +151,23 @@ std::vector<char> layerQuads(const HexMesh& mesh, const std::vector<std::array<i
     });
     const double cos_feature = std::cos(opt.feature_angle_deg * M_PI / 180.0);
     UnionFind patch(nq);
-    std::vector<std::pair<int, int>> feature;  // feature edges (min, max), sorted
+    FeatureEdges feature;
     for (std::size_t i = 0; i + 1 < edges.size(); i += 2) {
         const int q1 = edges[i].q, q2 = edges[i + 1].q;
         if ((normal[static_cast<std::size_t>(q1)] | normal[static_cast<std::size_t>(q2)]) < cos_feature) {
-            feature.emplace_back(edges[i].a, edges[i].b);
+            feature.sorted.emplace_back(edges[i].a, edges[i].b);
         } else {
             patch.unite(q1, q2);
         }
     }
-    auto isFeature = [&](int a, int b) {
-        return std::binary_search(feature.begin(), feature.end(), std::make_pair(std::min(a, b), std::max(a, b)));
-    };
     const double cos_skip = std::cos(opt.skip_patch_angle_deg * M_PI / 180.0);
     std::vector<char> skip(nq, 0);
     for (std::size_t i = 0; i < nq; ++i) {
         const auto& q = quads[i];
         for (std::size_t k = 0; k < 4; ++k) {
-            const int v = q[k], a = q[(k + 1) % 4], b = q[(k + 3) % 4];
-            if (!isFeature(v, a) || !isFeature(v, b)) continue;
-            const Vec3d& P = mesh.vertices[static_cast<std::size_t>(v)];
-            const Vec3d ea = mesh.vertices[static_cast<std::size_t>(a)] - P, eb = mesh.vertices[static_cast<std::size_t>(b)] - P;
-            const double la = ea.norm(), lb = eb.norm();
-            if (la > 0 && lb > 0 && (ea | eb) / (la * lb) < cos_skip) skip[static_cast<std::size_t>(patch.find(static_cast<int>(i)))] = 1;
+            double cs = 0;
+            if (featureCornerCosine(mesh, q, k, feature, cs) && cs < cos_skip)
+                skip[static_cast<std::size_t>(patch.find(static_cast<int>(i)))] = 1;
         }
     }
     std::vector<char> in(nq, 1);

@@ -2,6 +2,7 @@
 /// Local pillows of the hexes at flat corners along feature curves (see FlatCornerSplitting.hh).
 
 #include "FlatCornerSplitting.hh"
+#include "FeatureCorners.hh"
 
 #include "../Mesh/HexArcs.hh"
 #include "../Mesh/HexFaceRecords.hh"
@@ -103,18 +104,15 @@ FlatCornerReport splitFlatFeatureCorners(HexMesh& mesh, const FlatCornerOptions&
     std::sort(edges.begin(), edges.end(),
               [](const Edge& x, const Edge& y) { return std::tie(x.a, x.b, x.q) < std::tie(y.a, y.b, y.q); });
     const double cos_feature = std::cos(options.feature_angle_deg * M_PI / 180.0);
-    std::vector<std::pair<int, int>> feature;  // sorted
+    FeatureEdges feature;
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) ++j;
         if (j - i != 2 || (unitNormal(mesh, quads[static_cast<std::size_t>(edges[i].q)]) |
                            unitNormal(mesh, quads[static_cast<std::size_t>(edges[i + 1].q)])) < cos_feature)
-            feature.emplace_back(edges[i].a, edges[i].b);
+            feature.sorted.emplace_back(edges[i].a, edges[i].b);
         i = j;
     }
-    auto isFeature = [&](int a, int b) {
-        return std::binary_search(feature.begin(), feature.end(), std::make_pair(std::min(a, b), std::max(a, b)));
-    };
     const double cos_flat = std::cos(options.flat_angle_deg * M_PI / 180.0);
     std::vector<char> used(nv, 0);  // vertices of hexes split so far
     for (std::size_t i = 0; i < quads.size(); ++i) {
@@ -122,13 +120,8 @@ FlatCornerReport splitFlatFeatureCorners(HexMesh& mesh, const FlatCornerOptions&
         int flat = -1;  // the flattest corner of q between two feature edges, if flat
         double flat_cos = cos_flat;
         for (std::size_t k = 0; k < 4; ++k) {
-            const int v = q[k], a = q[(k + 1) % 4], b = q[(k + 3) % 4];
-            if (!isFeature(v, a) || !isFeature(v, b)) continue;
-            const Vec3d& P = mesh.vertices[static_cast<std::size_t>(v)];
-            const Vec3d ea = mesh.vertices[static_cast<std::size_t>(a)] - P, eb = mesh.vertices[static_cast<std::size_t>(b)] - P;
-            const double la = ea.norm(), lb = eb.norm();
-            if (!(la > 0 && lb > 0)) continue;
-            const double cs = (ea | eb) / (la * lb);
+            double cs = 0;
+            if (!featureCornerCosine(mesh, q, k, feature, cs)) continue;
             if (cs < cos_flat) ++rep.flat_corners;
             if (cs < flat_cos) {
                 flat_cos = cs;
