@@ -119,15 +119,6 @@ void checkManifold(const std::vector<std::array<int, 4>>& quads, const std::vect
     }
 }
 
-/// Unit normal of the quad @p q (from its diagonals), or zero if degenerate.
-Vec3d quadNormal(const HexMesh& mesh, const std::array<int, 4>& q) {
-    const auto& P = mesh.vertices;
-    Vec3d n = (P[static_cast<std::size_t>(q[2])] - P[static_cast<std::size_t>(q[0])]) %
-              (P[static_cast<std::size_t>(q[3])] - P[static_cast<std::size_t>(q[1])]);
-    const double len = n.norm();
-    return len > 0 && std::isfinite(len) ? n / len : Vec3d(0, 0, 0);
-}
-
 /// Which boundary quads get a new hex: all, except the quads of patches (regions bounded by
 /// feature edges) that have a quad with two edges on the patch border at a corner angle
 /// above PillowOptions::skip_patch_angle_deg. Fills the patch counts of @p rep.
@@ -135,20 +126,9 @@ std::vector<char> layerQuads(const HexMesh& mesh, const std::vector<std::array<i
                              const PillowOptions& opt, PillowReport& rep) {
     const std::size_t nq = quads.size();
     std::vector<Vec3d> normal(nq);
-    for (std::size_t i = 0; i < nq; ++i) normal[i] = quadNormal(mesh, quads[i]);
+    for (std::size_t i = 0; i < nq; ++i) normal[i] = quadUnitNormal(mesh, quads[i]);
     // Edges (min, max, quad), sorted: each boundary edge has exactly two quads (checked).
-    struct E {
-        int a, b, q;
-    };
-    std::vector<E> edges;
-    edges.reserve(nq * 4);
-    for (std::size_t i = 0; i < nq; ++i)
-        for (std::size_t k = 0; k < 4; ++k)
-            edges.push_back({std::min(quads[i][k], quads[i][(k + 1) % 4]), std::max(quads[i][k], quads[i][(k + 1) % 4]),
-                             static_cast<int>(i)});
-    std::sort(edges.begin(), edges.end(), [](const E& x, const E& y) {
-        return std::tie(x.a, x.b, x.q) < std::tie(y.a, y.b, y.q);
-    });
+    const std::vector<QuadEdge> edges = sortedQuadEdges(quads);
     const double cos_feature = std::cos(opt.feature_angle_deg * M_PI / 180.0);
     UnionFind patch(nq);
     FeatureEdges feature;
@@ -424,7 +404,7 @@ PillowReport pillowPass(HexMesh& mesh, const PillowOptions& options, long layere
         std::vector<Vec3d> normals;
         Vec3d sum(0, 0, 0);
         for (int k = vq_off[v]; k < vq_off[v + 1]; ++k) {
-            const Vec3d n = quadNormal(mesh, quads[static_cast<std::size_t>(vq[static_cast<std::size_t>(k)])]);
+            const Vec3d n = quadUnitNormal(mesh, quads[static_cast<std::size_t>(vq[static_cast<std::size_t>(k)])]);
             if (n.norm() == 0) continue;
             normals.push_back(n);
             sum += n;

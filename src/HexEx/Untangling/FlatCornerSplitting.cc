@@ -20,15 +20,6 @@ namespace HexEx {
 
 namespace {
 
-/// Unit normal of the quad @p q (from its diagonals), or zero if degenerate.
-Vec3d unitNormal(const HexMesh& mesh, const std::array<int, 4>& q) {
-    const auto& P = mesh.vertices;
-    const Vec3d n = (P[static_cast<std::size_t>(q[2])] - P[static_cast<std::size_t>(q[0])]) %
-                    (P[static_cast<std::size_t>(q[3])] - P[static_cast<std::size_t>(q[1])]);
-    const double len = n.norm();
-    return len > 0 && std::isfinite(len) ? n / len : Vec3d(0, 0, 0);
-}
-
 /// Hex @p h renumbered so that its face @p face (HexArcs::kHexFaces, outward) is the top
 /// quad 4-7 in the face's loop order; the same hex, positively ordered like the input.
 std::array<int, 8> withTopFace(const std::array<int, 8>& h, int face) {
@@ -91,25 +82,14 @@ FlatCornerReport splitFlatFeatureCorners(HexMesh& mesh, const FlatCornerOptions&
     }
     // Feature edges: the two quads' normals differ by more than the feature angle, or the
     // edge is not in exactly two boundary quads.
-    struct Edge {
-        int a, b, q;
-    };
-    std::vector<Edge> edges;
-    edges.reserve(quads.size() * 4);
-    for (std::size_t i = 0; i < quads.size(); ++i)
-        for (std::size_t k = 0; k < 4; ++k) {
-            const int a = quads[i][k], b = quads[i][(k + 1) % 4];
-            edges.push_back({std::min(a, b), std::max(a, b), static_cast<int>(i)});
-        }
-    std::sort(edges.begin(), edges.end(),
-              [](const Edge& x, const Edge& y) { return std::tie(x.a, x.b, x.q) < std::tie(y.a, y.b, y.q); });
+    const std::vector<QuadEdge> edges = sortedQuadEdges(quads);
     const double cos_feature = std::cos(options.feature_angle_deg * M_PI / 180.0);
     FeatureEdges feature;
     for (std::size_t i = 0; i < edges.size();) {
         std::size_t j = i;
         while (j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b) ++j;
-        if (j - i != 2 || (unitNormal(mesh, quads[static_cast<std::size_t>(edges[i].q)]) |
-                           unitNormal(mesh, quads[static_cast<std::size_t>(edges[i + 1].q)])) < cos_feature)
+        if (j - i != 2 || (quadUnitNormal(mesh, quads[static_cast<std::size_t>(edges[i].q)]) |
+                           quadUnitNormal(mesh, quads[static_cast<std::size_t>(edges[i + 1].q)])) < cos_feature)
             feature.sorted.emplace_back(edges[i].a, edges[i].b);
         i = j;
     }
