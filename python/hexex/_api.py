@@ -132,43 +132,22 @@ def extract(points, tets, params, *, threads: int = 0, epsilon: float = 1e-6, me
     optimize = optimize or bool(pillow)
     if untangle or optimize:
         boundary = _boundary_triangles(tets)
-        pts, hexes, polyhedra, u = _core.untangle(pts, hexes, polyhedra, points, boundary, False,
-                                                  threads, 1, 40.0, False, 10)
+        # As hexex extract (HexEx::untangleWithRepair): untangling, optimising if asked, and the
+        # layer of --pillow as the repair where untangling alone leaves hexes not certified
+        # valid (policy 1), unless pillow=False (0), pillow=True (2) or provenance=True, whose
+        # hex numbers the layer would break.
+        policy = 2 if pillow else 0 if pillow is False or provenance else 1
+        pts, hexes, polyhedra, u, o, note = _core.untangle_with_repair(pts, hexes, polyhedra, points, boundary,
+                                                                       threads, bool(optimize), policy)
         report["untangle"] = u
-        # As hexex extract (HexEx::untangleWithRepair): untangling moves vertices only; where
-        # it leaves hexes not certified valid, the layer of --pillow is the repair.
+        if o is not None:
+            report["optimize"] = o
         bad = u["invalid_after"] + u["undecided_after"]
-        repair = pillow is None and bad > 0
-        if repair and (len(polyhedra) > 0 or provenance):
-            why = "the mesh has polyhedra" if len(polyhedra) > 0 else "provenance=True (pillowing adds hexes)"
-            report.setdefault("warnings", []).append(
-                f"untangling alone left {bad} hexes not certified valid; no pillowing repair: {why}")
-            repair = False
-        if repair:
-            try:
-                repaired = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
-                                          0.9, 40.0, 40, 60, True)
-            except ValueError as e:  # the layer's input checks (e.g. a non-manifold boundary)
-                report.setdefault("warnings", []).append(
-                    f"untangling alone left {bad} hexes not certified valid; the pillowing repair was not "
-                    f"possible: {e}")
-                repair = False
-        if repair:
-            pts, hexes, polyhedra, o = repaired
-            report["optimize"] = o
-        elif optimize:
-            pts, hexes, polyhedra, o = _core.optimize(pts, hexes, polyhedra, points, boundary, False, threads,
-                                                      0.9, 40.0, 40, 60, bool(pillow))
-            report["optimize"] = o
-        if repair and not o["success"]:
-            report.setdefault("warnings", []).append(
-                f"untangling alone left {bad} hexes not certified valid; the pillowing repair did not succeed: "
-                f"{o['message']}")
-        elif repair:
-            report.setdefault("warnings", []).append(
-                f"untangling alone left {bad} hexes not certified valid; repaired as with --pillow: "
-                f"{o['trimmed_hexes']} hexes outside the surface removed, {o['pillowed_hexes']} hexes added "
-                f"along the boundary, then untangled and optimised ({o['invalid_after']} hexes invalid after)")
+        if pillow is None and provenance and bad > 0:
+            note = (f"untangling alone left {bad} hexes not certified valid; no pillowing repair: "
+                    "provenance=True (pillowing adds hexes)")
+        if note:
+            report.setdefault("warnings", []).append(note)
         # The quality keys of the report, measured on the moved mesh (as hexex extract does).
         quality = _core.validate(pts, hexes, polyhedra)["quality"]
         report["quality"] = {k: quality[k] for k in ("min_scaled_jacobian", "mean_scaled_jacobian", "inverted_hexes",

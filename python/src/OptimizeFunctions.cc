@@ -4,8 +4,10 @@
 
 #include "ArrayConversions.hh"
 #include "Bindings.hh"
+#include "UntangleReportDict.hh"
 
 #include <HexEx/Untangling/HexOptimizer.hh>
+#include <HexEx/Untangling/UntangleWithRepair.hh>
 
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/string.h>
@@ -93,6 +95,34 @@ nb::tuple optimize(const DoubleArray& points, const Int32Array& hexes, const nb:
     return nb::make_tuple(mesh[0], mesh[1], mesh[2], optimizeReportToDict(r));
 }
 
+/// HexEx::untangleWithRepair() on a copy of the mesh, boundary on the given surface:
+/// untangling, then optimisation if @p optimize, and the pillowing repair by @p pillow
+/// (0 never, 1 if needed, 2 always). Returns (points, hexes, polyhedra, untangle report,
+/// optimize report or None, note).
+nb::tuple untangleWithRepair(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
+                             const std::optional<DoubleArray>& surface_points,
+                             const std::optional<Int32Array>& surface_triangles, int threads, bool optimize,
+                             int pillow) {
+    if (pillow < 0 || pillow > 2) throw std::invalid_argument("pillow policy must be 0, 1 or 2");
+    HexEx::HexMesh hm = hexMeshFromArrays(points, hexes, polyhedra);
+    HexEx::TriangleSurface surface;
+    const bool has_surface = surfaceFromArrays(surface_points, surface_triangles, surface);
+    HexEx::RepairOptions opt;
+    opt.untangle.threads = threads;
+    opt.optimize.threads = threads;
+    opt.optimize_quality = optimize;
+    opt.pillow = pillow == 0 ? HexEx::PillowPolicy::Never
+                             : (pillow == 1 ? HexEx::PillowPolicy::IfNeeded : HexEx::PillowPolicy::Always);
+    HexEx::RepairReport r;
+    {
+        nb::gil_scoped_release release;
+        r = HexEx::untangleWithRepair(hm, opt, has_surface ? &surface : nullptr);
+    }
+    nb::tuple mesh = hexMeshToArrays(std::move(hm));
+    nb::object o = r.optimized ? nb::object(optimizeReportToDict(r.optimize)) : nb::none();
+    return nb::make_tuple(mesh[0], mesh[1], mesh[2], untangleReportToDict(r.untangle), o, r.note);
+}
+
 } // namespace
 
 void bindOptimizeFunctions(nb::module_& m) {
@@ -102,6 +132,12 @@ void bindOptimizeFunctions(nb::module_& m) {
           nb::arg("pillow"),
           "Raises the worst scaled Jacobian of a hex mesh (HexEx::optimizeHexMesh); returns (points, hexes, "
           "polyhedra, report dict).");
+    m.def("untangle_with_repair", &untangleWithRepair, nb::arg("points"), nb::arg("hexes"), nb::arg("polyhedra"),
+          nb::arg("surface_points").none(), nb::arg("surface_triangles").none(), nb::arg("threads"),
+          nb::arg("optimize"), nb::arg("pillow"),
+          "Untangles, optimises if asked, repairs with the boundary layer as the pillow policy says "
+          "(HexEx::untangleWithRepair); returns (points, hexes, polyhedra, untangle report, optimize report "
+          "or None, note).");
 }
 
 } // namespace HexExPython

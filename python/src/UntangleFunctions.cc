@@ -4,6 +4,7 @@
 
 #include "ArrayConversions.hh"
 #include "Bindings.hh"
+#include "UntangleReportDict.hh"
 
 #include <HexEx/Untangling/Untangler.hh>
 
@@ -16,10 +17,7 @@
 
 namespace HexExPython {
 
-namespace {
-
-/// The report as a dict with the field names of HexEx::UntangleReport.
-nb::dict reportToDict(const HexEx::UntangleReport& r) {
+nb::dict untangleReportToDict(const HexEx::UntangleReport& r) {
     nb::dict d;
     d["hexes"] = r.hexes;
     d["inverted_before"] = r.inverted_before;
@@ -49,6 +47,8 @@ nb::dict reportToDict(const HexEx::UntangleReport& r) {
     return d;
 }
 
+namespace {
+
 /// Untangles a copy of the mesh; returns (points, hexes, polyhedra, report dict).
 nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb::handle& polyhedra,
                    const std::optional<DoubleArray>& surface_points, const std::optional<Int32Array>& surface_triangles,
@@ -70,7 +70,7 @@ nb::tuple untangle(const DoubleArray& points, const Int32Array& hexes, const nb:
         r = HexEx::untangleHexMesh(hm, opt, has_surface ? &surface : nullptr);
     }
     nb::tuple mesh = hexMeshToArrays(std::move(hm));
-    return nb::make_tuple(mesh[0], mesh[1], mesh[2], reportToDict(r));
+    return nb::make_tuple(mesh[0], mesh[1], mesh[2], untangleReportToDict(r));
 }
 
 } // namespace
