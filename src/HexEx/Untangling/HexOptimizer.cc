@@ -37,7 +37,7 @@ enum Kind : char {
 /// Number of variables of a vertex kind.
 int dofOf(char k) { return k == kInterior ? 3 : k == kSurface ? 2 : k == kCurve ? 1 : 0; }
 
-/// Problem size (hexes of a global block) above which OptimizeOptions::pillow_handover_gain applies.
+/// Problem size (hexes of a global block) above which OptimizeOptions::handover_gain applies.
 constexpr std::size_t kHandoverElements = 2000;
 
 /// Largest exponent of the soft minimum's terms (keeps exp() finite).
@@ -241,7 +241,7 @@ public:
 
     /// Global phase: L-BFGS blocks on the soft minimum, at most max_global_blocks over all
     /// calls. With @p handover it may stop early and hand over to the local phase (see
-    /// OptimizeOptions::pillow_handover_gain); handed_over_ then holds the worst SJ at that point.
+    /// OptimizeOptions::handover_gain); handed_over_ then holds the worst SJ at that point.
     void globalPhase(bool handover) {
         double k = 20;
         int slow = 0;
@@ -302,8 +302,8 @@ public:
                 valid_[c] = new_valid[i] != 0;
             }
             const double m1 = minSJ();
-            if (handover && opt_.pillow_handover_gain > 0 && elems_.size() > kHandoverElements &&
-                m1 - m0 < opt_.pillow_handover_gain) {
+            if (handover && opt_.handover_gain > 0 && elems_.size() > kHandoverElements &&
+                m1 - m0 < opt_.handover_gain) {
                 handover_min_ = m1;
                 ++blocks_done_;
                 break;  // large mesh, slow block: the local phase takes over
@@ -911,7 +911,7 @@ OptimizeReport optimizeHexMesh(HexMesh& mesh, const OptimizeOptions& options, co
     // If the local phase could not go on where the global phase handed over (its vertex
     // moves gain nothing, e.g. the worst hex needs several vertices to move together), the
     // global phase resumes with the blocks left, then the local phase again.
-    if (opt.handedOver() && opt.minSJ() < opt.handoverMin() + options.pillow_handover_gain) {
+    if (opt.handedOver() && opt.minSJ() < opt.handoverMin() + options.handover_gain) {
         opt.globalPhase(false);
         opt.localPhase();
     }

@@ -80,9 +80,8 @@ struct OptimizeOptions {
     /// never); if the local phase then gains less than this too, the global phase resumes
     /// with the blocks left. On a large mesh the worst hexes are then a few local spots,
     /// which the local phase's vertex moves raise at a fraction of the cost of more global
-    /// blocks over thousands of hexes. Small meshes are not affected. (Named for the layered
-    /// meshes of OptimizeOptions::pillow where it was introduced; it applies to all.)
-    double pillow_handover_gain = 0.005;
+    /// blocks over thousands of hexes. Small meshes are not affected.
+    double handover_gain = 0.005;
 };
 
 /// What optimizeHexMesh() did. Scaled Jacobians are per hex (minimum over its 8 corners).
