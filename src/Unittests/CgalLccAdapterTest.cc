@@ -477,4 +477,20 @@ TEST(CgalLccAdapter, VertexNumberingFollowsTheContainerWithHoles) {
     EXPECT_EQ(k, numbering.size());
     const TetLcc::Point elsewhere(0, 0, 0);
     EXPECT_EQ(numbering.find(&elsewhere), HexEx::detail::LccVertexNumbering::npos);
+    // With a run hint kept between calls (as the reader does), backwards through the
+    // container and with a stale hint: the same numbers; every address strictly inside an
+    // attribute (each byte offset, so that both the power-of-two and the odd part of the
+    // attribute size are exercised) is none of them.
+    const std::size_t stride = sizeof(*lcc.vertex_attributes().begin());
+    std::vector<const char*> addresses;
+    for (auto it = lcc.vertex_attributes().begin(); it != lcc.vertex_attributes().end(); ++it)
+        addresses.push_back(reinterpret_cast<const char*>(&*it));
+    std::size_t hint = 12345;
+    for (std::size_t i = addresses.size(); i-- > 0;) {
+        ASSERT_EQ(numbering.find(addresses[i], hint), i);
+        for (std::size_t b = 1; b < stride; ++b)
+            ASSERT_EQ(numbering.find(addresses[i] + b, hint), HexEx::detail::LccVertexNumbering::npos) << i << " + " << b;
+    }
+    EXPECT_EQ(numbering.find(&elsewhere, hint), HexEx::detail::LccVertexNumbering::npos);
+    EXPECT_EQ(numbering.find(addresses[0], hint), 0u);
 }

@@ -100,20 +100,24 @@ bool lccClosedTetFaces(const LCC& lcc, typename LCC::Dart_const_handle d, typena
     if (!triangle(d, faces[0])) return false;
     for (int k = 1; k < 4; ++k)
         if (!triangle(lcc.beta(faces[0][k - 1], 2), faces[k])) return false;
-    const auto faceOf = [&](Dart x) {
-        int found = -1;
-        for (int k = 0; k < 4; ++k)
-            for (int i = 0; i < 3; ++i)
-                if (faces[k][i] == x) {
-                    if (found >= 0) return -2;  // the same dart in two faces: faces not distinct
-                    found = k;
-                }
-        return found;
-    };
+    // The 12 darts distinct: a beta1 cycle that closes after three steps has one or three
+    // darts, and two cycles are equal or disjoint, so it suffices that each face has two
+    // different darts and that no face starts inside an earlier one.
     for (int k = 0; k < 4; ++k) {
+        if (faces[k][0] == faces[k][1]) return false;
+        for (int j = 0; j < k; ++j)
+            if (faces[k][0] == faces[j][0] || faces[k][0] == faces[j][1] || faces[k][0] == faces[j][2]) return false;
+    }
+    // Each face 2-sewn to the three others: face 0 is by construction (its dart i is sewn
+    // to the first dart of face i + 1); the darts of faces 1..3 are looked up.
+    const auto faceOf = [&](Dart x) {
+        for (int k = 0; k < 4; ++k)
+            if (faces[k][0] == x || faces[k][1] == x || faces[k][2] == x) return k;
+        return -1;
+    };
+    for (int k = 1; k < 4; ++k) {
         unsigned neighbours = 0;
         for (int i = 0; i < 3; ++i) {
-            if (faceOf(faces[k][i]) != k) return false;
             const int n = faceOf(lcc.beta(faces[k][i], 2));
             if (n < 0 || n == k) return false;
             neighbours |= 1u << n;
@@ -148,14 +152,15 @@ std::array<typename LCC::Dart_const_handle, 4> lccTetCornerDarts(const LCC& lcc,
     return {d, lcc.beta(d, 1), lcc.beta(d, 1, 1), lcc.beta(d, 2, 0)};
 }
 
-/// The number (LccVertexNumbering of @p lcc) of the vertex of dart @p d of tet @p t; throws
+/// The number (LccVertexNumbering of @p lcc) of the vertex of dart @p d of tet @p t (with
+/// @p hint: LccVertexNumbering::find()'s run hint, kept by the caller); throws
 /// InputError if the dart has no vertex attribute or one that is not among the LCC's.
 template <class LCC>
 std::size_t lccVertexOf(const LCC& lcc, const LccVertexNumbering& index, typename LCC::Dart_const_handle d,
-                        std::size_t t) {
+                        std::size_t t, std::size_t* hint = nullptr) {
     const auto va = lcc.vertex_attribute(d);
     if (va == nullptr) throw InputError("LCC volume " + std::to_string(t) + ": a dart has no vertex attribute");
-    const std::size_t v = index.find(static_cast<const void*>(&*va));
+    const std::size_t v = hint ? index.find(static_cast<const void*>(&*va), *hint) : index.find(static_cast<const void*>(&*va));
     if (v == LccVertexNumbering::npos)
         throw InputError("LCC volume " + std::to_string(t) + ": a dart's vertex attribute is not one of the LCC's");
     return v;

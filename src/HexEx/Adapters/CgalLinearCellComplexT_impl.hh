@@ -93,6 +93,7 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
     // 12 darts the tetrahedron check has already found instead of walking the volume again.
     const LccMark<LCC> mark(lcc);
     Dart faces[4][3];
+    std::size_t hint[4] = {0, 0, 0, 0};  // per corner: the vertex run found last (LccVertexNumbering::find())
     for (auto it = lcc.darts().begin(); it != lcc.darts().end(); ++it) {
         if (lcc.is_marked(it, mark.id)) continue;
         const std::size_t t = pm.params.size();
@@ -100,7 +101,7 @@ ParametrizedTetMesh lccToParametrizedTetMesh(const LCC& lcc, const ParamFn& para
         for (const auto& f : faces)
             for (const Dart& x : f) lcc.mark(x, mark.id);
         for (std::size_t i = 0; i < 4; ++i) {
-            h[i] = VertexHandle(static_cast<int>(lccVertexOf(lcc, index, c[i], t)));
+            h[i] = VertexHandle(static_cast<int>(lccVertexOf(lcc, index, c[i], t, &hint[i])));
             u[i] = lccToVec3d(param(lcc, c[i]));
         }
         cells.push_back(h);
