@@ -16,10 +16,10 @@
 /// built with OpenVolumeMesh, ovm (tetrahedral kernel with the halfface map -> hexahedral
 /// kernel, through OvmTetMesh and OvmHexOutput) and ovm-native (the one-call overload
 /// extractHexMesh(tetMesh, halffaceProperty, hexMesh), timed stage by stage through the
-/// same detail functions it calls) and ovm-native-split (the same with the hex mesh's
-/// bottom-up incidences turned off before the writing, so that cpu_write_s is HexEx's own
-/// writing, and OpenVolumeMesh's enable_bottom_up_incidences() afterwards timed apart as
-/// cpu_incidences_s: the two parts of ovm-native's cpu_write_s). Run one measurement per process:
+/// same detail functions it calls) and ovm-native-split (the same, with cpu_write_s
+/// HexEx's own writing and OpenVolumeMesh's rebuild of its bottom-up incidences
+/// (OvmHexOutput::restoreIncidences()) timed apart as cpu_incidences_s: the two parts of
+/// ovm-native's cpu_write_s). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
 /// `key=value` pairs; building the input in the user's structure is not timed (input_mb:
 /// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
@@ -137,9 +137,10 @@ Timings timeThroughTraits(MakeView makeView, Output& out) {
 /// The stages of a one-call overload: @p read copies the user's mesh into the built-in
 /// kernel (adjacency included), the extraction runs taking the copy's parameters over as its
 /// working copy (the builtin path's extraction copies them), the copy is freed, and the
-/// result is written through @p out.
-template <class Read, class Output>
-Timings timeOneCall(Read read, Output out) {
+/// result is written by @p write (called with the HexMesh, which it may free, and the
+/// timings, whose cpu_incidences it may set).
+template <class Read, class Write>
+Timings timeOneCall(Read read, Write write) {
     Timings r;
     const auto t0 = std::chrono::steady_clock::now();
     const double c0 = cpuNow();
@@ -157,9 +158,9 @@ Timings timeOneCall(Read read, Output out) {
         r.cpu_extract = c3 - c2;
     }
     const auto t3 = std::chrono::steady_clock::now();
-    HexEx::fromHexMesh(hm, out);
+    write(hm, r);
     r.write = since(t3);
-    r.cpu_write = cpuNow() - c3;
+    r.cpu_write = cpuNow() - c3 - r.cpu_incidences;
     r.total = since(t0);
     return r;
 }
@@ -238,7 +239,10 @@ int main(int argc, char** argv) {
         inputMb = rssMb();
         HexLcc outLcc;
         r = timeOneCall([&] { return HexEx::detail::lccToParametrizedTetMesh(lcc, HexEx::LccDartInfoParameter{}, 0); },
-                        HexEx::LccHexOutput<HexLcc>(outLcc));
+                        [&](HexEx::HexMesh& hm, Timings&) {
+                            HexEx::LccHexOutput<HexLcc> out(outLcc);
+                            HexEx::fromHexMesh(hm, out);
+                        });
         hexes = outLcc.one_dart_per_cell<3>().size();
 #ifdef HEXEX_BENCH_OVM
     } else if (path == "ovm") {
@@ -258,7 +262,6 @@ int main(int argc, char** argv) {
         const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
         OvmHexes hexMesh;
         const bool split = path == "ovm-native-split";
-        if (split) hexMesh.enable_bottom_up_incidences(false);
         r = timeOneCall(
             [&] {
                 return HexEx::detail::ovmToParametrizedTetMesh(
@@ -267,12 +270,15 @@ int main(int argc, char** argv) {
                         const OpenVolumeMesh::VertexHandle&) -> const OpenVolumeMesh::Geometry::Vec3d& { return prop[hf]; },
                     0);
             },
-            HexEx::OvmHexOutput<OvmHexes>(hexMesh));
-        if (split) {
-            const double c0 = cpuNow();
-            hexMesh.enable_bottom_up_incidences(true);
-            r.cpu_incidences = cpuNow() - c0;
-        }
+            [&](HexEx::HexMesh& hm, Timings& t) {  // the writing of the one-call overload (extractOvm())
+                HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
+                out.deferIncidences();
+                HexEx::fromHexMesh(hm, out);
+                hm = HexEx::HexMesh();
+                const double c0 = cpuNow();
+                out.restoreIncidences();
+                if (split) t.cpu_incidences = cpuNow() - c0;
+            });
         hexes = hexMesh.n_cells();
 #endif
     } else {

@@ -295,8 +295,11 @@ public:
 
     /// Writes into @p mesh (cleared by the first clear()).
     explicit OvmHexOutput(Mesh& mesh, bool topologyCheck = false) : mesh_(&mesh), check_(topologyCheck) {}
-    /// Calls finish().
-    ~OvmHexOutput() { finish(); }
+    /// Calls finish() and restoreIncidences().
+    ~OvmHexOutput() {
+        finish();
+        restoreIncidences();
+    }
     /// Copying would finish the mesh twice.
     OvmHexOutput(const OvmHexOutput&) = delete;
     /// Copying would finish the mesh twice.
@@ -329,23 +332,39 @@ public:
         if (!check_) {
             index_.reserve(nVertices, nVertices + 2 * nHexes, 3 * nHexes + nHexes / 2);
             // The bulk writer never asks the mesh for incidences: OpenVolumeMesh builds
-            // them once, in finish(), instead of cell by cell.
-            if (mesh_->has_full_bottom_up_incidences()) {
-                mesh_->enable_bottom_up_incidences(false);
-                incidencesOff_ = true;
-            }
+            // them once, in finish(), instead of cell by cell. Each kind the mesh had on
+            // (vertex, edge, face) is turned off and back on; kinds it had off stay off.
+            offV_ = offV_ || mesh_->has_vertex_bottom_up_incidences();
+            offE_ = offE_ || mesh_->has_edge_bottom_up_incidences();
+            offF_ = offF_ || mesh_->has_face_bottom_up_incidences();
+            mesh_->enable_vertex_bottom_up_incidences(false);
+            mesh_->enable_edge_bottom_up_incidences(false);
+            mesh_->enable_face_bottom_up_incidences(false);
         }
     }
-    /// Ends the writing: turns OpenVolumeMesh's bottom-up incidences back on (they are
-    /// built in one pass) if reserve() turned them off, and frees the lookup tables.
-    /// Called by fromHexMesh() after the last cell and by the destructor.
+    /// Ends the writing: frees the lookup tables, then turns back on the kinds of
+    /// OpenVolumeMesh's bottom-up incidences that reserve() turned off (each built in one
+    /// pass; with edge and face incidences both on, OpenVolumeMesh also orders the
+    /// halffaces around every edge), unless deferIncidences() asked to leave that to
+    /// restoreIncidences(). Called by fromHexMesh() after the last cell and by the destructor.
     void finish() {
-        if (incidencesOff_) {
-            mesh_->enable_bottom_up_incidences(true);
-            incidencesOff_ = false;
-        }
         index_.clear();
         bigFaces_.clear();
+        if (!defer_) restoreIncidences();
+    }
+    /// Makes finish() leave the incidences off, so that the caller can free memory (its
+    /// HexMesh, say) before OpenVolumeMesh builds them in restoreIncidences(); the
+    /// destructor restores them at the latest.
+    void deferIncidences() { defer_ = true; }
+    /// Turns back on the kinds of bottom-up incidences that reserve() turned off (vertex,
+    /// edge, then face); nothing if none was. The incidences are then those OpenVolumeMesh
+    /// computes when they are enabled on the finished mesh.
+    void restoreIncidences() {
+        defer_ = false;
+        if (offV_) mesh_->enable_vertex_bottom_up_incidences(true);
+        if (offE_) mesh_->enable_edge_bottom_up_incidences(true);
+        if (offF_) mesh_->enable_face_bottom_up_incidences(true);
+        offV_ = offE_ = offF_ = false;
     }
     /// Adds a vertex and returns its index.
     std::size_t addVertex(const Vec3d& p) {
@@ -462,7 +481,8 @@ private:
 
     Mesh* mesh_;
     bool check_;
-    bool incidencesOff_ = false;  // reserve() turned the mesh's bottom-up incidences off
+    bool offV_ = false, offE_ = false, offF_ = false;  // incidence kinds reserve() turned off
+    bool defer_ = false;                               // finish() leaves them to restoreIncidences()
     std::vector<OpenVolumeMesh::CellHandle> cells_;
     std::size_t skipped_ = 0;
     detail::OvmBulkIndex index_;                                  // edges and faces made so far

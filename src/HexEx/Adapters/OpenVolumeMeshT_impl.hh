@@ -280,8 +280,11 @@ ExtractionReport extractOvm(const TetMeshT& tetMesh, ParamOf&& paramOf, HexMeshT
         writeOvmTetProperties(tetMesh, pm, opt, results);
     }  // the copy of the input is freed before the output is written
     OvmHexOutput<HexMeshT> out(hexMesh);
+    out.deferIncidences();
     fromHexMesh(hm, out);
+    hm = HexMesh();  // freed before OpenVolumeMesh builds its incidences (the peak of the writing)
     if (hexResults.any()) writeOvmHexProperties(out, options.provenance ? *options.provenance : prov, hexResults);
+    out.restoreIncidences();
     return report;
 }
 

@@ -398,3 +398,50 @@ TEST(OvmNativeCall, ProvenanceWrittenIntoTheHexMesh) {
     HexEx::extractHexMesh(tets, igm, plain);
     EXPECT_FALSE(plain.get_cell_property<int>("hexex:source_tet"));
 }
+
+TEST(OvmNativeCall, UserIncidenceFlagsAreKept) {
+    // The bulk writer turns OpenVolumeMesh's bottom-up incidences off while writing and back
+    // on afterwards: each kind (vertex, edge, face) the user's mesh had on, and only those.
+    // The mesh is the same for every combination, and with all on its incidences are those
+    // OpenVolumeMesh computes when they are enabled on the finished mesh.
+    TetMesh tets;
+    ASSERT_TRUE(OpenVolumeMesh::IO::read_file("src/Unittests/data/ovm/sphere.ovmb", tets));
+    const auto& param = *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    HexMeshOvm all;
+    HexEx::extractHexMesh(tets, param, all);
+    ASSERT_TRUE(all.has_full_bottom_up_incidences());
+    ASSERT_EQ(all.n_cells(), 216u);
+    for (int flags = 0; flags < 8; ++flags) {
+        const bool v = flags & 1, e = flags & 2, f = flags & 4;
+        HexMeshOvm m;
+        m.enable_vertex_bottom_up_incidences(v);
+        m.enable_edge_bottom_up_incidences(e);
+        m.enable_face_bottom_up_incidences(f);
+        HexEx::extractHexMesh(tets, param, m);
+        EXPECT_EQ(m.has_vertex_bottom_up_incidences(), v) << flags;
+        EXPECT_EQ(m.has_edge_bottom_up_incidences(), e) << flags;
+        EXPECT_EQ(m.has_face_bottom_up_incidences(), f) << flags;
+        expectSameOvmMesh(m, all);
+        if (flags == 0) {
+            m.enable_bottom_up_incidences(true);
+            for (std::size_t x = 0; x < m.n_vertices(); ++x) {
+                const OpenVolumeMesh::VertexHandle vh{static_cast<int>(x)};
+                std::vector<int> a, b;
+                for (auto he : m.outgoing_halfedges(vh)) a.push_back(he.idx());
+                for (auto he : all.outgoing_halfedges(vh)) b.push_back(he.idx());
+                ASSERT_EQ(a, b) << "vertex " << x;
+            }
+            for (std::size_t x = 0; x < m.n_edges(); ++x) {
+                const OpenVolumeMesh::HalfEdgeHandle he = m.halfedge_handle(OpenVolumeMesh::EdgeHandle(int(x)), 0);
+                std::vector<int> a, b;
+                for (auto hf : m.halfedge_halffaces(he)) a.push_back(hf.idx());
+                for (auto hf : all.halfedge_halffaces(he)) b.push_back(hf.idx());
+                ASSERT_EQ(a, b) << "edge " << x;
+            }
+            for (std::size_t x = 0; x < 2 * m.n_faces(); ++x) {
+                const OpenVolumeMesh::HalfFaceHandle hf{static_cast<int>(x)};
+                ASSERT_EQ(m.incident_cell(hf), all.incident_cell(hf)) << "halfface " << x;
+            }
+        }
+    }
+}
