@@ -4,6 +4,7 @@
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <limits>
 #include <string>
 #include "../Predicates/ExactPredicates.hh"
@@ -492,6 +493,29 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
 
 } // namespace
 
+namespace {
+
+/// Darts per block of the tracing passes (parallelBlocks()).
+constexpr std::size_t kTraceBlock = 4096;
+
+/// Calls body(worker, begin, end) for the blocks of @p block consecutive indices of [0, n),
+/// which @p workers threads take in turn (worker 0 on the calling thread): the cost per dart
+/// varies a lot along the dart array (implicit cells, long walks), so equal contiguous
+/// chunks leave one thread idle. Results must not depend on which worker takes a block.
+template <class Body>
+void parallelBlocks(std::size_t n, int workers, std::size_t block, Body&& body) {
+    std::atomic<std::size_t> next{0};
+    parallelChunks(static_cast<std::size_t>(workers), workers, [&](int k, std::size_t, std::size_t) {
+        for (;;) {
+            const std::size_t b = next.fetch_add(block, std::memory_order_relaxed);
+            if (b >= n) break;
+            body(k, b, std::min(n, b + block));
+        }
+    });
+}
+
+} // namespace
+
 std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& tr,
                                                   const std::vector<TetSoS>& tets, const DartSet& darts,
                                                   int threads, TraceStats& stats,
@@ -499,13 +523,10 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     const std::size_t n = darts.darts.size();
     if (n >= static_cast<std::size_t>(std::numeric_limits<int>::max()))
         throw InputError("too many darts (" + std::to_string(n) + ") for 32-bit dart indices");
-    std::vector<DartLinks> alpha(n);
-    const int chunks = std::max(1, threads);
-    std::vector<TraceStats> part(static_cast<std::size_t>(chunks));
     // Each link is traced from one of its two darts where the frames tell which: pass 1
     // traces alpha_i only from the darts that are not deferred for i, a found partner that
-    // is deferred gets the link back (the smallest dart that found it), and pass 2 traces
-    // whatever is still pending (partners seen through a transition that changes the
+    // is deferred gets the link back at once (the smallest dart that found it), and pass 2
+    // traces whatever is still pending (partners seen through a transition that changes the
     // frame's orientation, boundaries, failures). A regular dart is deferred for alpha_0 if
     // d1 points in the negative axis direction of its chart, for alpha_3 if d3 does, for
     // alpha_1 if d1 > d2 (direction codes) and for alpha_2 if d2 > d3; the two darts of a
@@ -517,23 +538,46 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     // (the report's asymmetric_links is 0), the links are exactly those of tracing every
     // dart itself; a one-sided link can end up mutual here where that would have cut it.
     constexpr int kPending = std::numeric_limits<int>::min();
+    // Every entry starts pending: deferred entries are written only by links back (an
+    // atomic minimum) and by their own dart's implicit-cell answer (only over kPending),
+    // entries that are not deferred only by their own dart, so pass 1 needs no second
+    // pass for the links back and no thread reads an entry another one writes.
+    std::vector<DartLinks> alpha(n, DartLinks{kPending, kPending, kPending, kPending});
+    const int workers = std::max(1, threads);
+    std::vector<TraceStats> part(static_cast<std::size_t>(workers));
     auto deferred = [&](std::size_t d, int i) {
         const Dart& D = darts.darts[d];
         const auto& f = D.d;
         const bool upper = i == 0 ? dirSign(f[0]) < 0 : i == 1 ? f[0] > f[1] : i == 2 ? f[1] > f[2] : dirSign(f[2]) < 0;
         return upper != (D.sign < 0);
     };
+    // The link back into a deferred partner: it takes the smallest dart that found it (as a
+    // pass in dart order after pass 1 would write first); a value below kUnconnected there
+    // is kPending or its own implicit-cell answer, which a link back replaces (pass 2 would
+    // not have traced it).
+    auto linkBack = [&](std::size_t d, int i, long p) {
+        if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) return;
+        int* slot = &alpha[static_cast<std::size_t>(p)][i];
+        const int mine = static_cast<int>(d);
+        int cur = __atomic_load_n(slot, __ATOMIC_RELAXED);
+        while ((cur < kUnconnected || cur > mine) &&
+               !__atomic_compare_exchange_n(slot, &cur, mine, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+        }
+    };
     auto record = [&](TraceStats& st, std::size_t d, int i, long p) {
         alpha[d][i] = static_cast<int>(p);
         if (p == kUnconnected) ++st.unconnected[i];
         else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
+        linkBack(d, i, p);
     };
     // Walks that pass cancelled fold points are traced per dart (traceOne() handles them).
     shareEdgeTraces = shareEdgeTraces && darts.n_cancelled == 0;
     const auto& D = darts.darts;
     auto sameRun = [&](std::size_t x, std::size_t y) { return D[x].tet == D[y].tet && samePoint(D[x].z, D[y].z); };
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        TraceStats st;  // local: per-chunk counters next to each other would share cache lines
+    parallelBlocks(n, workers, kTraceBlock, [&](int k, std::size_t b, std::size_t e) {
+        // Local copy: per-worker counters next to each other would share cache lines.
+        TraceStats st = part[static_cast<std::size_t>(k)];
+        if (k == 0 && progress) progress(0.8 * static_cast<double>(b) / static_cast<double>(n));
         // The darts of one tet at one grid point (a run) are contiguous: a table from frame
         // code to dart answers the lookups of alpha_1..alpha_3 partners there.
         std::array<int, kFrameCodes> run;
@@ -544,7 +588,6 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         long groupLink[kMaxGroup], groupSteps[kMaxGroup];
         unsigned char groupSplit[kMaxGroup];
         for (std::size_t d = b; d < e; ++d) {
-            if (k == 0 && progress && ((d - b) & 0xFFFF) == 0) progress(0.8 * static_cast<double>(d - b) / static_cast<double>(e - b));
             if (d >= runE) {
                 for (std::size_t x = runB; x < runE; ++x) run[static_cast<std::size_t>(frameCode(D[x].d))] = kNoDart;
                 runB = d;
@@ -558,10 +601,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
             }
             const auto& f = D[d].d;
             for (int i = 0; i < 4; ++i) {
-                if (deferred(d, i)) {
-                    alpha[d][i] = kPending;
-                    continue;
-                }
+                const bool def = deferred(d, i);
+                if (def && i == 0) continue;  // stays pending until a link back or pass 2
                 if (i == 0 && shareEdgeTraces) {  // one walk for the darts of this run with this d1
                     if (d >= groupE) {
                         groupB = d;
@@ -585,8 +626,27 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                                                         : i == 2 ? std::array<AxisDir, 3>{f[0], f[2], f[1]}
                                                                  : std::array<AxisDir, 3>{f[0], f[1], dirNeg(f[2])};
                     const int hit = run[static_cast<std::size_t>(frameCode(want))];
+                    // No dart with that frame in the run but an implicit cell there: the
+                    // answer traceOne() gives at once, with or without the run table.
+                    const bool implicit = hit == kNoDart && darts.implicitCell(D[d].tet, D[d].z, want);
+                    if (def) {
+                        // What pass 2 would trace: only the implicit answer is known here,
+                        // and a link back still takes precedence over it.
+                        if (implicit) {
+                            int* slot = &alpha[d][i];
+                            int cur = kPending;
+                            __atomic_compare_exchange_n(slot, &cur, static_cast<int>(encodeImplicitPartner(darts.occurrence(D[d].tet, D[d].z))),
+                                                        false, __ATOMIC_RELAXED, __ATOMIC_RELAXED);
+                        }
+                        continue;
+                    }
                     if (hit >= 0) {
                         alpha[d][i] = hit;
+                        linkBack(d, i, hit);
+                        continue;
+                    }
+                    if (implicit) {
+                        alpha[d][i] = static_cast<int>(encodeImplicitPartner(darts.occurrence(D[d].tet, D[d].z)));
                         continue;
                     }
                 }
@@ -595,30 +655,18 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         }
         part[static_cast<std::size_t>(k)] = st;
     });
-    // Links back into pending entries, in parallel: a pending entry (a deferred link, and
-    // only those are pending) takes the smallest dart that found it, as a sequential pass
-    // in dart order would write first; the entries are updated by an atomic minimum.
-    // Other threads only read entries that are not deferred, so these never conflict.
-    parallelChunks(n, chunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t d = b; d < e; ++d)
-            for (int i = 0; i < 4; ++i) {
-                if (deferred(d, i)) continue;
-                const int p = alpha[d][i];
-                if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) continue;
-                int* slot = &alpha[static_cast<std::size_t>(p)][i];
-                const int mine = static_cast<int>(d);
-                int cur = __atomic_load_n(slot, __ATOMIC_RELAXED);
-                while ((cur == kPending || cur > mine) &&
-                       !__atomic_compare_exchange_n(slot, &cur, mine, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
-                }
-            }
-    });
-    std::vector<TraceStats> part2(static_cast<std::size_t>(chunks));
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        TraceStats st;
+    // Pass 2: the entries still pending (no link back came, no implicit answer).
+    std::vector<TraceStats> part2(static_cast<std::size_t>(workers));
+    parallelBlocks(n, workers, kTraceBlock, [&](int k, std::size_t b, std::size_t e) {
+        TraceStats st = part2[static_cast<std::size_t>(k)];
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 4; ++i)
-                if (alpha[d][i] == kPending) record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps));
+                if (alpha[d][i] == kPending) {
+                    const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
+                    alpha[d][i] = static_cast<int>(p);
+                    if (p == kUnconnected) ++st.unconnected[i];
+                    else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
+                }
         part2[static_cast<std::size_t>(k)] = st;
     });
     part.insert(part.end(), part2.begin(), part2.end());
