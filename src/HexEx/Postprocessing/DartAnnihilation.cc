@@ -21,6 +21,11 @@ constexpr std::uint8_t kTouched = 2;    // joined some vertex group (heirs)
 constexpr std::uint8_t kSaved = 4;      // links changed at least once; the originals are saved
 constexpr std::uint8_t kInCell = 8;     // scratch of countDefectiveHexCells()
 constexpr std::uint8_t kCellDone = 16;  // scratch of countDefectiveHexCells()
+// The dart's sign and liveness, copied into the same byte so that a look at a neighbour reads
+// one array instead of three (sign, alive, flags); `alive` is still written for the callers.
+constexpr std::uint8_t kAlive = 32;     // mirrors alive[d]
+constexpr std::uint8_t kAnti = 64;      // sign[d] < 0
+constexpr std::uint8_t kRegular = 128;  // sign[d] > 0
 
 /// Rank of a retry that leaves no broken cell but merges vertices (countMergedVertexQuads()):
 /// above any count of broken cells.
@@ -34,6 +39,32 @@ std::uint64_t mix(std::uint64_t x) {
     return x ^ (x >> 31);
 }
 
+/// An append-only list kept in blocks of fixed size: growing never copies what is stored
+/// and never holds two copies at once (the saved links of a fold-heavy map: 3.5M entries,
+/// 70 MB, on the pig folded by 1.5 grid units).
+template <class T>
+class BlockList {
+public:
+    /// Appends @p v.
+    void push_back(const T& v) {
+        if (blocks_.empty() || blocks_.back().size() == kBlock) {
+            blocks_.emplace_back();
+            blocks_.back().reserve(kBlock);
+        }
+        blocks_.back().push_back(v);
+    }
+    /// Calls @p f on every entry, in the order they were appended.
+    template <class F>
+    void forEach(F&& f) const {
+        for (const auto& b : blocks_)
+            for (const T& e : b) f(e);
+    }
+
+private:
+    static constexpr std::size_t kBlock = std::size_t(1) << 16;
+    std::vector<std::vector<T>> blocks_;
+};
+
 /// The annihilation's state: links, survivors, the saved original links of changed darts
 /// and the vertex groups of the heirs.
 class Annihilator {
@@ -41,18 +72,23 @@ public:
     Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
                 bool retries)
         : retries_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
-          flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {}
+          flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {
+        for (std::size_t d = 0; d < flag_.size(); ++d)
+            flag_[d] = static_cast<std::uint8_t>((alive_[d] ? kAlive : 0) | (sign_[d] < 0 ? kAnti : 0) | (sign_[d] > 0 ? kRegular : 0));
+    }
 
-    /// The first pass: every anti dart in ascending order, then the re-queued ones. With
-    /// retries, the first call also lists the anti darts (the retries' orders permute them).
+    /// The first pass: every anti dart in ascending order, then the re-queued ones. The first
+    /// call lists the anti darts (the retries' orders permute them); the pass then walks that
+    /// list, which visits the darts a scan of all darts for queued anti darts would, in the
+    /// same order (only processed darts leave the queue, and re-queued ones wait for the end
+    /// of the scan), with the links of the darts ahead prefetched.
     void runAll() {
-        const bool list = retries_ && antis_.empty();
-        for (long d = 0; d < n_; ++d)
-            if (alive_[idx(d)] && sign_[idx(d)] < 0) {
-                F(d) |= kQueued;
-                if (list) antis_.push_back(static_cast<int>(d));
-            }
-        run(nullptr);
+        if (antis_.empty()) {
+            for (long d = 0; d < n_; ++d)
+                if (isAliveAnti(d)) antis_.push_back(static_cast<int>(d));
+            if (wantHeirs_) pending_.reserve(antis_.size());  // at most one pair per anti dart
+        }
+        run(&antis_);
     }
 
     /// Phase by phase: first only partners linked by alpha_0, then alpha_0..1, alpha_0..2 and
@@ -79,13 +115,21 @@ private:
     static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
     std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
     std::uint8_t& F(long d) { return flag_[idx(d)]; }
-    bool isAnti(long d) const { return sign_[idx(d)] < 0; }
+    bool isAnti(long d) const { return flag_[idx(d)] & kAnti; }
+    bool isAlive(long d) const { return flag_[idx(d)] & kAlive; }
+    /// Alive and anti.
+    bool isAliveAnti(long d) const { return (flag_[idx(d)] & (kAlive | kAnti)) == (kAlive | kAnti); }
+    /// Removes @p d (here and in the caller's array).
+    void kill(long d) {
+        F(d) &= static_cast<std::uint8_t>(~kAlive);
+        alive_[idx(d)] = 0;
+    }
 
     /// Called before @p d's links change or it is removed: saves its original links.
     void touch(long d) {
         if (retries_ && !(F(d) & kSaved)) {
             F(d) |= kSaved;
-            saved_.emplace_back(static_cast<int>(d), A(d));
+            saved_.push_back({static_cast<int>(d), A(d)});
         }
     }
 
@@ -102,17 +146,64 @@ private:
     /// Removes @p anti with a regular partner, if it has one.
     void step(long anti, std::deque<long>& requeued);
 
+    /// Joins the vertex groups of a removed pair (see annihilateDarts()): the pair, and each
+    /// of the two with its alpha_1..alpha_3 partners as they are when the pair is removed.
+    /// All of these darts end up in one group, so the group's root is found once and every
+    /// partner's root linked to it (the smaller root wins, as UnionFind::unite() does: the
+    /// groups and their smallest darts are those of uniting pair by pair).
+    void joinGroups(long reg, long anti) {
+        if (sameVertex_.parent.empty()) sameVertex_ = UnionFind(idx(n_));
+        std::vector<int>& parent = sameVertex_.parent;
+        int root = sameVertex_.find(idOf(reg));
+        auto join = [&](long x) {
+            const int r = sameVertex_.find(idOf(x));
+            if (r == root) return;
+            if (r < root) {
+                parent[static_cast<std::size_t>(root)] = r;
+                root = r;
+            } else {
+                parent[static_cast<std::size_t>(r)] = root;
+            }
+        };
+        join(anti);
+        for (int j = 1; j < 4; ++j)
+            for (const long self : {reg, anti}) {
+                const long x = A(self)[j];
+                if (x >= 0 && x != reg && x != anti) join(x);
+            }
+    }
+
+    /// Joins the groups of the pairs whose joining was deferred (pending_), and clears the list.
+    void joinPending() {
+        const std::size_t n = pending_.size();
+        for (std::size_t k = 0; k < n; ++k) {
+            if (k + 8 < n) {
+                const auto& f = pending_[k + 8];
+                prefetch(&A(f.first));
+                prefetch(&A(f.second));
+                if (!sameVertex_.parent.empty()) {
+                    prefetch(&sameVertex_.parent[idx(f.first)]);
+                    prefetch(&sameVertex_.parent[idx(f.second)]);
+                }
+            }
+            joinGroups(pending_[k].first, pending_[k].second);
+        }
+        pending_.clear();
+    }
+
     /// Puts every dart back to its original links, alive and ungrouped (before a retry).
     /// Only touched darts changed: every removed dart and every dart that joined a vertex
     /// group was touched, and each was alive then.
     void restoreAll() {
-        for (const auto& e : saved_) {
+        saved_.forEach([&](const Saved& e) {
             const long d = e.first;
             A(d) = e.second;
             alive_[idx(d)] = 1;
-            F(d) &= static_cast<std::uint8_t>(~(kQueued | kTouched));
+            F(d) = static_cast<std::uint8_t>((F(d) & ~(kQueued | kTouched)) | kAlive);
             if (!sameVertex_.parent.empty()) sameVertex_.parent[idx(d)] = e.first;
-        }
+        });
+        pending_.clear();
+        joinNow_ = false;
         pairs = 0;
     }
 
@@ -120,8 +211,9 @@ private:
     /// order of their first change (the count of broken cells does not depend on it).
     std::vector<int> changedDarts() const {
         std::vector<int> c;
-        for (const auto& e : saved_)
+        saved_.forEach([&](const Saved& e) {
             if (alive_[idx(e.first)]) c.push_back(e.first);
+        });
         return c;
     }
 
@@ -129,8 +221,9 @@ private:
     /// vertices while every cell stays a hex).
     std::vector<int> alpha3Changed() const {
         std::vector<int> c;
-        for (const auto& e : saved_)
+        saved_.forEach([&](const Saved& e) {
             if (alive_[idx(e.first)] && alpha_[idx(e.first)][3] != e.second[3]) c.push_back(e.first);
+        });
         return c;
     }
 
@@ -216,16 +309,21 @@ private:
     // folds pay nothing). Dense ids cost 4 bytes per dart; a hash map of the touched darts
     // cost about 35 bytes per touched dart, and on fold-heavy maps nearly every dart is touched.
     UnionFind sameVertex_;
-    std::vector<std::pair<int, std::array<int, 4>>> saved_;  // (dart, original links), in order of first change
+    using Saved = std::pair<int, std::array<int, 4>>;
+    BlockList<Saved> saved_;  // (dart, original links), in order of first change
     int maxLink_ = 3;                                        // partners are looked for among alpha_0..alpha_maxLink_
-    std::vector<int> antis_;                                 // anti darts alive before the first pass (for retries)
+    std::vector<int> antis_;                                 // anti darts alive before the first pass
+    // Removed pairs (regular, anti) of the current run whose vertex groups are not joined yet
+    // (joinGroups() at the end, collectHeirs()); joinNow_: the run joins at once (step()).
+    std::vector<std::pair<int, int>> pending_;
+    bool joinNow_ = false;
 };
 
 void Annihilator::step(long anti, std::deque<long>& requeued) {
     long reg = -1;
     for (int i = 0; i <= maxLink_ && reg < 0; ++i) {
         const long r = A(anti)[i];
-        if (r >= 0 && r != anti && alive_[idx(r)] && sign_[idx(r)] > 0) reg = r;
+        if (r >= 0 && r != anti && (F(r) & (kAlive | kRegular)) == (kAlive | kRegular)) reg = r;
     }
     if (reg < 0) return;
     touch(reg);
@@ -233,13 +331,25 @@ void Annihilator::step(long anti, std::deque<long>& requeued) {
     if (wantHeirs_) {
         // The pair's h-vertices merge (paper 4.4.2: a pair linked by alpha_0 joins the
         // vertices of its two darts), and each dart stays with the darts around its
-        // h-vertex (alpha_1..alpha_3 partners).
-        sameVertex_.unite(idOf(reg), idOf(anti));
-        for (int j = 1; j < 4; ++j)
-            for (const long self : {reg, anti}) {
-                const long x = A(self)[j];
-                if (x >= 0 && x != reg && x != anti) sameVertex_.unite(idOf(self), idOf(x));
+        // h-vertex (alpha_1..alpha_3 partners). The joining is deferred to the end
+        // (collectHeirs()), which reads the pair's links then: they are those of now as
+        // long as no step writes a link of a removed dart. With involutive links that never
+        // happens (a removed dart's partners were re-linked to each other, so no alive dart
+        // still links to it), and runs that are undone by a retry then cost no joining at
+        // all. Should a step be about to write a removed dart's link (or reg's), the
+        // pending pairs are joined first and the rest of the run joins at once.
+        if (!joinNow_) {
+            for (int j = 0; j < 4 && !joinNow_; ++j) {
+                const long x = A(reg)[j], y = A(anti)[j];
+                if (x == anti) continue;
+                if ((x >= 0 && x != reg && !isAlive(x)) || (y >= 0 && y != anti && (y == reg || !isAlive(y)))) {
+                    joinPending();
+                    joinNow_ = true;
+                }
             }
+        }
+        if (joinNow_) joinGroups(reg, anti);
+        else pending_.emplace_back(static_cast<int>(reg), static_cast<int>(anti));
     }
     for (int j = 0; j < 4; ++j) {
         const long x = A(reg)[j], y = A(anti)[j];
@@ -252,18 +362,26 @@ void Annihilator::step(long anti, std::deque<long>& requeued) {
         if (xs) A(x)[j] = static_cast<int>(ys ? y : (y < 0 ? -1 : x));
         if (ys) A(y)[j] = static_cast<int>(xs ? x : (x < 0 ? -1 : y));
     }
-    alive_[idx(reg)] = alive_[idx(anti)] = 0;
+    kill(reg);
+    kill(anti);
     ++pairs;
     // The neighbours may now be regular/anti pairs themselves.
     for (int j = 0; j < 4; ++j)
         for (long nb : {A(reg)[j], A(anti)[j]}) {
-            if (nb < 0 || !alive_[idx(nb)]) continue;
+            if (nb < 0 || !isAlive(nb)) continue;
+            if (isAnti(nb)) {
+                // The neighbour itself is the candidate (the same for each of its links).
+                if (!(F(nb) & kQueued)) {
+                    requeued.push_back(nb);
+                    F(nb) |= kQueued;
+                }
+                continue;
+            }
             for (int k = 0; k < 4; ++k) {
                 const long m = A(nb)[k];
-                const long cand = isAnti(nb) ? nb : m;
-                if (cand >= 0 && alive_[idx(cand)] && isAnti(cand) && !(F(cand) & kQueued)) {
-                    requeued.push_back(cand);
-                    F(cand) |= kQueued;
+                if (m >= 0 && isAliveAnti(m) && !(F(m) & kQueued)) {
+                    requeued.push_back(m);
+                    F(m) |= kQueued;
                 }
             }
         }
@@ -275,7 +393,7 @@ void Annihilator::run(const std::vector<int>* order) {
     const long end = order ? static_cast<long>(order->size()) : n_;
     if (order)
         for (int d : *order)
-            if (alive_[idx(d)] && isAnti(d)) F(d) |= kQueued;
+            if (isAliveAnti(d)) F(d) |= kQueued;
     auto next = [&]() -> long {
         for (; scan < end; ++scan) {
             if (order) {
@@ -290,7 +408,7 @@ void Annihilator::run(const std::vector<int>* order) {
                     for (int p : A((*order)[idx(scan + 8)]))
                         if (p >= 0) {
                             prefetch(&A(p));
-                            prefetch(&alive_[idx(p)]);
+                            prefetch(&F(p));
                         }
             }
             const long d = order ? (*order)[idx(scan)] : scan;
@@ -306,7 +424,7 @@ void Annihilator::run(const std::vector<int>* order) {
     };
     for (long anti = next(); anti >= 0; anti = next()) {
         F(anti) &= static_cast<std::uint8_t>(~kQueued);
-        if (!alive_[idx(anti)]) continue;
+        if (!isAlive(anti)) continue;
         step(anti, requeued);
     }
 }
@@ -372,6 +490,7 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
 
 void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const std::function<bool(int, int)>& same_place) {
     heirs.clear();
+    joinPending();
     if (sameVertex_.parent.empty()) return;
     // Smallest surviving dart per group, kept in the union-find's own array: after full
     // compression every dart points at its root (the group's smallest dart, see
