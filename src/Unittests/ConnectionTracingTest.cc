@@ -125,3 +125,41 @@ TEST(ConnectionTracing, SharedWalksMatchOnS1) {
     EXPECT_GT(r.shared, 0);
     EXPECT_GT(r.tied, 0);
 }
+
+// A cylinder with a singular axis (transitions between the wedges) and large tets with
+// implicit cells, with many more darts than one block of the tracing passes (4096): the
+// same links on 1, 2 and 3 threads, and every alpha_1..alpha_3 partner that is an implicit
+// cell at the dart's own point is that point's occurrence, for the deferred dart of each
+// link as well as for the traced one.
+TEST(ConnectionTracing, ImplicitPartnersAcrossBlocksOnCylinder) {
+    ParametrizedTetMesh pm = generateCylinder(5, 16, 12, 1, 1);
+    const SharedVsAlone r = compareSharing(pm, true);
+    ASSERT_GT(r.darts, 8 * 4096) << "the map must span many blocks";
+    EXPECT_GT(r.shared, 0);
+    pm.mesh.build_adjacency();
+    CornerParams params = pm.params;
+    const Transitions tr = computeTransitions(pm.mesh, params);
+    sanitizeParameters(pm.mesh, params, tr);
+    const std::vector<TetSoS> tets = buildTetSoS(params, 1);
+    const DartSet ds = extractDarts(tets, 1, 1e9, true);
+    TraceStats st;
+    const std::vector<DartLinks> links = traceConnections(pm.mesh, tr, tets, ds, 2, st);
+    long implicitLinks = 0, wrong = 0;
+    for (std::size_t d = 0; d < ds.darts.size(); ++d) {
+        const Dart& D = ds.darts[d];
+        for (int i = 1; i < 4; ++i) {
+            const auto& f = D.d;
+            const std::array<AxisDir, 3> want = i == 1   ? std::array<AxisDir, 3>{f[1], f[0], f[2]}
+                                                : i == 2 ? std::array<AxisDir, 3>{f[0], f[2], f[1]}
+                                                         : std::array<AxisDir, 3>{f[0], f[1], dirNeg(f[2])};
+            if (ds.find(D.tet, D.z, want) >= 0 || !ds.implicitCell(D.tet, D.z, want)) continue;
+            ++implicitLinks;
+            if (implicitPartnerOccurrence(links[d][static_cast<std::size_t>(i)]) != ds.occurrence(D.tet, D.z) && ++wrong <= 5)
+                ADD_FAILURE() << "dart " << d << " alpha_" << i << " = " << links[d][static_cast<std::size_t>(i)]
+                              << ", expected the implicit partner at occurrence " << ds.occurrence(D.tet, D.z);
+        }
+    }
+    EXPECT_GT(implicitLinks, 1000);
+    EXPECT_EQ(wrong, 0);
+    for (int i = 0; i < 4; ++i) EXPECT_EQ(st.unconnected[i], 0) << "i = " << i;
+}
