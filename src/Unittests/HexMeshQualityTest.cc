@@ -9,7 +9,11 @@
 
 #include "TestMeshChecks.hh"
 
+#include <array>
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <random>
 
 using namespace HexEx;
 
@@ -156,4 +160,48 @@ TEST(HexMeshCheck, OpenBoundaryAndInvalidCells) {
     EXPECT_EQ(r.non_hex_cells, 1);
     EXPECT_FALSE(r.valid_all_hex);
     EXPECT_FALSE(checkHexMesh(HexMesh{}).valid_all_hex);
+}
+
+// hexScaledJacobian() computes each edge length once; it must give the same doubles (bit for
+// bit, sign of zero included) as the minimum of cornerScaledJacobian() over the 8 corners.
+TEST(HexMeshQuality, HexScaledJacobianHasTheBitsOfTheCornerFormula) {
+    auto reference = [](const std::array<Vec3d, 8>& p) {
+        double worst = 1.0;
+        for (const auto& f : kHexCornerFrames) {
+            const Vec3d& o = p[f[0]];
+            worst = std::min(worst, cornerScaledJacobian(p[f[1]] - o, p[f[2]] - o, p[f[3]] - o));
+        }
+        return worst;
+    };
+    auto sameBits = [](double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> jitter(-0.45, 0.45);
+    std::uniform_int_distribution<int> kind(0, 5);
+    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    int zeros = 0, negative = 0, distinct = 0;
+    const HexMesh unit = gridMesh(1);
+    for (int n = 0; n < 200000; ++n) {
+        std::array<Vec3d, 8> p;
+        for (int i = 0; i < 8; ++i) p[static_cast<std::size_t>(i)] = unit.vertices[static_cast<std::size_t>(i)];
+        const int k = kind(rng);
+        for (auto& q : p)
+            for (int d = 0; d < 3; ++d) {
+                if (k == 0) q[d] += jitter(rng);                        // general hexes
+                else if (k == 1) q[d] = std::round(3 * jitter(rng));    // integer corners: exact zero determinants
+                else if (k == 2) q[d] = 1e-3 * std::round(4 * jitter(rng));  // repeated corners, zero-length edges
+                else if (k == 3) q[d] = 4 * jitter(rng);                // tangled
+                else if (k == 4) q[d] = 1e200 * jitter(rng);            // overflowing lengths
+                else q[d] += jitter(rng) * 1e-300;                      // underflowing differences
+            }
+        if (n % 997 == 0) p[static_cast<std::size_t>(n % 8)][n % 3] = (n % 2) ? inf : nan;
+        const double a = hexScaledJacobian(p), b = reference(p);
+        ASSERT_TRUE(sameBits(a, b)) << "hex " << n << ": " << a << " vs " << b;
+        if (a == 0) ++zeros;
+        if (a < 0) ++negative;
+        if (a != 1 && a != 0) ++distinct;
+    }
+    // The sample reaches the special cases the shortcut must keep.
+    EXPECT_GT(zeros, 1000);
+    EXPECT_GT(negative, 1000);
+    EXPECT_GT(distinct, 100000);
 }

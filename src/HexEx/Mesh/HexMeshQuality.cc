@@ -8,6 +8,10 @@
 #include <algorithm>
 #include <cmath>
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 namespace HexEx {
 
 const std::array<std::array<int, 4>, 8> kHexCornerFrames = {{
@@ -31,11 +35,48 @@ double cornerScaledJacobian(const Vec3d& a, const Vec3d& b, const Vec3d& c) {
     return std::clamp(sj, -1.0, 1.0);
 }
 
+namespace {
+
+/// The 12 edges of a hex in VTK order, as (lower corner, upper corner).
+constexpr int kHexEdgeCorners[12][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {4, 5}, {5, 6},
+                                        {6, 7}, {7, 4}, {0, 4}, {1, 5}, {2, 6}, {3, 7}};
+
+/// Per corner frame of kHexCornerFrames (same rows), the edges of its three vectors.
+constexpr int kFrameEdges[8][3] = {{0, 3, 8}, {1, 0, 9},  {2, 1, 10}, {3, 2, 11},
+                                   {7, 4, 8}, {4, 5, 9},  {5, 6, 10}, {6, 7, 11}};
+
+/// sqrt of @p n values, in place (two at a time where SSE2 is there: the same correctly
+/// rounded results as std::sqrt).
+inline void sqrtInPlace(double* x, int n) {
+#if defined(__SSE2__)
+    for (int i = 0; i + 1 < n; i += 2) _mm_storeu_pd(x + i, _mm_sqrt_pd(_mm_loadu_pd(x + i)));
+    if (n % 2) x[n - 1] = std::sqrt(x[n - 1]);
+#else
+    for (int i = 0; i < n; ++i) x[i] = std::sqrt(x[i]);
+#endif
+}
+
+} // namespace
+
 double hexScaledJacobian(const std::array<Vec3d, 8>& p) {
+    // The same doubles as the minimum of cornerScaledJacobian() over the 8 corner frames:
+    // the corner vectors are the same differences, and each edge's length is computed once
+    // (|p[j] - p[i]| and |p[i] - p[j]| have the same squares, hence the same bits).
+    double len[12];
+    for (int e = 0; e < 12; ++e) len[e] = (p[kHexEdgeCorners[e][1]] - p[kHexEdgeCorners[e][0]]).sqrnorm();
+    sqrtInPlace(len, 12);
     double worst = 1.0;
-    for (const auto& f : kHexCornerFrames) {
-        const Vec3d& o = p[f[0]];
-        worst = std::min(worst, cornerScaledJacobian(p[f[1]] - o, p[f[2]] - o, p[f[3]] - o));
+    for (int k = 0; k < 8; ++k) {
+        const auto& f = kHexCornerFrames[static_cast<std::size_t>(k)];
+        const double denom = len[kFrameEdges[k][0]] * len[kFrameEdges[k][1]] * len[kFrameEdges[k][2]];
+        double sj = 0.0;
+        if (denom > 0 && std::isfinite(denom)) {
+            const Vec3d& o = p[f[0]];
+            const double det = ((p[f[1]] - o) % (p[f[2]] - o)) | (p[f[3]] - o);
+            const double q = det / denom;
+            if (std::isfinite(q)) sj = std::clamp(q, -1.0, 1.0);
+        }
+        worst = std::min(worst, sj);
     }
     return worst;
 }
