@@ -6,12 +6,15 @@ namespace HexEx {
 
 AssembleOutput assembleStage(const AssembleInput& in) {
     AssembleOutput out;
-    HexOrbitLabels labels;
-    out.validation = validateHexGMap(*in.map, &labels, in.threads);
-    out.stats.violations = &out.validation;
-    out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
-                               in.want_hex_darts ? &out.hex_darts : nullptr);
-    out.stats.violations = nullptr;
+    {
+        // The orbit labels (about 20 bytes per dart) are freed before the mesh check.
+        HexOrbitLabels labels;
+        out.validation = validateHexGMap(*in.map, &labels, in.threads);
+        out.stats.violations = &out.validation;
+        out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
+                                   in.want_hex_darts ? &out.hex_darts : nullptr);
+        out.stats.violations = nullptr;
+    }
     if (out.stats.degenerate_faces > 0)
         out.warnings.push_back(std::to_string(out.stats.degenerate_faces) +
                                " faces of non-hex cells have fewer than 3 distinct vertices and were left out of their polyhedra");

@@ -74,8 +74,8 @@ inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
 
 /// The hexes' validity and their quads, counted by vertex set. Passes on @p chunks threads:
 /// hexes (validity, quads per smallest vertex), then per part of the vertices (one, or two on
-/// large meshes) hexes again (each quad's record into its vertex's bucket, atomic slots) and
-/// vertices (each bucket sorted by vertex set and item, so the slots' order does not matter).
+/// large meshes) hexes again (each quad's record into its vertex's bucket, at slots counted
+/// per chunk of hexes: no atomics) and vertices (each bucket sorted by vertex set and item).
 /// Per-chunk results are joined in part and chunk order: the result does not depend on the
 /// thread count.
 template <class Item>
@@ -87,8 +87,13 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
     std::vector<char> good(static_cast<std::size_t>(nh), 0);
     std::vector<long> repeated(static_cast<std::size_t>(chunks), 0);
     std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
-    Item* count = start.data() + 1;
+    // Per chunk of hexes its own count per vertex (no atomic increments); they become the
+    // chunk's next free slot per vertex below, so the chunks fill their records without
+    // atomics too (the records of a bucket in chunk order, then hex order).
+    std::vector<std::vector<Item>> slot(static_cast<std::size_t>(chunks));
     parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+        std::vector<Item>& cnt = slot[static_cast<std::size_t>(k)];
+        cnt.assign(static_cast<std::size_t>(nv), 0);
         for (std::size_t h = h0; h < h1; ++h) {
             const auto& c = H[h];
             bool ok = true;
@@ -104,12 +109,21 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
             for (int f = 0; f < 6; ++f) {
                 const int* l = kHexFaces[f];
                 const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
-                __atomic_fetch_add(&count[v], Item(1), __ATOMIC_RELAXED);
+                ++cnt[static_cast<std::size_t>(v)];
             }
         }
     });
     for (const long n : repeated) r.repeated_corner_hexes += n;
-    for (long v = 0; v < nv; ++v) start[static_cast<std::size_t>(v) + 1] += start[static_cast<std::size_t>(v)];
+    // Bucket starts, and each chunk's first slot in every bucket (counts turned into offsets).
+    for (long v = 0; v < nv; ++v) {
+        Item at = start[static_cast<std::size_t>(v)];
+        for (std::vector<Item>& cnt : slot) {
+            const Item n = cnt[static_cast<std::size_t>(v)];
+            cnt[static_cast<std::size_t>(v)] = at;
+            at += n;
+        }
+        start[static_cast<std::size_t>(v) + 1] = at;
+    }
     // Records of the quads filed under vertices [vb[p], vb[p+1]) for part p: two parts of about
     // equal size on large meshes, so that the records take no more memory than the quad items
     // and their vertex keys did before.
@@ -121,7 +135,6 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
         vb[static_cast<std::size_t>(p)] =
             std::lower_bound(start.begin(), start.end(), static_cast<Item>(total * static_cast<std::size_t>(p) / static_cast<std::size_t>(nParts))) -
             start.begin();
-    std::vector<Item> next(start.begin(), start.end() - 1);
     std::size_t largest = 0;
     for (int p = 0; p < nParts; ++p)
         largest = std::max(largest, static_cast<std::size_t>(start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p) + 1])] -
@@ -137,7 +150,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
     for (int p = 0; p < nParts; ++p) {
         const long lo = vb[static_cast<std::size_t>(p)], hi = vb[static_cast<std::size_t>(p) + 1];
         const Item offset = start[static_cast<std::size_t>(lo)];
-        parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int, std::size_t h0, std::size_t h1) {
+        parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+            Item* const next = slot[static_cast<std::size_t>(k)].data();
             for (std::size_t h = h0; h < h1; ++h) {
                 if (!good[h]) continue;
                 const auto& c = H[h];
@@ -146,8 +160,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
                     const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
                     if (v < lo || v >= hi) continue;
                     const std::array<int, 4> q = sortedFace(c, f);
-                    const Item slot = __atomic_fetch_add(&next[static_cast<std::size_t>(v)], Item(1), __ATOMIC_RELAXED);
-                    rec[static_cast<std::size_t>(slot - offset)] = {q[1], q[2], q[3], static_cast<Item>(6 * h + static_cast<std::size_t>(f))};
+                    rec[static_cast<std::size_t>(next[v]++ - offset)] = {q[1], q[2], q[3], static_cast<Item>(6 * h + static_cast<std::size_t>(f))};
                 }
             }
         });
