@@ -390,10 +390,22 @@ void Annihilator::step(long anti, std::deque<long>& requeued) {
 void Annihilator::run(const std::vector<int>* order) {
     std::deque<long> requeued;
     long scan = 0;
-    const long end = order ? static_cast<long>(order->size()) : n_;
-    if (order)
+    // The scan returns exactly the darts of @p order that are alive anti darts now, in that
+    // order: each is queued here, only the scan or the work list unqueues a dart (when it
+    // returns it), and a dart re-queued on the way is behind the scan or not in the order.
+    // So the dead ones (most of them in the later phases of runPhased()) are left out at
+    // once instead of being skipped, with their links prefetched, one by one.
+    std::vector<int> live;
+    if (order) {
+        live.reserve(order->size());
         for (int d : *order)
-            if (isAliveAnti(d)) F(d) |= kQueued;
+            if (isAliveAnti(d)) {
+                F(d) |= kQueued;
+                live.push_back(d);
+            }
+        order = &live;
+    }
+    const long end = order ? static_cast<long>(order->size()) : n_;
     auto next = [&]() -> long {
         for (; scan < end; ++scan) {
             if (order) {
