@@ -559,6 +559,10 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) return;
         int* slot = &alpha[static_cast<std::size_t>(p)][i];
         const int mine = static_cast<int>(d);
+        if (workers == 1) {  // no other writer: a locked exchange would only stall the walks
+            if (*slot < kUnconnected || *slot > mine) *slot = mine;
+            return;
+        }
         int cur = __atomic_load_n(slot, __ATOMIC_RELAXED);
         while ((cur < kUnconnected || cur > mine) &&
                !__atomic_compare_exchange_n(slot, &cur, mine, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
@@ -634,9 +638,13 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         // and a link back still takes precedence over it.
                         if (implicit) {
                             int* slot = &alpha[d][i];
+                            const int answer = static_cast<int>(encodeImplicitPartner(darts.occurrence(D[d].tet, D[d].z)));
                             int cur = kPending;
-                            __atomic_compare_exchange_n(slot, &cur, static_cast<int>(encodeImplicitPartner(darts.occurrence(D[d].tet, D[d].z))),
-                                                        false, __ATOMIC_RELAXED, __ATOMIC_RELAXED);
+                            if (workers == 1) {
+                                if (*slot == kPending) *slot = answer;
+                            } else {
+                                __atomic_compare_exchange_n(slot, &cur, answer, false, __ATOMIC_RELAXED, __ATOMIC_RELAXED);
+                            }
                         }
                         continue;
                     }
