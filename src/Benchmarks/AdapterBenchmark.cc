@@ -19,7 +19,8 @@
 /// same detail functions it calls) and ovm-native-split (the same, with cpu_write_s
 /// HexEx's own writing and OpenVolumeMesh's rebuild of its bottom-up incidences
 /// (OvmHexOutput::restoreIncidences()) timed apart as cpu_incidences_s: the two parts of
-/// ovm-native's cpu_write_s). Run one measurement per process:
+/// ovm-native's cpu_write_s); ovm-native-vf is ovm-native into a hex mesh whose edge
+/// incidences the user turned off (vertex and face incidences only). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
 /// `key=value` pairs; building the input in the user's structure is not timed (input_mb:
 /// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
@@ -172,7 +173,7 @@ int main(int argc, char** argv) {
         std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube20|cylinder6m|cube8|cylinder6s "
                      "builtin|builtin-provenance|arrays|lcc|lcc-native"
 #ifdef HEXEX_BENCH_OVM
-                     "|ovm|ovm-native|ovm-native-split"
+                     "|ovm|ovm-native|ovm-native-split|ovm-native-vf"
 #endif
                      "\n";
         return 2;
@@ -254,13 +255,14 @@ int main(int argc, char** argv) {
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
         r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
         hexes = out.cells().size();
-    } else if (path == "ovm-native" || path == "ovm-native-split") {
+    } else if (path == "ovm-native" || path == "ovm-native-split" || path == "ovm-native-vf") {
         OvmTets tm;
         HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
         inputMb = rssMb();
         const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
         OvmHexes hexMesh;
+        if (path == "ovm-native-vf") hexMesh.enable_edge_bottom_up_incidences(false);  // the user needs no edge incidences
         const bool split = path == "ovm-native-split";
         r = timeOneCall(
             [&] {
