@@ -10,7 +10,9 @@
 # builtin extract (the one-call overloads hand the read parameters to the pipeline as its
 # working copy, which the builtin extraction copies: that copy moved into the read).
 # Path ovm-native-split shows the writing as HexEx's part + OpenVolumeMesh's bottom-up
-# incidence rebuild.
+# incidence rebuild (vertex lists, edge lists, face incidences with OpenVolumeMesh's ordering
+# of the halffaces around every edge); ovm-native-vf writes into a hex mesh without edge
+# incidences.
 #
 #   BENCH=build/src/Benchmarks/adapter_benchmark REPEAT=3 CASES="cube20 cube40 cylinder6" \
 #   PATHS="builtin ovm-native lcc-native" scripts/adapter-overhead.sh
@@ -54,6 +56,8 @@ for (c, p), runs in rows.items():
     peak = statistics.median(float(r["rss_kb"]) / 1024 for r in runs)
     # ovm-native-split: HexEx's writing, then OpenVolumeMesh's incidence rebuild
     inc = f" + {fmt(med('cpu_incidences_s', runs))} OVM incidences" if float(runs[0].get("cpu_incidences_s", 0)) > 0 else ""
+    if inc and "cpu_inc_face_s" in runs[0]:  # vertex lists, edge lists, face incidences with the ordering around edges
+        inc += f" (vertex {med('cpu_inc_vertex_s', runs)[0]:.2f}, edge {med('cpu_inc_edge_s', runs)[0]:.2f}, face + ordering {med('cpu_inc_face_s', runs)[0]:.2f})"
     print(f"| {c} {p} | {fmt(med('cpu_copy_s', runs))} | {fmt(med('cpu_extract_s', runs))} | "
           f"{fmt(med('cpu_write_s', runs))}{inc} | {fmt(med('total_s', runs))} | {peak:.0f} | {runs[0]['input_mb']} | {over} | {total} |")
 PY
