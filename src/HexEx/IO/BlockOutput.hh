@@ -2,20 +2,26 @@
 /// @file BlockOutput.hh
 /// @ingroup io
 /// Output assembled in a memory block and handed to a stream in large pieces, with number
-/// formatting by std::to_chars (no iostream formatting per number), and a helper that
-/// formats the items of a long range on several threads in the same byte order.
+/// formatting by DecimalFormat.hh (no iostream formatting per number), and a helper that
+/// formats the items of a long range on several threads in the same byte order while the
+/// calling thread hands the finished pieces to the stream.
 
 #include "../Core/Parallel.hh"
 #include "DecimalFormat.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <charconv>
+#include <condition_variable>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <memory>
+#include <mutex>
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <type_traits>
 #include <vector>
 
@@ -79,6 +85,35 @@ public:
         flushIfFull();
         return *this;
     }
+    /// Appends the line "n v_0 ... v_(n-1)\n" of the n integers in [@p b, @p e) (the same bytes as
+    /// appending them one by one; a line of up to 20 numbers is written without a check per number).
+    BlockOutput& intLine(const int* b, const int* e) {
+        const std::size_t n = static_cast<std::size_t>(e - b);
+        if (n > 20) {  // 12 characters a number: more than kSlack may hold
+            *this << n;
+            for (; b != e; ++b) *this << ' ' << *b;
+            return *this << '\n';
+        }
+        char* at = formatUnsigned(&buf_[used_], static_cast<std::uint32_t>(n));
+        for (; b != e; ++b) {
+            *at++ = ' ';
+            at = putInt(at, *b);
+        }
+        *at++ = '\n';
+        used_ = static_cast<std::size_t>(at - buf_.data());
+        flushIfFull();
+        return *this;
+    }
+    /// Appends the line "a b\n" (the same bytes as appending a, ' ', b and '\n').
+    BlockOutput& intPair(int a, int b) {
+        char* at = putInt(&buf_[used_], a);
+        *at++ = ' ';
+        at = putInt(at, b);
+        *at++ = '\n';
+        used_ = static_cast<std::size_t>(at - buf_.data());
+        flushIfFull();
+        return *this;
+    }
     /// Appends @p x as printf's "%.17g" does (the same bytes; reads back bit-identically).
     BlockOutput& real17(double x) {
         used_ = static_cast<std::size_t>(formatReal17(&buf_[used_], x) - buf_.data());
@@ -137,6 +172,10 @@ private:
     /// Room every single append may use beyond the block without a check.
     static constexpr std::size_t kSlack = 256;
 
+    /// Writes @p v in decimal at @p at (at most 11 characters); @return one past the last.
+    HEXEX_FORMAT_INLINE static char* putInt(char* at, int v) {
+        return v >= 0 ? formatUnsigned(at, static_cast<std::uint32_t>(v)) : std::to_chars(at, at + 12, v).ptr;
+    }
     /// Keeps the invariant that at least kSlack bytes are free after every append.
     void flushIfFull() {
         if (used_ < block_) return;
@@ -157,27 +196,79 @@ private:
 };
 
 /// Appends format(o, i) for every i in [0, n) to @p out, in order; with @p threads > 1 the
-/// items are formatted in pieces on that many threads and the pieces appended in order,
-/// so the bytes do not depend on the thread count.
+/// items are formatted in pieces on that many threads while the calling thread appends the
+/// finished pieces in order (so handing the bytes to the sink overlaps the formatting of
+/// the next pieces); the bytes do not depend on the thread count. At most 2 @p threads
+/// pieces are held at once. An exception of @p format or of the sink stops the workers and
+/// is rethrown.
 template <class Format>
 void formatItems(BlockOutput& out, std::size_t n, int threads, Format&& format) {
-    constexpr std::size_t kPiece = std::size_t(1) << 15;
-    if (threads <= 1 || n < 2 * kPiece) {
+    // Small pieces (a few hundred kB of text) keep the buffers' memory low; fewer items than
+    // kParallel are formatted on the calling thread.
+    constexpr std::size_t kPiece = std::size_t(1) << 13, kParallel = std::size_t(1) << 16;
+    if (threads <= 1 || n < kParallel) {
         for (std::size_t i = 0; i < n; ++i) format(out, i);
         return;
     }
-    // One buffer per thread, reused from round to round (no allocation per piece).
-    std::vector<std::unique_ptr<BlockOutput>> pieces;
-    for (int t = 0; t < threads; ++t) pieces.push_back(std::make_unique<BlockOutput>(nullptr, kPiece * 64));
-    for (std::size_t begin = 0; begin < n; begin += kPiece * pieces.size()) {
-        const std::size_t end = std::min(n, begin + kPiece * pieces.size());
-        for (const auto& p : pieces) p->clear();
-        parallelChunks(end - begin, threads, [&](int k, std::size_t b, std::size_t e) {
-            BlockOutput& local = *pieces[static_cast<std::size_t>(k)];
-            for (std::size_t i = begin + b; i < begin + e; ++i) format(local, i);
-        });
-        for (const auto& p : pieces) out << p->pending();
+    const std::size_t pieces = (n + kPiece - 1) / kPiece;
+    const std::size_t slots = 2 * static_cast<std::size_t>(threads);  // piece p goes to buffer p % slots
+    std::vector<std::unique_ptr<BlockOutput>> buffers;
+    for (std::size_t s = 0; s < slots; ++s) buffers.push_back(std::make_unique<BlockOutput>(nullptr, kPiece * 64));
+    std::vector<std::size_t> done(slots, SIZE_MAX);  // the finished piece each buffer holds
+    std::mutex mutex;
+    std::condition_variable finished, freed;
+    std::size_t appended = 0;  // pieces appended to out so far
+    bool stop = false;
+    std::exception_ptr error;
+    std::atomic<std::size_t> next{0};
+    const auto work = [&] {
+        for (;;) {
+            const std::size_t p = next.fetch_add(1);
+            if (p >= pieces) return;
+            BlockOutput& local = *buffers[p % slots];
+            {
+                std::unique_lock<std::mutex> lock(mutex);
+                freed.wait(lock, [&] { return stop || p < appended + slots; });  // piece p - slots appended
+                if (stop) return;
+            }
+            try {
+                local.clear();
+                for (std::size_t i = p * kPiece, e = std::min(n, i + kPiece); i < e; ++i) format(local, i);
+            } catch (...) {
+                const std::lock_guard<std::mutex> lock(mutex);
+                if (!error) error = std::current_exception();
+                stop = true;
+                finished.notify_all();
+                freed.notify_all();
+                return;
+            }
+            const std::lock_guard<std::mutex> lock(mutex);
+            done[p % slots] = p;
+            finished.notify_all();
+        }
+    };
+    std::vector<std::thread> workers;
+    for (int t = 0; t < threads; ++t) workers.emplace_back(work);
+    try {
+        for (std::size_t p = 0; p < pieces; ++p) {
+            {
+                std::unique_lock<std::mutex> lock(mutex);
+                finished.wait(lock, [&] { return stop || done[p % slots] == p; });
+                if (stop) break;
+            }
+            out << buffers[p % slots]->pending();
+            const std::lock_guard<std::mutex> lock(mutex);
+            appended = p + 1;
+            freed.notify_all();
+        }
+    } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        if (!error) error = std::current_exception();
+        stop = true;
+        freed.notify_all();
     }
+    for (auto& w : workers) w.join();
+    if (error) std::rethrow_exception(error);
 }
 
 } // namespace detail

@@ -10,6 +10,14 @@
 #include <cstdint>
 #include <cstring>
 
+/// Marks the small digit helpers below to be inlined always (GCC and Clang chose to call
+/// putFour() out of line inside the writers' loops).
+#if defined(__GNUC__)
+#define HEXEX_FORMAT_INLINE inline __attribute__((always_inline))
+#else
+#define HEXEX_FORMAT_INLINE inline
+#endif
+
 namespace HexEx {
 namespace detail {
 
@@ -20,22 +28,22 @@ inline constexpr char kDigitPairs[201] =
     "8081828384858687888990919293949596979899";
 
 /// Writes exactly 2 decimal digits of @p v (< 100) at @p p.
-inline void putPair(char* p, std::uint32_t v) { std::memcpy(p, kDigitPairs + 2 * v, 2); }
+HEXEX_FORMAT_INLINE void putPair(char* p, std::uint32_t v) { std::memcpy(p, kDigitPairs + 2 * v, 2); }
 
 /// Writes exactly 4 decimal digits of @p v (< 10^4) at @p p.
-inline void putFour(char* p, std::uint32_t v) {
+HEXEX_FORMAT_INLINE void putFour(char* p, std::uint32_t v) {
     putPair(p, v / 100);
     putPair(p + 2, v % 100);
 }
 
 /// Writes exactly 8 decimal digits of @p v (< 10^8) at @p p, leading zeros included.
-inline void putEight(char* p, std::uint32_t v) {
+HEXEX_FORMAT_INLINE void putEight(char* p, std::uint32_t v) {
     putFour(p, v / 10000);
     putFour(p + 4, v % 10000);
 }
 
 /// Writes @p v (< 10^4) at @p p without leading zeros; @return one past the last character.
-inline char* putUpToFour(char* p, std::uint32_t v) {
+HEXEX_FORMAT_INLINE char* putUpToFour(char* p, std::uint32_t v) {
     if (v < 10) {
         *p = static_cast<char>('0' + v);
         return p + 1;
@@ -55,7 +63,7 @@ inline char* putUpToFour(char* p, std::uint32_t v) {
 
 /// Writes @p v in decimal at @p p (no sign, no leading zeros; at most 10 characters);
 /// @return one past the last character. Same bytes as std::to_chars.
-inline char* formatUnsigned(char* p, std::uint32_t v) {
+HEXEX_FORMAT_INLINE char* formatUnsigned(char* p, std::uint32_t v) {
     if (v < 10000) return putUpToFour(p, v);
     if (v < 100000000) {
         p = putUpToFour(p, v / 10000);

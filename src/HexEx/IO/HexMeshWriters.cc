@@ -206,8 +206,8 @@ std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMesh
     switch (format) {
     case HexMeshFormat::Vtu: writeVtu(o, mesh, enc); break;
     case HexMeshFormat::Vtk: writeVtk(o, mesh, threads); break;
-    case HexMeshFormat::Ovm: writeOvmAscii(o, ovmFlatFromHexMesh(mesh, threads), threads); break;
-    case HexMeshFormat::Ovmb: writeOvmBinary(o, ovmFlatFromHexMesh(mesh, threads)); break;
+    case HexMeshFormat::Ovm: writeOvmAscii(o, mesh, threads); break;
+    case HexMeshFormat::Ovmb: writeOvmBinary(o, ovmFlatFromHexMesh(mesh, threads), threads); break;
     default: warnings = writeMedit(o, mesh, threads);
     }
     o.flush();

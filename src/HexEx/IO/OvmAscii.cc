@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <exception>
+#include <thread>
 
 namespace HexEx {
 
@@ -226,22 +228,25 @@ OvmModel parseOvmAscii(std::string_view text, const std::string& name) {
     return m;
 }
 
-void writeOvmAscii(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
-    const std::vector<Vec3d>& vertices = *m.vertices;
+namespace {
+
+/// The header and the Vertices section of an ASCII file of @p vertices.
+void writeOvmAsciiVertices(detail::BlockOutput& o, const std::vector<Vec3d>& vertices, int threads) {
     o << "OVM ASCII\nVertices\n" << vertices.size() << '\n';
     detail::formatItems(o, vertices.size(), threads,
                         [&](detail::BlockOutput& t, std::size_t i) { t.vec17(vertices[i].data()) << '\n'; });
+}
+
+/// Everything after the Vertices section: edges, faces, polyhedra and the map.
+void writeOvmAsciiTopology(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
     o << "Edges\n" << m.edges.size() << '\n';
     detail::formatItems(o, m.edges.size(), threads, [&](detail::BlockOutput& t, std::size_t i) {
-        t << m.edges[i][0] << ' ' << m.edges[i][1] << '\n';
+        t.intPair(m.edges[i][0], m.edges[i][1]);
     });
     const auto lists = [&](const char* section, const IntLists& items) {
         o << section << '\n' << items.size() << '\n';
-        detail::formatItems(o, items.size(), threads, [&](detail::BlockOutput& t, std::size_t i) {
-            t << items.length(i);
-            for (const int* h = items.begin(i); h != items.end(i); ++h) t << ' ' << *h;
-            t << '\n';
-        });
+        detail::formatItems(o, items.size(), threads,
+                            [&](detail::BlockOutput& t, std::size_t i) { t.intLine(items.begin(i), items.end(i)); });
     };
     lists("Faces", m.faces);
     lists("Polyhedra", m.cells);
@@ -251,6 +256,41 @@ void writeOvmAscii(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
         detail::formatItems(o, u.size(), threads,
                             [&](detail::BlockOutput& t, std::size_t i) { t.vec17(u[i].data()) << '\n'; });
     }
+}
+
+} // namespace
+
+void writeOvmAscii(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
+    writeOvmAsciiVertices(o, *m.vertices, threads);
+    writeOvmAsciiTopology(o, m, threads);
+}
+
+void writeOvmAscii(detail::BlockOutput& o, const HexMesh& mesh, int threads) {
+    if (threads <= 1) {
+        writeOvmAscii(o, ovmFlatFromHexMesh(mesh, 1), 1);
+        return;
+    }
+    // The vertices do not depend on the face numbering: they are formatted and handed to the
+    // output on a thread of their own while the faces and edges are numbered on this one and
+    // its helpers (which allocate, as before, from this thread's heap).
+    std::exception_ptr error;
+    std::thread vertices([&] {
+        try {
+            writeOvmAsciiVertices(o, mesh.vertices, 1);
+        } catch (...) {
+            error = std::current_exception();
+        }
+    });
+    OvmFlatMesh flat;
+    try {
+        flat = ovmFlatFromHexMesh(mesh, threads);
+    } catch (...) {
+        vertices.join();
+        throw;
+    }
+    vertices.join();
+    if (error) std::rethrow_exception(error);
+    writeOvmAsciiTopology(o, flat, threads);
 }
 
 std::string writeOvmAscii(const OvmModel& m) {

@@ -10,12 +10,14 @@
 #include "OvmModel.hh"
 
 #include "../Core/Error.hh"
+#include "../Core/Parallel.hh"
 
 #include <algorithm>
 #include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <vector>
 
 namespace HexEx {
 
@@ -165,16 +167,33 @@ int encodingFor(std::uint64_t maxValue) { return maxValue < 256 ? 1 : maxValue <
 /// handles @p handles(i) as [begin, end) pointers (entity 1 edges, 2 faces, 3 cells);
 /// @p contiguous if the lists lie back to back in memory.
 template <class Length, class Handles>
-void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length length, Handles handles, bool contiguous) {
+void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length length, Handles handles, bool contiguous,
+               int threads = 1) {
+    // Valences and the largest handle, in chunks of the lists (on @p threads threads for long ones).
+    struct Range {
+        std::size_t maxValence = 0, minValence = SIZE_MAX, total = 0;
+        int maxHandle = 0;
+    };
+    std::vector<Range> ranges(static_cast<std::size_t>(count >= 100000 ? std::max(1, threads) : 1));
+    parallelChunks(count, static_cast<int>(ranges.size()), [&](int c, std::size_t i0, std::size_t i1) {
+        Range r;
+        for (std::size_t i = i0; i < i1; ++i) {
+            const std::size_t n = length(i);
+            r.maxValence = std::max(r.maxValence, n);
+            r.minValence = std::min(r.minValence, n);
+            r.total += n;
+            const auto [b, e] = handles(i);
+            for (const int* h = b; h != e; ++h) r.maxHandle = std::max(r.maxHandle, *h);
+        }
+        ranges[static_cast<std::size_t>(c)] = r;
+    });
     std::size_t maxValence = 0, minValence = SIZE_MAX, total = 0;
     int maxHandle = 0;
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::size_t n = length(i);
-        maxValence = std::max(maxValence, n);
-        minValence = std::min(minValence, n);
-        total += n;
-        const auto [b, e] = handles(i);
-        for (const int* h = b; h != e; ++h) maxHandle = std::max(maxHandle, *h);
+    for (const Range& r : ranges) {
+        maxValence = std::max(maxValence, r.maxValence);
+        minValence = std::min(minValence, r.minValence);
+        total += r.total;
+        maxHandle = std::max(maxHandle, r.maxHandle);
     }
     const bool fixed = count == 0 || (minValence == maxValence && maxValence < 256);
     const int hb = encodingFor(static_cast<std::uint64_t>(maxHandle)), vb = fixed ? 0 : encodingFor(maxValence);
@@ -200,11 +219,12 @@ void topoChunk(detail::BlockOutput& o, int entity, std::size_t count, Length len
     padding(o, pad);
 }
 
-/// Appends a TOPO chunk of @p lists.
-void topoChunk(detail::BlockOutput& o, int entity, const IntLists& lists) {
+/// Appends a TOPO chunk of @p lists (scanned on @p threads threads).
+void topoChunk(detail::BlockOutput& o, int entity, const IntLists& lists, int threads) {
     topoChunk(
         o, entity, lists.size(), [&](std::size_t i) { return lists.length(i); },
-        [&](std::size_t i) { return std::pair<const int*, const int*>(lists.begin(i), lists.end(i)); }, lists.size() > 0);
+        [&](std::size_t i) { return std::pair<const int*, const int*>(lists.begin(i), lists.end(i)); }, lists.size() > 0,
+        threads);
 }
 
 } // namespace
@@ -342,7 +362,7 @@ OvmModel parseOvmBinary(std::string_view data, const std::string& name) {
     return m;
 }
 
-void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
+void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
     static_assert(sizeof(Vec3d) == 3 * sizeof(double) && sizeof(std::array<int, 2>) == 2 * sizeof(int),
                   "positions, map and edges are written straight from their arrays");
     const std::vector<Vec3d>& vertices = *m.vertices;
@@ -375,9 +395,9 @@ void writeOvmBinary(detail::BlockOutput& o, const OvmFlatMesh& m) {
     topoChunk(
         o, 1, m.edges.size(), [](std::size_t) { return std::size_t(2); },
         [&](std::size_t i) { return std::pair<const int*, const int*>(m.edges[i].data(), m.edges[i].data() + 2); },
-        !m.edges.empty());
-    topoChunk(o, 2, m.faces);
-    topoChunk(o, 3, m.cells);
+        !m.edges.empty(), threads);
+    topoChunk(o, 2, m.faces, threads);
+    topoChunk(o, 3, m.cells, threads);
     if (params) {
         const std::vector<Vec3d>& u = *m.halffaceParams;
         pad = chunkHeader(o, "PROP", 16 + 24 * u.size());

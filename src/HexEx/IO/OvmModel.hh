@@ -93,12 +93,19 @@ std::string writeOvmAscii(const OvmModel& model);
 /// formatting on @p threads threads (the bytes do not depend on it).
 void writeOvmAscii(detail::BlockOutput& out, const OvmFlatMesh& mesh, int threads = 1);
 
+/// Appends the hex mesh @p mesh as OpenVolumeMesh ASCII to @p out: the same bytes as
+/// writeOvmAscii(out, ovmFlatFromHexMesh(mesh, threads), threads), but with @p threads > 1
+/// the vertices are formatted and appended while the faces and edges are numbered.
+/// @throws std::invalid_argument as ovmFlatFromHexMesh().
+void writeOvmAscii(detail::BlockOutput& out, const HexMesh& mesh, int threads);
+
 /// The model as OpenVolumeMesh binary (file and header version 1, exact doubles, no
 /// compression); the map (if any) as halfface property `HexHex::Parametrization` of type `3d`.
 std::string writeOvmBinary(const OvmModel& model);
 
-/// Appends @p mesh as OpenVolumeMesh binary (as writeOvmBinary(const OvmModel&)) to @p out.
-void writeOvmBinary(detail::BlockOutput& out, const OvmFlatMesh& mesh);
+/// Appends @p mesh as OpenVolumeMesh binary (as writeOvmBinary(const OvmModel&)) to @p out;
+/// the lists are scanned for their sizes on @p threads threads (the bytes do not depend on it).
+void writeOvmBinary(detail::BlockOutput& out, const OvmFlatMesh& mesh, int threads = 1);
 
 /// The hex mesh stored in @p model: cells of six quads that close up like a hexahedron
 /// become hexes (VTK order), all others polyhedra. Halffaces may point out of their cells
