@@ -164,6 +164,25 @@ void buildImplicitCells(const TetMesh& mesh, const Transitions& tr, const std::v
         dp->occurrencePoint(occ, tet, z);
         return gridPointPosition(*m, *ts, *dp, tet, z, nullptr);
     };
+    // Ascending occurrences: the dense index is searched once, then followed forward
+    // (the same grid points, hence the same positions, as occurrencePoint()).
+    out.positions = [m, ts, dp](const long* occ, std::size_t n, Vec3d* pos) {
+        if (n == 0) return;
+        const std::vector<DartSet::DenseIndex>& dense = dp->dense;
+        auto it = std::upper_bound(dense.begin(), dense.end(), occ[0],
+                                   [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; }) - 1;
+        for (std::size_t i = 0; i < n; ++i) {
+            while (it + 1 != dense.end() && (it + 1)->occ_base <= occ[i]) ++it;
+            const DartSet::DenseIndex& di = *it;
+            long l = occ[i] - di.occ_base;
+            Vec3i z;
+            z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
+            l /= di.dims[2];
+            z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
+            z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
+            pos[i] = gridPointPosition(*m, *ts, *dp, di.tet, z, nullptr);
+        }
+    };
 }
 
 } // namespace HexEx

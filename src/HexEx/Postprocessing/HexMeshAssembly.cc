@@ -40,7 +40,10 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     int nv = 0;
     std::vector<int> vlabel;
     std::vector<int> occLabel;
-    std::vector<std::pair<int, long>> dartless;  // implicit cells: (class without darts, its first occurrence)
+    // Implicit cells: classes without darts (numbered nvDarts, nvDarts + 1, ...), each with
+    // its first occurrence (ascending).
+    std::vector<long> dartless;
+    int nvDarts = 0;
     long nq = 0;
     if (!implicit) {
         // Vertex and quad orbits are independent labellings.
@@ -127,12 +130,12 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (std::size_t d = 0; d < nd; ++d)
             if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(corner[d]);
         // Classes first labelled here have no darts; they are numbered in order from nvDarts.
-        const int nvDarts = nv;
+        nvDarts = nv;
         for (long o = 0; o < nocc; ++o) {
             if (!used[static_cast<std::size_t>(o)]) continue;
             const int l = labelOf(nk + static_cast<int>(o));
             occLabel[static_cast<std::size_t>(o)] = l;
-            if (l == nvDarts + static_cast<int>(dartless.size())) dartless.emplace_back(l, o);
+            if (l == nvDarts + static_cast<int>(dartless.size())) dartless.push_back(o);
         }
     }
     if (stats.violations) describeViolations(g, vlabel, *stats.violations);
@@ -140,9 +143,13 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     out.vertices = mergedVertexPositions(*geo.mesh, vlabel, nv, geo.placement, threads, &candidates);
     if (implicit) {
         // Classes without darts: position of their first occurrence.
+        Vec3d* const first = out.vertices.data() + nvDarts;
         parallelChunks(dartless.size(), threads, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t k = b; k < e; ++k)
-                out.vertices[static_cast<std::size_t>(dartless[k].first)] = implicit->position(dartless[k].second);
+            if (implicit->positions) {
+                implicit->positions(dartless.data() + b, e - b, first + b);
+                return;
+            }
+            for (std::size_t k = b; k < e; ++k) first[k] = implicit->position(dartless[k]);
         });
     }
 

@@ -50,6 +50,9 @@ struct ImplicitCells {
     std::vector<std::array<int, 8>> cells;
     /// 3D position of an occurrence (used for vertices that no explicit dart touches).
     std::function<Vec3d(long)> position;
+    /// Optional: the positions of @p n occurrences @p occ (ascending) into @p out, the same
+    /// values as position() (one look-up of the tet per run of occurrences in one tet).
+    std::function<void(const long* occ, std::size_t n, Vec3d* out)> positions;
 };
 
 /// Assembles vertices (one per <alpha_1, alpha_2, alpha_3> orbit, placed by
