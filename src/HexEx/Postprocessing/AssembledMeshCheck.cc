@@ -33,6 +33,10 @@ void bucketByVertex(long nv, long n, VertexOf vertexOf, std::vector<long>& start
 /// Fewer hexes than this are checked on one thread.
 constexpr long kParallelHexes = 20000;
 
+/// Largest number of chunks of hexes that count and file the quads (each has its own slot
+/// per vertex: 4 or 8 bytes per vertex and chunk).
+constexpr int kMaxSlotChunks = 4;
+
 /// A quad of a valid hex, filed under its smallest vertex: the other three vertices in
 /// increasing order and the quad item (face f of hex h is item 6h+f).
 template <class Item>
@@ -85,13 +89,15 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
     const long nh = static_cast<long>(mesh.hexes.size());
     const auto& H = mesh.hexes;
     std::vector<char> good(static_cast<std::size_t>(nh), 0);
-    std::vector<long> repeated(static_cast<std::size_t>(chunks), 0);
-    std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
     // Per chunk of hexes its own count per vertex (no atomic increments); they become the
     // chunk's next free slot per vertex below, so the chunks fill their records without
-    // atomics too (the records of a bucket in chunk order, then hex order).
-    std::vector<std::vector<Item>> slot(static_cast<std::size_t>(chunks));
-    parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+    // atomics too (the records of a bucket in chunk order, then hex order). At most
+    // kMaxSlotChunks such arrays, so that the memory does not grow with the thread count.
+    const int hexChunks = std::min(chunks, kMaxSlotChunks);
+    std::vector<long> repeated(static_cast<std::size_t>(hexChunks), 0);
+    std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
+    std::vector<std::vector<Item>> slot(static_cast<std::size_t>(hexChunks));
+    parallelChunks(static_cast<std::size_t>(nh), hexChunks, [&](int k, std::size_t h0, std::size_t h1) {
         std::vector<Item>& cnt = slot[static_cast<std::size_t>(k)];
         cnt.assign(static_cast<std::size_t>(nv), 0);
         for (std::size_t h = h0; h < h1; ++h) {
@@ -150,7 +156,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
     for (int p = 0; p < nParts; ++p) {
         const long lo = vb[static_cast<std::size_t>(p)], hi = vb[static_cast<std::size_t>(p) + 1];
         const Item offset = start[static_cast<std::size_t>(lo)];
-        parallelChunks(static_cast<std::size_t>(nh), chunks, [&](int k, std::size_t h0, std::size_t h1) {
+        parallelChunks(static_cast<std::size_t>(nh), hexChunks, [&](int k, std::size_t h0, std::size_t h1) {
             Item* const next = slot[static_cast<std::size_t>(k)].data();
             for (std::size_t h = h0; h < h1; ++h) {
                 if (!good[h]) continue;
