@@ -1,0 +1,79 @@
+// Heirs of the annihilated darts (annihilateDarts() with a heirs list): the vertex groups are
+// joined after the run from the removed pairs' links as they were when each pair was removed.
+#include <HexEx/Postprocessing/DartAnnihilation.hh>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <utility>
+#include <vector>
+
+using namespace HexEx;
+
+namespace {
+
+using Links = std::vector<std::array<int, 4>>;
+using Heirs = std::vector<std::pair<int, int>>;
+
+} // namespace
+
+TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
+    // Regular 0 and anti 1 share an edge (alpha_0); 0's alpha_1 goes to 2, 1's to 3; regular 3
+    // and anti 4 share an edge, 4's alpha_1 goes to 5. The pair (0, 1) joins 0, 1, 2, 3 and
+    // re-links alpha_1(2) = 3; the pair (3, 4) then joins 3 with its partner of that moment
+    // (2) and 4 with 5. Survivors 2 and 5 are one group: 2 is the heir of every removed dart.
+    Links a(6);
+    for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(d)] = {d, d, d, d};
+    auto sew = [&](int x, int y, int i) {
+        a[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = y;
+        a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
+    };
+    sew(0, 1, 0);
+    sew(0, 2, 1);
+    sew(1, 3, 1);
+    sew(3, 4, 0);
+    sew(4, 5, 1);
+    const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
+    std::vector<char> alive(6, 1);
+    Heirs heirs;
+    const auto st = annihilateDarts(a, sign, alive, &heirs);
+    EXPECT_EQ(st.pairs, 2);
+    EXPECT_EQ(alive, (std::vector<char>{0, 0, 1, 0, 0, 1}));
+    EXPECT_EQ(heirs, (Heirs{{0, 2}, {1, 2}, {3, 2}, {4, 2}}));
+}
+
+TEST(AnnihilationHeirs, SeparatePairsKeepSeparateHeirs) {
+    // Two pairs far apart: (0, 1) next to survivor 2, (3, 4) next to survivor 5.
+    Links a(6);
+    for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(d)] = {d, d, d, d};
+    auto sew = [&](int x, int y, int i) {
+        a[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = y;
+        a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
+    };
+    sew(0, 1, 0);
+    sew(0, 2, 2);
+    sew(3, 4, 0);
+    sew(4, 5, 3);
+    const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
+    std::vector<char> alive(6, 1);
+    Heirs heirs;
+    const auto st = annihilateDarts(a, sign, alive, &heirs);
+    EXPECT_EQ(st.pairs, 2);
+    EXPECT_EQ(heirs, (Heirs{{0, 2}, {1, 2}, {3, 5}, {4, 5}}));
+}
+
+TEST(AnnihilationHeirs, OneSidedLinkToARemovedDartStillGivesTheGroupsOfThatMoment) {
+    // Not involutive: regular 2's alpha_1 points to 0 (0's alpha_1 is free). The pair (0, 1)
+    // goes first; then the pair (2, 3) re-links 2's alpha_1 partner (removed dart 0) to 3's
+    // (4), a write into a removed dart's links: the pending pair is joined before it, the
+    // rest of the run at once. Groups of the moment: {0, 1}, then {2, 3, 0} and {3, 4}: one
+    // group, survivor 4.
+    Links a = {{1, 0, 0, 0}, {0, 1, 1, 1}, {3, 0, 2, 2}, {2, 4, 3, 3}, {4, 3, 4, 4}};
+    const std::vector<signed char> sign = {1, -1, 1, -1, 1};
+    std::vector<char> alive(5, 1);
+    Heirs heirs;
+    const auto st = annihilateDarts(a, sign, alive, &heirs);
+    EXPECT_EQ(st.pairs, 2);
+    EXPECT_EQ(alive, (std::vector<char>{0, 0, 0, 0, 1}));
+    EXPECT_EQ(heirs, (Heirs{{0, 4}, {1, 4}, {2, 4}, {3, 4}}));
+}
