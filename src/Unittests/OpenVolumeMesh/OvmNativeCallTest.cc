@@ -406,7 +406,8 @@ TEST(OvmNativeCall, UserIncidenceFlagsAreKept) {
     // OpenVolumeMesh computes when they are enabled on the finished mesh.
     TetMesh tets;
     ASSERT_TRUE(OpenVolumeMesh::IO::read_file("src/Unittests/data/ovm/sphere.ovmb", tets));
-    const auto& param = *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    // A copy of the property handle: the optional that get_halfface_property() returns is a temporary.
+    const auto param = *tets.get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
     HexMeshOvm all;
     HexEx::extractHexMesh(tets, param, all);
     ASSERT_TRUE(all.has_full_bottom_up_incidences());
