@@ -15,6 +15,19 @@ namespace {
 using Links = std::vector<std::array<int, 4>>;
 using Heirs = std::vector<std::pair<int, int>>;
 
+/// n darts with every link free (each dart its own alpha_0..alpha_3 partner).
+Links freeLinks(int n) {
+    Links a(static_cast<std::size_t>(n));
+    for (int d = 0; d < n; ++d) a[static_cast<std::size_t>(d)] = {d, d, d, d};
+    return a;
+}
+
+/// Links darts x and y by alpha_i, both ways.
+void sew(Links& a, int x, int y, int i) {
+    a[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = y;
+    a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
+}
+
 } // namespace
 
 TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
@@ -22,17 +35,12 @@ TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
     // and anti 4 share an edge, 4's alpha_1 goes to 5. The pair (0, 1) joins 0, 1, 2, 3 and
     // re-links alpha_1(2) = 3; the pair (3, 4) then joins 3 with its partner of that moment
     // (2) and 4 with 5. Survivors 2 and 5 are one group: 2 is the heir of every removed dart.
-    Links a(6);
-    for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(d)] = {d, d, d, d};
-    auto sew = [&](int x, int y, int i) {
-        a[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = y;
-        a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
-    };
-    sew(0, 1, 0);
-    sew(0, 2, 1);
-    sew(1, 3, 1);
-    sew(3, 4, 0);
-    sew(4, 5, 1);
+    Links a = freeLinks(6);
+    sew(a, 0, 1, 0);
+    sew(a, 0, 2, 1);
+    sew(a, 1, 3, 1);
+    sew(a, 3, 4, 0);
+    sew(a, 4, 5, 1);
     const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
     std::vector<char> alive(6, 1);
     Heirs heirs;
@@ -44,16 +52,11 @@ TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
 
 TEST(AnnihilationHeirs, SeparatePairsKeepSeparateHeirs) {
     // Two pairs far apart: (0, 1) next to survivor 2, (3, 4) next to survivor 5.
-    Links a(6);
-    for (int d = 0; d < 6; ++d) a[static_cast<std::size_t>(d)] = {d, d, d, d};
-    auto sew = [&](int x, int y, int i) {
-        a[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)] = y;
-        a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
-    };
-    sew(0, 1, 0);
-    sew(0, 2, 2);
-    sew(3, 4, 0);
-    sew(4, 5, 3);
+    Links a = freeLinks(6);
+    sew(a, 0, 1, 0);
+    sew(a, 0, 2, 2);
+    sew(a, 3, 4, 0);
+    sew(a, 4, 5, 3);
     const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
     std::vector<char> alive(6, 1);
     Heirs heirs;
