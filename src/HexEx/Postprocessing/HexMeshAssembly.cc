@@ -39,12 +39,18 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const long nocc = implicit ? implicit->n_occurrences : 0;
     int nv = 0;
     std::vector<int> vlabel;
-    std::vector<int> occLabel;
+    // Implicit cells: per occurrence the union-find slot that ends up holding its label
+    // (encoded as -2 - label), so the occurrences need no label array of their own.
+    std::vector<int> occSlot;
+    int nk = 0;  // corner orbits: occurrence o has the slot nk + o
     // Implicit cells: classes without darts (numbered nvDarts, nvDarts + 1, ...), each with
     // its first occurrence (ascending).
     std::vector<long> dartless;
     int nvDarts = 0;
     long nq = 0;
+    // Implicit cells: faces of dart cells with a free alpha_3 that is not a link into an
+    // implicit cell (boundary quads), marked in the pass of the unions below.
+    std::vector<char> bq;
     if (!implicit) {
         // Vertex and quad orbits are independent labellings.
         parallelChunks(2, std::min(2, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
@@ -59,11 +65,13 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // darts sit on or link to. The same classes as over darts, with 6x fewer elements.
         // The unions run in parallel chunks of darts (the classes do not depend on the order).
         const std::vector<int>& corner = labels.corner;
-        const int nk = static_cast<int>(labels.corner_size.size());
+        nk = static_cast<int>(labels.corner_size.size());
         ConcurrentUnionFind uf(static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc));
         std::vector<char> used(static_cast<std::size_t>(nocc), 0);
         auto use = [&](int o) { __atomic_store_n(&used[static_cast<std::size_t>(o)], char(1), __ATOMIC_RELAXED); };
         const std::vector<int>& dartOcc = implicit->dart_occurrence;
+        const std::vector<int>& flabel = labels.face;
+        bq.assign(labels.face_size.size(), 0);
         const int ufChunks = nd + static_cast<std::size_t>(nocc) >= 16384 ? std::max(1, threads) : 1;
         parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
             // The darts of one grid point of a tet (consecutive) share their occurrence: each
@@ -95,6 +103,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 if (o3 >= 0) {
                     uf.unite(k, nk + o3);
                     use(o3);
+                } else if (d3 == static_cast<int>(d)) {
+                    __atomic_store_n(&bq[static_cast<std::size_t>(flabel[d])], char(1), __ATOMIC_RELAXED);
                 }
             }
         });
@@ -117,7 +127,6 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // Labels by first appearance (alive darts in order, then used occurrences in order);
         // the root's slot in parent is reused for its label (encoded as -2 - label).
         vlabel.assign(nd, -1);
-        occLabel.assign(static_cast<std::size_t>(nocc), -1);
         std::vector<int>& parent = uf.parent;
         auto labelOf = [&](int x) {
             const int r = parent[static_cast<std::size_t>(x)];
@@ -130,13 +139,27 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         for (std::size_t d = 0; d < nd; ++d)
             if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(corner[d]);
         // Classes first labelled here have no darts; they are numbered in order from nvDarts.
+        // After its label is taken, a used occurrence's own slot gets the label too (nothing
+        // is looked up through a non-root slot: the labelled elements point to their roots).
+        // The first occurrence of each dartless class is marked (used = 2), then collected.
         nvDarts = nv;
+        constexpr char kFirstOfDartless = 2;
+        long nDartless = 0;
         for (long o = 0; o < nocc; ++o) {
-            if (!used[static_cast<std::size_t>(o)]) continue;
-            const int l = labelOf(nk + static_cast<int>(o));
-            occLabel[static_cast<std::size_t>(o)] = l;
-            if (l == nvDarts + static_cast<int>(dartless.size())) dartless.push_back(o);
+            char& u = used[static_cast<std::size_t>(o)];
+            if (!u) continue;
+            const int x = nk + static_cast<int>(o);
+            const int l = labelOf(x);
+            parent[static_cast<std::size_t>(x)] = -2 - l;
+            if (l == nvDarts + nDartless) {  // a class first labelled here: it has no darts
+                ++nDartless;
+                u = kFirstOfDartless;
+            }
         }
+        dartless.reserve(static_cast<std::size_t>(nDartless));
+        for (long o = 0; o < nocc; ++o)
+            if (used[static_cast<std::size_t>(o)] == kFirstOfDartless) dartless.push_back(o);
+        occSlot = std::move(parent);
     }
     if (stats.violations) describeViolations(g, vlabel, *stats.violations);
     VertexCandidates candidates;
@@ -162,11 +185,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     if (!implicit) {
         stats.quads = nq;
     } else {
-        // Boundary quads: faces with a free alpha_3 that is not a link into an implicit cell.
-        std::vector<char> bq(labels.face_size.size(), 0);
-        for (std::size_t d = 0; d < flabel.size(); ++d)
-            if (flabel[d] >= 0 && a(static_cast<int>(d), 3) == static_cast<int>(d) && implicit->alpha3_occurrence[d] < 0)
-                bq[static_cast<std::size_t>(flabel[d])] = 1;
+        // Boundary quads: faces with a free alpha_3 that is not a link into an implicit cell
+        // (marked in bq with the unions).
         stats.boundary_quads = std::count(bq.begin(), bq.end(), 1) + implicit->boundary_quads;
         // Quads are counted at the end from the cells: interior ones are shared by two.
     }
@@ -279,7 +299,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             for (std::size_t i = b; i < e; ++i) {
                 const auto& c = implicit->cells[i];
                 std::array<int, 8>& h = out.hexes[base + i];
-                for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = occLabel[static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
+                for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = -2 - occSlot[static_cast<std::size_t>(nk) + static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
             }
         });
         long cellFaces = 6 * static_cast<long>(out.hexes.size());
