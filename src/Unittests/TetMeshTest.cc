@@ -328,9 +328,42 @@ TEST(TetMesh, AdjacencyMatchesABruteForceReferenceOnAnyThreadCount) {
         const auto ring = m.edge_cells(EdgeHandle(e));
         std::vector<int> got(ring.first, ring.second);
         ASSERT_EQ(got.front(), startOfEdge.at(e)) << "edge " << e;
+        // Consecutive ring tets share a face through the edge; the edge is a boundary edge
+        // exactly when a boundary face passes through it.
+        const auto ev = m.edge_vertices(EdgeHandle(e));
+        auto sharesFace = [&](int c, int d) {
+            for (int j = 0; j < 4; ++j)
+                if (refOpposite[4 * std::size_t(c) + std::size_t(j)] >= 0 &&
+                    refOpposite[4 * std::size_t(c) + std::size_t(j)] / 4 == d && tets[std::size_t(c)][std::size_t(j)] != ev[0].idx() &&
+                    tets[std::size_t(c)][std::size_t(j)] != ev[1].idx())
+                    return true;
+            return false;
+        };
+        for (std::size_t i = 0; i + 1 < got.size(); ++i) ASSERT_TRUE(sharesFace(got[i], got[i + 1])) << "edge " << e;
+        bool boundary = false;
+        for (const int c : cells)
+            for (int j = 0; j < 4; ++j)
+                boundary |= refOpposite[4 * std::size_t(c) + std::size_t(j)] < 0 && tets[std::size_t(c)][std::size_t(j)] != ev[0].idx() &&
+                            tets[std::size_t(c)][std::size_t(j)] != ev[1].idx();
+        ASSERT_EQ(m.is_boundary(EdgeHandle(e)), boundary) << "edge " << e;
+        if (!boundary) {
+            ASSERT_TRUE(sharesFace(got.back(), got.front())) << "edge " << e;
+        }
+        // Edges are numbered by smaller, then larger endpoint; find_edge() finds them.
+        if (e > 0) {
+            const auto pv = m.edge_vertices(EdgeHandle(e - 1));
+            ASSERT_TRUE(pv[0] < ev[0] || (pv[0] == ev[0] && pv[1] < ev[1])) << "edge " << e;
+        }
+        ASSERT_EQ(m.find_edge(ev[1], ev[0]).idx(), e);
         std::sort(got.begin(), got.end());
         ASSERT_EQ(got, cells) << "edge " << e;
     }
+    // A vertex is a boundary vertex exactly when it lies on a boundary face.
+    std::vector<char> refBoundaryVertex(nv, 0);
+    for (std::size_t hf = 0; hf < 4 * nc; ++hf)
+        if (refOpposite[hf] < 0)
+            for (int k = 0; k < 3; ++k) refBoundaryVertex[std::size_t(tets[hf / 4][std::size_t(TetMesh::kFaceCorners[hf % 4][k])])] = 1;
+    for (std::size_t v = 0; v < nv; ++v) ASSERT_EQ(m.is_boundary(VertexHandle(int(v))), refBoundaryVertex[v] != 0) << "vertex " << v;
     // The same arrays for any thread count.
     for (std::size_t t = 1; t < meshes.size(); ++t) {
         const TetMesh& o = meshes[t];

@@ -181,105 +181,127 @@ void TetMesh::build_adjacency(int threads) {
         }
     });
 
-    // Edges, grouped by smaller endpoint and sorted by the larger one: per vertex the
-    // larger neighbours are counted, then (after a prefix sum) written, both in parallel.
-    // The second pass also does, for the edges of its vertex v (smaller endpoint), what
-    // needs the edge numbers: the tets' edge slots, the number of tets per edge and the
-    // start tet of every edge's walk below. The tets of an edge are all in the star of v,
-    // visited in tet order, so the start rule (the last boundary face met in tet order,
-    // else the first tet) does not depend on the thread count.
-    auto largerNeighbours = [&](std::size_t v, std::vector<int>& nbrs) {
-        nbrs.clear();
-        for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
-            for (auto w : cells_[static_cast<std::size_t>(vc_idx_[o])])
-                if (w.idx() > static_cast<int>(v)) nbrs.push_back(w.idx());
-        std::sort(nbrs.begin(), nbrs.end());
-        nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
-    };
-    ve_off_.assign(nv + 1, 0);
+    // Edges, grouped by smaller endpoint v and sorted by the larger one w; all their work is
+    // done per vertex v, on the tets of its star (the tets of an edge (v, w) all contain v),
+    // in two parallel passes. Pass 1 counts v's larger neighbours and the (tet, edge)
+    // incidences of its edges (marks per chunk instead of sorting the neighbour lists);
+    // after two prefix sums, pass 2 numbers the edges, fills the tets' edge slots, the
+    // number of tets per edge, and walks every edge's ring of tets while the star is in the
+    // cache. The walk starts at the last boundary face met in tet order (the star is in tet
+    // order), else at the first tet: the same rule for any thread count.
+    ve_off_.resize(nv + 1);
+    ve_off_[0] = 0;
+    std::vector<int> incidences(nv + 1);  // per vertex: (tet, edge) pairs of its edges; then prefix sums
+    incidences[0] = 0;
     parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
-        std::vector<int> nbrs;
+        std::vector<int> seen(nv, -1);  // seen[w] == v: w counted for v
         for (std::size_t v = b; v < e; ++v) {
-            largerNeighbours(v, nbrs);
-            ve_off_[v + 1] = static_cast<int>(nbrs.size());
+            const int vi = static_cast<int>(v);
+            int distinct = 0, total = 0;
+            for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
+                for (const auto w : cells_[static_cast<std::size_t>(vc_idx_[o])]) {
+                    if (w.idx() <= vi) continue;
+                    ++total;
+                    distinct += seen[w.uidx()] != vi;
+                    seen[w.uidx()] = vi;
+                }
+            ve_off_[v + 1] = distinct;
+            incidences[v + 1] = total;
         }
     });
-    for (std::size_t v = 0; v < nv; ++v) ve_off_[v + 1] += ve_off_[v];
+    for (std::size_t v = 0; v < nv; ++v) {
+        ve_off_[v + 1] += ve_off_[v];
+        incidences[v + 1] += incidences[v];
+    }
     const std::size_t ne = static_cast<std::size_t>(ve_off_[nv]);
     edges_.resize(ne);
     ve_idx_.resize(ne);
     cell_edges_.resize(6 * nc);
-    ec_off_.assign(ne + 1, 0);
-    std::vector<int> start(ne, -1);     // a cell of the edge, preferring one at the boundary
-    std::vector<int> start_hf(ne, -1);  // the halfface of start through which the walk must NOT leave
+    ec_off_.resize(ne + 1);
+    ec_off_[ne] = incidences[nv];
+    ec_idx_.resize(static_cast<std::size_t>(incidences[nv]));
+    boundary_edge_.resize(ne);
+    boundary_vertex_.resize(nv);
     parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
-        std::vector<int> nbrs;
+        std::vector<int> slot(nv, -1);  // slot[w]: w's place among the larger neighbours of the current v
+        std::vector<int> nbrs, count, start, startHf;
         for (std::size_t v = b; v < e; ++v) {
-            largerNeighbours(v, nbrs);
+            const int vi = static_cast<int>(v);
+            const int* const starBegin = vc_idx_.data() + vc_off_[v];
+            const int* const starEnd = vc_idx_.data() + vc_off_[v + 1];
+            // The larger neighbours, sorted: the edges of v in edge order.
+            nbrs.clear();
+            for (const int* o = starBegin; o != starEnd; ++o)
+                for (const auto w : cells_[static_cast<std::size_t>(*o)])
+                    if (w.idx() > vi && slot[w.uidx()] != -2 - vi) {
+                        slot[w.uidx()] = -2 - vi;  // collected for v (distinct from any place)
+                        nbrs.push_back(w.idx());
+                    }
+            std::sort(nbrs.begin(), nbrs.end());
+            const std::size_t n = nbrs.size();
             const int first = ve_off_[v];
-            for (std::size_t k = 0; k < nbrs.size(); ++k) {
+            for (std::size_t k = 0; k < n; ++k) {
+                slot[static_cast<std::size_t>(nbrs[k])] = static_cast<int>(k);
                 const std::size_t id = static_cast<std::size_t>(first) + k;
                 ve_idx_[id] = static_cast<int>(id);
-                edges_[id] = {VertexHandle(static_cast<int>(v)), VertexHandle(nbrs[k])};
+                edges_[id] = {VertexHandle(vi), VertexHandle(nbrs[k])};
             }
-            for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o) {
-                const std::size_t c = static_cast<std::size_t>(vc_idx_[o]);
-                const auto& cv = cells_[c];
+            count.assign(n, 0);
+            start.assign(n, -1);    // a tet of the edge, preferring one at the boundary
+            startHf.assign(n, -1);  // the halfface of start through which the walk must NOT leave
+            char onBoundary = 0;
+            for (const int* o = starBegin; o != starEnd; ++o) {
+                const int c = *o;
+                const std::size_t cu = static_cast<std::size_t>(c);
+                const auto& cv = cells_[cu];
+                for (int j = 0; j < 4; ++j)  // a boundary face that contains v
+                    onBoundary |= static_cast<char>(cv[j].idx() != vi && opposite_[4 * cu + static_cast<std::size_t>(j)] < 0);
                 for (int k = 0; k < 6; ++k) {
                     const int a = kEdgeCorners[k][0], bb = kEdgeCorners[k][1];
                     const int x = cv[a].idx(), y = cv[bb].idx();
-                    if (std::min(x, y) != static_cast<int>(v)) continue;  // another vertex's edge
-                    const int w = std::max(x, y);
-                    const int id = first + static_cast<int>(std::lower_bound(nbrs.begin(), nbrs.end(), w) - nbrs.begin());
-                    cell_edges_[6 * c + static_cast<std::size_t>(k)] = id;
-                    ++ec_off_[static_cast<std::size_t>(id) + 1];
+                    if (std::min(x, y) != vi) continue;  // another vertex's edge
+                    const std::size_t local = static_cast<std::size_t>(slot[static_cast<std::size_t>(std::max(x, y))]);
+                    cell_edges_[6 * cu + static_cast<std::size_t>(k)] = first + static_cast<int>(local);
+                    ++count[local];
                     for (int j = 0; j < 4; ++j)
-                        if (j != a && j != bb && opposite_[4 * c + static_cast<std::size_t>(j)] < 0) {
-                            start[static_cast<std::size_t>(id)] = static_cast<int>(c);
-                            start_hf[static_cast<std::size_t>(id)] = static_cast<int>(4 * c) + j;
+                        if (j != a && j != bb && opposite_[4 * cu + static_cast<std::size_t>(j)] < 0) {
+                            start[local] = c;
+                            startHf[local] = 4 * c + j;
                         }
-                    if (start[static_cast<std::size_t>(id)] < 0) start[static_cast<std::size_t>(id)] = static_cast<int>(c);
+                    if (start[local] < 0) start[local] = c;
                 }
+            }
+            boundary_vertex_[v] = onBoundary;
+            // The rings: walk across the faces that contain the edge, from the start tet.
+            int pos = incidences[v];
+            for (std::size_t k = 0; k < n; ++k) {
+                const std::size_t id = static_cast<std::size_t>(first) + k;
+                const VertexHandle w(nbrs[k]);
+                ec_off_[id] = pos;
+                const int end = pos + count[k];
+                int c = start[k], inHf = startHf[k];
+                boundary_edge_[id] = inHf >= 0;
+                while (pos < end) {
+                    ec_idx_[static_cast<std::size_t>(pos++)] = c;
+                    // The two halffaces of c that contain the edge: opposite the corners not on it.
+                    const auto& cv = cells_[static_cast<std::size_t>(c)];
+                    int out = -1;
+                    for (int j = 0; j < 4; ++j)
+                        if (cv[j].idx() != vi && cv[j] != w && 4 * c + j != inHf) {
+                            out = 4 * c + j;
+                            if (inHf < 0) break;  // first step of an interior ring: either direction
+                        }
+                    const int next = opposite_[static_cast<std::size_t>(out)];
+                    if (next < 0 || next / 4 == start[k]) break;
+                    c = next / 4;
+                    inHf = next;
+                }
+                // A non-manifold edge leaves slots unfilled; check_manifold() reports it.
+                for (; pos < end; ++pos) ec_idx_[static_cast<std::size_t>(pos)] = -1;
             }
         }
     });
 
-    // Edge -> cells in cyclic order: walk across the faces that contain the edge.
-    for (std::size_t e = 0; e < ne; ++e) ec_off_[e + 1] += ec_off_[e];
-    ec_idx_.assign(static_cast<std::size_t>(ec_off_[ne]), -1);
-    boundary_edge_.assign(ne, 0);
-    // Every edge fills only its own slots: edges in parallel.
-    parallelChunks(ne, ne < 20000 ? 1 : resolveThreadCount(threads), [&](int, std::size_t eb, std::size_t ee) {
-    for (std::size_t e = eb; e < ee; ++e) {
-        int c = start[e], in_hf = start_hf[e];
-        if (in_hf >= 0) boundary_edge_[e] = 1;
-        int pos = ec_off_[e];
-        const int end = ec_off_[e + 1];
-        while (pos < end) {
-            ec_idx_[pos++] = c;
-            // The two halffaces of c that contain the edge: opposite the corners not on it.
-            int k = 0;
-            while (cell_edges_[6 * c + k] != static_cast<int>(e)) ++k;
-            const int a = kEdgeCorners[k][0], b = kEdgeCorners[k][1];
-            int out = -1;
-            for (int j = 0; j < 4; ++j)
-                if (j != a && j != b && 4 * c + j != in_hf) {
-                    out = 4 * c + j;
-                    if (in_hf < 0) break;  // first step of an interior ring: either direction
-                }
-            const int next = opposite_[out];
-            if (next < 0 || next / 4 == start[e]) break;
-            c = next / 4;
-            in_hf = next;
-        }
-        // A non-manifold edge leaves slots unfilled; check_manifold() reports it.
-    }
-    });
-
-    boundary_vertex_.assign(nv, 0);
-    for (std::size_t hf = 0; hf < 4 * nc; ++hf)
-        if (opposite_[hf] < 0)
-            for (int k = 0; k < 3; ++k) boundary_vertex_[cells_[hf / 4][kFaceCorners[hf % 4][k]].uidx()] = 1;
     adjacency_built_ = true;
 }
 

@@ -24,6 +24,12 @@ void quantizeParameter(Vec3d& u, double bound, double epsilon, int& snapped) {
 }
 
 namespace {
+/// The corner (0..3) of the tet with corners @p cv that is @p v, which must be one of
+/// them; without branches (which corner it is varies from tet to tet).
+int cornerOf(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
+    return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
+}
+
 /// The common case, without the breadth-first walk: every face around @p v has the
 /// identity transition and every cell holds the same parameter for @p v. Then all copies
 /// get the same quantized value. Returns false (nothing changed) otherwise.
@@ -33,9 +39,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     const Vec3d* first = nullptr;
     for (auto it = cells.first; it != cells.second; ++it) {
         const CellHandle c(*it);
-        const auto& cv = mesh.cell_vertices(c);
-        int k = 0;
-        while (cv[k] != v) ++k;
+        const int k = cornerOf(mesh.cell_vertices(c), v);
         const Vec3d& p = params[c.uidx()][k];
         if (first && !(p == *first)) return false;
         if (!first) first = &p;
@@ -47,10 +51,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     if (u == *first) return true;  // already clean: nothing to write
     for (auto it = cells.first; it != cells.second; ++it) {
         const CellHandle c(*it);
-        const auto& cv = mesh.cell_vertices(c);
-        int k = 0;
-        while (cv[k] != v) ++k;
-        params[c.uidx()][k] = u;
+        params[c.uidx()][cornerOf(mesh.cell_vertices(c), v)] = u;
     }
     return true;
 }
@@ -69,17 +70,17 @@ bool sameValue(const Vec3d& a, const Vec3d& b, double epsilon) {
 /// the star's tets share one value: then the first entry holding it. Fills @p ref with the
 /// mapped values, and @p agrees (per entry: agrees with the chosen value) only in the
 /// majority case, i.e. when there is something to repair; else it is left empty.
-/// Consistent stars cost one pass.
+/// Consistent stars cost one pass. @p corner(q) is the value of star entry q.
 template <class Corner>
 std::size_t voteSeed(const std::vector<int>& star, const std::vector<GridTransform>& toChart, Corner&& corner,
                      double epsilon, std::vector<Vec3d>& ref, std::vector<char>& agrees) {
     const std::size_t n = star.size();
     agrees.clear();
     ref.resize(n);
-    ref[0] = corner(star[0]);
+    ref[0] = corner(0);
     bool all = true;
     for (std::size_t q = 1; q < n; ++q) {
-        ref[q] = toChart[q].inverse().apply(corner(star[q]));
+        ref[q] = toChart[q].inverse().apply(corner(q));
         all = all && sameValue(ref[0], ref[q], epsilon);
     }
     if (all) return 0;
@@ -108,6 +109,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     std::vector<std::vector<CornerRepair>> repaired(static_cast<std::size_t>(chunks));
     parallelChunks(mesh.n_vertices(), chunks, [&](int chunk, std::size_t vbegin, std::size_t vend) {
     std::vector<int> star;                 // cells around the vertex, BFS order
+    std::vector<unsigned char> slot;       // per star entry: the vertex's corner in that cell
     std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
     // mark[c] == v: cell c already in the star of vertex v (O(1) instead of a search).
     std::vector<int> mark(mesh.n_cells(), -1);
@@ -119,6 +121,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         if (cells.first == cells.second) continue;
         if (sanitizeSimpleVertex(mesh, params, tr, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;
         star.assign(1, *cells.first);
+        slot.assign(1, static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(*cells.first)), v)));
         mark[static_cast<std::size_t>(*cells.first)] = static_cast<int>(vi);
         toChart.assign(1, GridTransform());
         for (std::size_t q = 0; q < star.size(); ++q) {
@@ -132,28 +135,21 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                 if (mark[static_cast<std::size_t>(n)] == static_cast<int>(vi)) continue;
                 mark[static_cast<std::size_t>(n)] = static_cast<int>(vi);
                 star.push_back(n);
+                slot.push_back(static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(n)), v)));
                 toChart.push_back(tr.halfface[hf.uidx()] * toChart[q]);
             }
         }
-        auto corner = [&](int c) -> Vec3d& {
-            const auto& cv = mesh.cell_vertices(CellHandle(c));
-            int k = 0;
-            while (cv[k] != v) ++k;
-            return params[static_cast<std::size_t>(c)][k];
-        };
+        auto corner = [&](std::size_t q) -> Vec3d& { return params[static_cast<std::size_t>(star[q])][slot[q]]; };
         // The seed: the first tet's value, unless most tets of the star agree on another one
         // (a corrupted corner must not spread over the whole star).
         const std::size_t seed = voteSeed(star, toChart, corner, opt.epsilon, ref, agrees);
-        Vec3d u = seed == 0 ? corner(star[0]) : ref[seed];
+        Vec3d u = seed == 0 ? corner(0) : ref[seed];
         auto& list = repaired[static_cast<std::size_t>(chunk)];
         const std::size_t firstRepair = list.size();
         if (!agrees.empty()) {
             for (std::size_t q = 0; q < star.size(); ++q) {
                 if (agrees[q]) continue;
-                const auto& cv = mesh.cell_vertices(CellHandle(star[q]));
-                int k = 0;
-                while (cv[k] != v) ++k;
-                list.push_back({star[q], k, static_cast<int>(vi), corner(star[q]), Vec3d()});
+                list.push_back({star[q], slot[q], static_cast<int>(vi), corner(q), Vec3d()});
             }
         }
         // Largest magnitude the parameter reaches in any chart (raw values, plus the
@@ -163,13 +159,13 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         const double umax = std::max({std::fabs(u[0]), std::fabs(u[1]), std::fabs(u[2])});
         for (std::size_t q = 0; q < star.size(); ++q) {
             if (!agrees.empty() && !agrees[q]) continue;
-            const Vec3d& p = corner(star[q]);
+            const Vec3d& p = corner(q);
             const Vec3i& t = toChart[q].t;
             bound = std::max({bound, std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2]),
                               umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
         }
         quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
-        for (std::size_t q = 0; q < star.size(); ++q) corner(star[q]) = toChart[q].apply(u);
+        for (std::size_t q = 0; q < star.size(); ++q) corner(q) = toChart[q].apply(u);
         for (std::size_t k = firstRepair; k < list.size(); ++k)
             list[k].repaired = params[static_cast<std::size_t>(list[k].tet)][list[k].corner];
     }

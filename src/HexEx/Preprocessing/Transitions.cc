@@ -399,7 +399,7 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
         Rotation H;
         for (int j = 0; j < m; ++j) {
             const HalfFaceHandle hf = halffaceTowards(mesh, CellHandle(ring.first[j]), CellHandle(ring.first[(j + 1) % m]));
-            if (hf.is_valid()) H = tr.halfface[hf.uidx()].R * H;
+            if (hf.is_valid()) H = tr.halfface.rotation(hf.uidx()) * H;
         }
         if (H.is_identity()) continue;
         double angle = 0;

@@ -28,6 +28,8 @@ public:
         if (c == 0) return GridTransform();
         return GridTransform(Rotation(c & kRotationMask), (c & kTranslated) ? translation(h) : Vec3i(0, 0, 0));
     }
+    /// The rotation of halfface @p h (operator[] without looking up the translation).
+    Rotation rotation(std::size_t h) const { return Rotation(code_[h] & kRotationMask); }
     /// True if halfface @p h has the identity.
     bool is_identity(std::size_t h) const { return code_[h] == 0; }
     /// Sets the transform of halfface @p h (not thread-safe; see set_rotation_only()).
