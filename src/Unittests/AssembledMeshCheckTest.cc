@@ -157,3 +157,39 @@ TEST(AssembledMeshCheck, CountsTheQuadsOfALargeGrid) {
         EXPECT_TRUE(c.agrees(3L * n * n * (n + 1), 6L * n * n));
     }
 }
+
+TEST(AssembledMeshCheck, BoundaryEdgesAndFansAsCheckHexMeshOnManyHexes) {
+    // 6,000 separate unit hexes in a row (24,000 boundary quads: the boundary items are sorted
+    // and checked in chunks); every 3rd hex shares one vertex with the hex before it (a pinched
+    // vertex), every 5th one (not a multiple of 3) an edge (four boundary quads at it).
+    HexMesh m;
+    const int n = 6000;
+    long pinched = 0, sharedEdges = 0;
+    for (int c = 0; c < n; ++c) {
+        HexMesh h = column(1);
+        const int base = static_cast<int>(m.vertices.size());
+        for (const auto& p : h.vertices) m.vertices.push_back(p + Vec3d(2.0 * c, 0, 0));
+        std::array<int, 8> hex = h.hexes[0];
+        for (int& v : hex) v += base;
+        if (c > 0 && c % 3 == 0) {
+            hex[0] = m.hexes.back()[1];  // vertex 1 of the hex before
+            ++pinched;
+        } else if (c > 0 && c % 5 == 0) {
+            hex[0] = m.hexes.back()[1];  // edge 1-5 of the hex before as the edge 0-4
+            hex[4] = m.hexes.back()[5];
+            ++sharedEdges;
+        }
+        m.hexes.push_back(hex);
+    }
+    const HexMeshCheckResult w = checkHexMesh(m);
+    EXPECT_EQ(w.nonmanifold_boundary_edges, sharedEdges);
+    EXPECT_EQ(w.nonmanifold_boundary_vertices, pinched);  // the ends of a shared edge keep one fan each
+    EXPECT_EQ(pinched, 1999);
+    EXPECT_EQ(sharedEdges, 800);
+    for (const int threads : {1, 2, 3}) {
+        const AssembledMeshCheck c = checkAssembledHexes(m, threads);
+        EXPECT_EQ(c.boundary_quads, 6L * n);
+        EXPECT_EQ(c.nonmanifold_boundary_edges, w.nonmanifold_boundary_edges);
+        EXPECT_EQ(c.nonmanifold_boundary_vertices, w.nonmanifold_boundary_vertices);
+    }
+}

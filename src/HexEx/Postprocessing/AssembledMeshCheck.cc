@@ -1,7 +1,7 @@
 /// @file AssembledMeshCheck.cc
 /// Implementation of checkAssembledHexes(): counting sorts by vertex, small sorts per bucket;
-/// the hex, quad and per-vertex boundary passes in parallel chunks (quads as compact records,
-/// one per face).
+/// the hex and quad passes in parallel chunks (quads as compact records, one per face); the
+/// boundary's edges and corners radix-sorted by vertex and checked in chunks of vertices.
 
 #include "AssembledMeshCheck.hh"
 
@@ -18,16 +18,33 @@ namespace HexEx {
 
 namespace {
 
-/// Items 0..n-1 ordered by the vertex @p vertexOf gives them (a counting sort: linear in
-/// @p nv + n). Bucket v is order[start[v] .. start[v+1]).
-template <class VertexOf>
-void bucketByVertex(long nv, long n, VertexOf vertexOf, std::vector<long>& start, std::vector<long>& order) {
-    start.assign(static_cast<std::size_t>(nv) + 1, 0);
-    for (long i = 0; i < n; ++i) ++start[static_cast<std::size_t>(vertexOf(i)) + 1];
-    for (long v = 0; v < nv; ++v) start[static_cast<std::size_t>(v) + 1] += start[static_cast<std::size_t>(v)];
-    std::vector<long> next(start.begin(), start.end() - 1);
-    order.resize(static_cast<std::size_t>(n));
-    for (long i = 0; i < n; ++i) order[static_cast<std::size_t>(next[static_cast<std::size_t>(vertexOf(i))]++)] = i;
+/// An item (a boundary edge or corner) under a vertex.
+struct VertexItem {
+    int vertex;  ///< the vertex it is grouped under
+    long item;   ///< the item
+};
+
+/// Sorts @p items by vertex (all in [0, @p nv)), stably: a radix sort by 11 bits at a time
+/// (as many passes as @p nv needs); @p scratch has the same size.
+void sortByVertex(std::vector<VertexItem>& items, std::vector<VertexItem>& scratch, long nv) {
+    constexpr int kBits = 11;
+    constexpr std::size_t kBuckets = std::size_t(1) << kBits;
+    int bits = 0;
+    while (bits < 63 && (1L << bits) < nv) ++bits;
+    std::vector<std::size_t> count(kBuckets);
+    for (int shift = 0; shift < bits; shift += kBits) {
+        std::fill(count.begin(), count.end(), 0);
+        auto digit = [shift](const VertexItem& x) { return (static_cast<std::size_t>(x.vertex) >> shift) & (kBuckets - 1); };
+        for (const VertexItem& x : items) ++count[digit(x)];
+        std::size_t at = 0;
+        for (std::size_t& c : count) {
+            const std::size_t n = c;
+            c = at;
+            at += n;
+        }
+        for (const VertexItem& x : items) scratch[count[digit(x)]++] = x;
+        items.swap(scratch);
+    }
 }
 
 /// Fewer hexes than this are checked on one thread.
@@ -253,83 +270,90 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
     r.boundary_quads = pass.boundary_quads;
     r.quads_shared_by_more_than_two = pass.shared_by_more;
     const std::vector<long>& boundary = pass.boundary;  // quad items in exactly one hex
-    std::vector<long> start, order;
 
-    // Boundary edges (item 4b+i: edge i of boundary quad b) by their smaller vertex, and
-    // boundary corners (item 4b+i: corner i of b) by their vertex.
+    // Boundary edges (item 4b+i: edge i of boundary quad b) grouped by their smaller vertex,
+    // and boundary corners (item 4b+i: corner i of b) by their vertex: only the boundary's
+    // items are sorted (by vertex), no array per vertex of the mesh.
     auto loopVertex = [&](long b, int i) {
         const long q = boundary[static_cast<std::size_t>(b)];
         return H[static_cast<std::size_t>(q / 6)][kHexFaces[q % 6][i & 3]];
     };
     const long ne = 4 * static_cast<long>(boundary.size());
-    bucketByVertex(
-        nv, ne, [&](long e) { return std::min(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)); },
-        start, order);
-    // Both per-vertex passes in chunks of vertices; the counts are summed in chunk order.
-    std::vector<long> perChunk(static_cast<std::size_t>(chunks), 0);
-    auto sumChunks = [&perChunk] {
+    std::vector<VertexItem> items(static_cast<std::size_t>(ne)), scratch(static_cast<std::size_t>(ne));
+    // Per chunk of the sorted items (cut at group starts) a count, summed in chunk order;
+    // perGroup(first, end, others, parent) gets the chunk's scratch vectors.
+    const int itemChunks = ne >= 65536 ? chunks : 1;
+    auto sumOverGroups = [&](auto perGroup) {
+        std::vector<long> perChunk(static_cast<std::size_t>(itemChunks), 0);
+        parallelChunks(items.size(), itemChunks, [&](int k, std::size_t b, std::size_t e) {
+            std::vector<int> others, parent;
+            auto sameGroup = [&](std::size_t x) { return x > 0 && x < items.size() && items[x].vertex == items[x - 1].vertex; };
+            while (sameGroup(b)) ++b;  // the group was started by the chunk before
+            while (sameGroup(e)) ++e;  // finish the last group
+            for (std::size_t g = b; g < e;) {
+                std::size_t h = g + 1;
+                while (h < e && items[h].vertex == items[g].vertex) ++h;
+                perChunk[static_cast<std::size_t>(k)] += perGroup(g, h, others, parent);
+                g = h;
+            }
+        });
         long n = 0;
-        for (long& x : perChunk) {
-            n += x;
-            x = 0;
-        }
+        for (const long x : perChunk) n += x;
         return n;
     };
-    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
-        std::vector<int> others;
-        for (std::size_t v = v0; v < v1; ++v) {
-            others.clear();
-            for (long i = start[v]; i < start[v + 1]; ++i) {
-                const long e = order[static_cast<std::size_t>(i)];
-                others.push_back(std::max(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)));
-            }
-            std::sort(others.begin(), others.end());
-            for (std::size_t i = 0; i < others.size();) {
-                std::size_t j = i + 1;
-                while (j < others.size() && others[j] == others[i]) ++j;
-                if (j - i != 2) ++perChunk[static_cast<std::size_t>(k)];
-                i = j;
-            }
+
+    // Edges: per smaller vertex, each larger end must come exactly twice.
+    for (long e = 0; e < ne; ++e)
+        items[static_cast<std::size_t>(e)] = {std::min(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)), e};
+    sortByVertex(items, scratch, nv);
+    r.nonmanifold_boundary_edges = sumOverGroups([&](std::size_t g, std::size_t h, std::vector<int>& others, std::vector<int>&) {
+        others.clear();
+        for (std::size_t i = g; i < h; ++i) {
+            const long e = items[i].item;
+            others.push_back(std::max(loopVertex(e / 4, static_cast<int>(e % 4)), loopVertex(e / 4, static_cast<int>(e % 4) + 1)));
         }
+        std::sort(others.begin(), others.end());
+        long bad = 0;
+        for (std::size_t i = 0; i < others.size();) {
+            std::size_t j = i + 1;
+            while (j < others.size() && others[j] == others[i]) ++j;
+            if (j - i != 2) ++bad;
+            i = j;
+        }
+        return bad;
     });
-    r.nonmanifold_boundary_edges = sumChunks();
 
     // Fans: the corners at v link its two neighbours in the quad; one fan iff connected.
-    bucketByVertex(nv, ne, [&](long c) { return loopVertex(c / 4, static_cast<int>(c % 4)); }, start, order);
-    parallelChunks(static_cast<std::size_t>(nv), chunks, [&](int k, std::size_t v0, std::size_t v1) {
-        std::vector<int> others, parent;
-        for (std::size_t v = v0; v < v1; ++v) {
-            const long s = start[v], t = start[v + 1];
-            if (t - s == 0) continue;
-            others.clear();
-            for (long i = s; i < t; ++i) {
-                const long c = order[static_cast<std::size_t>(i)];
-                others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 3));
-                others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 1));
-            }
-            std::sort(others.begin(), others.end());
-            others.erase(std::unique(others.begin(), others.end()), others.end());
-            parent.resize(others.size());
-            for (std::size_t q = 0; q < parent.size(); ++q) parent[q] = static_cast<int>(q);
-            auto find = [&](int x) {
-                while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
-                return x;
-            };
-            auto local = [&](int u) { return static_cast<int>(std::lower_bound(others.begin(), others.end(), u) - others.begin()); };
-            long components = static_cast<long>(others.size());
-            for (long i = s; i < t; ++i) {
-                const long c = order[static_cast<std::size_t>(i)];
-                const int x = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 3)));
-                const int y = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 1)));
-                if (x != y) {
-                    parent[static_cast<std::size_t>(x)] = y;
-                    --components;
-                }
-            }
-            if (components > 1) ++perChunk[static_cast<std::size_t>(k)];
+    for (long c = 0; c < ne; ++c) items[static_cast<std::size_t>(c)] = {loopVertex(c / 4, static_cast<int>(c % 4)), c};
+    sortByVertex(items, scratch, nv);
+    r.nonmanifold_boundary_vertices = sumOverGroups([&](std::size_t g, std::size_t h, std::vector<int>& others, std::vector<int>& parent) -> long {
+        others.clear();
+        for (std::size_t i = g; i < h; ++i) {
+            const long c = items[i].item;
+            others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 3));
+            others.push_back(loopVertex(c / 4, static_cast<int>(c % 4) + 1));
         }
+        std::sort(others.begin(), others.end());
+        others.erase(std::unique(others.begin(), others.end()), others.end());
+        parent.resize(others.size());
+        for (std::size_t q = 0; q < parent.size(); ++q) parent[q] = static_cast<int>(q);
+        auto find = [&](int x) {
+            while (parent[static_cast<std::size_t>(x)] != x) x = parent[static_cast<std::size_t>(x)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(x)])];
+            return x;
+        };
+        auto local = [&](int u) { return static_cast<int>(std::lower_bound(others.begin(), others.end(), u) - others.begin()); };
+        long components = static_cast<long>(others.size());
+        for (std::size_t i = g; i < h; ++i) {
+            const long c = items[i].item;
+            const int x = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 3)));
+            const int y = find(local(loopVertex(c / 4, static_cast<int>(c % 4) + 1)));
+            if (x != y) {
+                parent[static_cast<std::size_t>(x)] = y;
+                --components;
+            }
+        }
+        return components > 1 ? 1 : 0;
     });
-    r.nonmanifold_boundary_vertices = sumChunks();
     return r;
 }
 
