@@ -20,7 +20,7 @@ constexpr std::uint8_t kQueued = 1;     // on the work list
 constexpr std::uint8_t kTouched = 2;    // joined some vertex group (heirs)
 constexpr std::uint8_t kSaved = 4;      // links changed at least once; the originals are saved
 constexpr std::uint8_t kInCell = 8;     // scratch of countDefectiveHexCells()
-constexpr std::uint8_t kCellDone = 16;  // scratch of countDefectiveHexCells()
+constexpr std::uint8_t kCellDone = 16;  // scratch of countDefectiveHexCells(), then of collectHeirs()
 // The dart's sign and liveness, copied into the same byte so that a look at a neighbour reads
 // one array instead of three (sign, alive, flags); `alive` is still written for the callers.
 constexpr std::uint8_t kAlive = 32;     // mirrors alive[d]
@@ -524,19 +524,28 @@ void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const st
     auto wanted = [&](std::size_t d, int h, int lastDart, int lastHeir) {
         return !(lastDart >= 0 && h == lastHeir && same_place && same_place(lastDart, static_cast<int>(d)));
     };
+    // The first pass decides and counts (for an exact reserve), the second only collects. A
+    // removed dart that is not its group's root is read by no other dart (each reads its own
+    // entry and its root's), so the first pass leaves the heir in its entry; a root's entry
+    // holds -2 - heir already. kCellDone, free again (countDefectiveHexCells() clears it
+    // after each call), marks the darts wanted.
     std::size_t count = 0;
-    for (int pass = 0; pass < 2; ++pass) {  // count, then fill (exact reserve)
-        if (pass == 1) heirs.reserve(count);
-        int lastDart = -1, lastHeir = -1;
-        for (std::size_t d = 0; d < flag_.size(); ++d) {
-            if (!(flag_[d] & kTouched) || alive_[d]) continue;
-            const int h = heirOf(d);
-            if (h < 0 || !wanted(d, h, lastDart, lastHeir)) continue;
-            lastDart = static_cast<int>(d);
-            lastHeir = h;
-            if (pass == 0) ++count;
-            else heirs.emplace_back(static_cast<int>(d), h);
-        }
+    int lastDart = -1, lastHeir = -1;
+    for (std::size_t d = 0; d < flag_.size(); ++d) {
+        if (!(flag_[d] & kTouched) || alive_[d]) continue;
+        const int h = heirOf(d);
+        if (h < 0 || !wanted(d, h, lastDart, lastHeir)) continue;
+        lastDart = static_cast<int>(d);
+        lastHeir = h;
+        ++count;
+        flag_[d] |= kCellDone;
+        if (parent[d] >= 0) parent[d] = h;  // not a root: a root with an heir holds a negative code
+    }
+    heirs.reserve(count);
+    for (std::size_t d = 0; d < flag_.size(); ++d) {
+        if (!(flag_[d] & kCellDone)) continue;
+        flag_[d] &= static_cast<std::uint8_t>(~kCellDone);
+        heirs.emplace_back(static_cast<int>(d), parent[d] >= 0 ? parent[d] : -2 - parent[d]);
     }
 }
 
