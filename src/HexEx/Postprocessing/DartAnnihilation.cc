@@ -93,7 +93,12 @@ public:
 
     /// Phase by phase: first only partners linked by alpha_0, then alpha_0..1, alpha_0..2 and
     /// all four; in each phase every alive anti dart in ascending order, then the re-queued ones.
+    /// This run is the one kept on most heavy folds, so it joins the vertex groups at each
+    /// removal, while the pair's links are in the cache, instead of after the run: the same
+    /// groups (joinGroups() reads the same links either way: a removed dart's links never
+    /// change, not even by AnnihilationRetry::repair, which re-links alive darts only).
     void runPhased() {
+        if (wantHeirs_) joinNow_ = true;
         for (int phase = 0; phase < 4; ++phase) {
             maxLink_ = phase;
             run(&antis_);
