@@ -148,12 +148,11 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
     const std::size_t nc = csize.size();
-    // Per cell: its face and corner orbits with local numbers (0, 1, ... within the cell)
-    // and their sizes, kept in per-chunk lists in cell order.
+    // Per chunk of cells: its face and corner orbits numbered 0, 1, ... through the chunk
+    // (cell after cell) and their sizes, in cell order.
     struct Part {
         GMapValidation counts;
-        std::vector<int> fsize, ksize;     // sizes of the local orbits, cell after cell
-        std::vector<int> nf, nk;           // orbits per cell of the chunk
+        std::vector<int> fsize, ksize;     // sizes of the chunk's orbits, cell after cell
     };
     const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, nc / 4096)));
     std::vector<Part> parts(static_cast<std::size_t>(chunks));
@@ -174,10 +173,9 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
                     [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
                 if (m != 8) P.counts.eq5_strip += m;
             }
-            int nf = 0, nk = 0;
             for (const int* x = begin; x != end; ++x) {
                 if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-                const int f = nf++;
+                const int f = static_cast<int>(P.fsize.size());
                 face[static_cast<std::size_t>(*x)] = f;
                 const int m = walkAlternating(
                     *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
@@ -188,7 +186,7 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
             }
             for (const int* x = begin; x != end; ++x) {
                 if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-                const int q = nk++;
+                const int q = static_cast<int>(P.ksize.size());
                 corner[static_cast<std::size_t>(*x)] = q;
                 const int m = walkAlternating(
                     *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
@@ -197,19 +195,16 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
                 P.ksize.push_back(m);
                 if (m != 6) P.counts.eq4_corner += m;
             }
-            P.nf.push_back(nf);
-            P.nk.push_back(nk);
         }
     });
-    // Global numbers: local number + orbits of all earlier cells.
-    std::vector<int> fbase(nc + 1, 0), kbase(nc + 1, 0), fsize, ksize;
+    // Global numbers: the chunk's number + orbits of all earlier chunks (the same numbers as
+    // counting cell by cell; the first chunk's are final).
+    std::vector<int> fbase(parts.size(), 0), kbase(parts.size(), 0), fsize, ksize;
     {
-        std::size_t c = 0;
-        for (const Part& P : parts) {
-            for (std::size_t i = 0; i < P.nf.size(); ++i, ++c) {
-                fbase[c + 1] = fbase[c] + P.nf[i];
-                kbase[c + 1] = kbase[c] + P.nk[i];
-            }
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const Part& P = parts[k];
+            fbase[k] = static_cast<int>(fsize.size());
+            kbase[k] = static_cast<int>(ksize.size());
             fsize.insert(fsize.end(), P.fsize.begin(), P.fsize.end());
             ksize.insert(ksize.end(), P.ksize.begin(), P.ksize.end());
             v.eq3_quad += P.counts.eq3_quad;
@@ -218,13 +213,14 @@ void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, i
             v.eq6_hex += P.counts.eq6_hex;
         }
     }
-    parallelChunks(nc, chunks, [&](int, std::size_t cb, std::size_t ce) {
-        for (std::size_t c = cb; c < ce; ++c)
-            for (int q = coff[c]; q < coff[c + 1]; ++q) {
-                const auto x = static_cast<std::size_t>(cdarts[static_cast<std::size_t>(q)]);
-                face[x] += fbase[c];
-                corner[x] += kbase[c];
-            }
+    parallelChunks(nc, chunks, [&](int k, std::size_t cb, std::size_t ce) {
+        const int fb = fbase[static_cast<std::size_t>(k)], kb = kbase[static_cast<std::size_t>(k)];
+        if (fb == 0 && kb == 0) return;
+        for (int q = coff[cb]; q < coff[ce]; ++q) {
+            const auto x = static_cast<std::size_t>(cdarts[static_cast<std::size_t>(q)]);
+            face[x] += fb;
+            corner[x] += kb;
+        }
     });
     if (out) {
         out->cell = std::move(cell);
