@@ -30,6 +30,28 @@ int cornerOf(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
     return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
 }
 
+/// g^-1(p), the same doubles as g.inverse().apply(p): R^-1 is the transpose of R, so
+/// coordinate j of the result is sign(j) p[perm(j)] minus the integer sign(j) t[perm(j)].
+/// Reads at computed places and writes to fixed ones (no stores at computed places into a
+/// temporary that is read right after).
+Vec3d applyInverse(const GridTransform& g, const Vec3d& p) {
+    Vec3d r;
+    for (int j = 0; j < 3; ++j) {
+        const int i = g.R.perm(j), sign = g.R.sign(j);
+        r[j] = sign * p[i] + static_cast<double>(-(sign * g.t[i]));
+    }
+    return r;
+}
+
+/// Writes g(u) into @p out (not @p u itself): the same doubles as g.apply(u), each written
+/// once to its place.
+void applyInto(const GridTransform& g, const Vec3d& u, Vec3d& out) {
+    for (int j = 0; j < 3; ++j) {
+        const int i = g.R.perm(j);
+        out[i] = g.R.sign(j) * u[j] + g.t[i];
+    }
+}
+
 /// The common case, without the breadth-first walk: every face around @p v has the
 /// identity transition and every cell holds the same parameter for @p v. Then all copies
 /// get the same quantized value. Returns false (nothing changed) otherwise.
@@ -80,7 +102,7 @@ std::size_t voteSeed(const std::vector<int>& star, const std::vector<GridTransfo
     ref[0] = corner(0);
     bool all = true;
     for (std::size_t q = 1; q < n; ++q) {
-        ref[q] = toChart[q].inverse().apply(corner(q));
+        ref[q] = applyInverse(toChart[q], corner(q));
         all = all && sameValue(ref[0], ref[q], epsilon);
     }
     if (all) return 0;
@@ -136,7 +158,8 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                 mark[static_cast<std::size_t>(n)] = static_cast<int>(vi);
                 star.push_back(n);
                 slot.push_back(static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(n)), v)));
-                toChart.push_back(tr.halfface[hf.uidx()] * toChart[q]);
+                // Faces inside a chart (most of them) have the identity: nothing to compose.
+                toChart.push_back(tr.halfface.is_identity(hf.uidx()) ? toChart[q] : tr.halfface[hf.uidx()] * toChart[q]);
             }
         }
         auto corner = [&](std::size_t q) -> Vec3d& { return params[static_cast<std::size_t>(star[q])][slot[q]]; };
@@ -165,7 +188,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                               umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
         }
         quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
-        for (std::size_t q = 0; q < star.size(); ++q) corner(q) = toChart[q].apply(u);
+        for (std::size_t q = 0; q < star.size(); ++q) applyInto(toChart[q], u, corner(q));
         for (std::size_t k = firstRepair; k < list.size(); ++k)
             list[k].repaired = params[static_cast<std::size_t>(list[k].tet)][list[k].corner];
     }

@@ -67,9 +67,17 @@ FaceFit fitFace(const Vec3d u[3], const Vec3d w[3]) {
     return f;
 }
 
-/// Per-corner translations w_k - R u_k under rotation @p R.
+/// Per-corner translations w_k - R u_k under rotation @p R: the same doubles as
+/// w[k] - R.apply(u[k]), with coordinate i of R u read from the coordinate of u that R maps
+/// onto axis i (no stores at computed places into a vector that is read right after).
 void cornerResiduals(const Vec3d u[3], const Vec3d w[3], const Rotation& R, Vec3d d[3]) {
-    for (int k = 0; k < 3; ++k) d[k] = w[k] - R.apply(u[k]);
+    int from[3], sign[3];
+    for (int j = 0; j < 3; ++j) {
+        from[R.perm(j)] = j;
+        sign[R.perm(j)] = R.sign(j);
+    }
+    for (int k = 0; k < 3; ++k)
+        d[k] = Vec3d(w[k][0] - sign[0] * u[k][from[0]], w[k][1] - sign[1] * u[k][from[1]], w[k][2] - sign[2] * u[k][from[2]]);
 }
 
 /// Largest coordinate difference.
