@@ -25,16 +25,67 @@ bool quadKey(const std::vector<int>& label, const std::vector<DartHandle>& fd, s
     return m == 4 && fd.size() == 8;
 }
 
-/// Last pass for the cut quads @p left that found no partner (pig folded by 1.5, seed 21: a
-/// cell glued to itself by two of its own quads, whose four vertices stay one set because
-/// two quads of other cells, linked to each other, cross the same way and pass equation 2):
-/// the sewn quads with the same four vertices as a left quad are cut too, with the quads
-/// they were linked to, and all of them are paired once more by the vertices of the map as
-/// it is then. Kept only if every one of them finds its partner; otherwise every link is
-/// put back.
-template <class SewByVertices>
-void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts,
-                       const std::vector<std::size_t>& left, const SewByVertices& sewByVertices, FaceRelinkStats& st) {
+/// True if every alpha_i link (bit i of @p mask) of an alive dart is free or leads to an
+/// alive dart that links back. Then what a search along those links reaches from a dart
+/// (GMap::orbit(), or labelOrbits()'s search) is its whole orbit, the same from every dart
+/// of the orbit, and labelOrbits(g, mask) gives two darts the same label exactly when a
+/// search from one reaches the other. GMap::sew() and GMap::unsew(), the only changes of
+/// the relinking, keep this true.
+bool linksReturn(const GMap<3>& g, unsigned mask) {
+    const auto& L = g.links();
+    const std::size_t n = g.n_darts();
+    for (std::size_t d = 0; d < n; ++d) {
+        if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
+        for (int i = 0; i < 4; ++i) {
+            if (!(mask >> i & 1)) continue;
+            const int e = L[d][static_cast<std::size_t>(i)];
+            if (e == static_cast<int>(d)) continue;
+            if (e < 0 || static_cast<std::size_t>(e) >= n || !g.is_alive(DartHandle(e)) ||
+                L[static_cast<std::size_t>(e)][static_cast<std::size_t>(i)] != static_cast<int>(d))
+                return false;
+        }
+    }
+    return true;
+}
+
+/// Vertex labels (<alpha_1, alpha_2, alpha_3> orbits) for the quads @p quads of @p faceDarts:
+/// labelOrbits(g, 0b1110) unless @p returning (every link returns, linksReturn()); then only
+/// the orbits of those quads' darts are searched (-1 for every other dart). The quads are
+/// then paired by the same equalities of labels (a pairing uses nothing else of the values:
+/// pairs of quads with equal keys are sewn independently of each other, in any order), at the
+/// cost of the few vertices around the quads instead of a pass over the whole map.
+std::vector<int> quadVertexLabels(const GMap<3>& g, const std::vector<std::vector<DartHandle>>& faceDarts,
+                                  const std::vector<std::size_t>& quads, bool returning) {
+    if (!returning) return labelOrbits(g, 0b1110);
+    const auto& L = g.links();
+    const std::size_t n = g.n_darts();
+    std::vector<int> label(n, -1);
+    std::vector<int> stack;
+    int next = 0;
+    for (const std::size_t k : quads)
+        for (const DartHandle x : faceDarts[k]) {
+            if (!g.is_alive(x) || label[x.uidx()] >= 0) continue;
+            const int l = next++;
+            label[x.uidx()] = l;
+            stack.assign(1, x.idx());
+            while (!stack.empty()) {
+                const int d = stack.back();
+                stack.pop_back();
+                for (int i = 1; i < 4; ++i) {
+                    const int e = L[static_cast<std::size_t>(d)][static_cast<std::size_t>(i)];
+                    if (e < 0 || static_cast<std::size_t>(e) >= n || !g.is_alive(DartHandle(e)) || label[static_cast<std::size_t>(e)] >= 0) continue;
+                    label[static_cast<std::size_t>(e)] = l;
+                    stack.push_back(e);
+                }
+            }
+        }
+    return label;
+}
+
+/// relinkMergedQuads() with the labels of the whole map: appends the sewn quads with the same
+/// four vertices as a quad of @p left, and the quads they are linked to, to @p faceDarts;
+/// false if there is none.
+bool findMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts, const std::vector<std::size_t>& left) {
     int nVertices = 0, nFaces = 0;
     const std::vector<int> vertex = labelOrbits(g, 0b1110, &nVertices);
     std::set<std::array<int, 4>> keys;
@@ -45,7 +96,7 @@ void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDar
         keys.insert(key);
         for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
     }
-    if (keys.empty()) return;
+    if (keys.empty()) return false;
     const std::vector<int> face = labelOrbits(g, 0b0011, &nFaces);
     std::vector<char> seen(static_cast<std::size_t>(nFaces), 0);
     for (const auto& fd : faceDarts) seen[static_cast<std::size_t>(face[fd[0].uidx()])] = 1;
@@ -66,7 +117,55 @@ void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDar
             take(g.alpha(x, 3));  // the quad it was linked to
         }
     }
-    if (faceDarts.size() == firstNew) return;
+    return faceDarts.size() > firstNew;
+}
+
+/// findMergedQuads() where every link returns (linksReturn()): the same quads in the same
+/// order, with the orbits searched only around the quads of @p left. The vertices of their
+/// keys are whole orbits found from their darts; a quad with a dart elsewhere has a vertex
+/// that is in no key under either labelling, and a quad is "seen" by marks on its darts
+/// (its <alpha_0, alpha_1> orbit) instead of a face label.
+bool findMergedQuadsNear(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts, const std::vector<std::size_t>& left) {
+    const std::vector<int> vertex = quadVertexLabels(g, faceDarts, left, true);
+    std::set<std::array<int, 4>> keys;
+    int nLabels = 0;
+    for (const int v : vertex) nLabels = std::max(nLabels, v + 1);
+    std::vector<char> wanted(static_cast<std::size_t>(nLabels), 0);
+    for (const std::size_t k : left) {
+        std::array<int, 4> key{};
+        if (!quadKey(vertex, faceDarts[k], key)) continue;
+        keys.insert(key);
+        for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
+    }
+    if (keys.empty()) return false;
+    const std::size_t n = g.n_darts();
+    std::vector<char> seen(n, 0);
+    for (const auto& fd : faceDarts)
+        for (const DartHandle x : g.orbit(fd[0], 0b0011)) seen[x.uidx()] = 1;
+    const std::size_t firstNew = faceDarts.size();
+    auto take = [&](DartHandle d) {
+        if (seen[d.uidx()]) return;
+        faceDarts.push_back(g.orbit(d, 0b0011));
+        for (const DartHandle x : faceDarts.back()) seen[x.uidx()] = 1;
+    };
+    for (std::size_t d = 0; d < n; ++d) {
+        const DartHandle x(static_cast<int>(d));
+        if (vertex[d] < 0 || !wanted[static_cast<std::size_t>(vertex[d])] || !g.is_alive(x) || g.is_free(x, 3) || seen[d]) continue;
+        std::array<int, 4> key{};
+        const std::vector<DartHandle> fd = g.orbit(x, 0b0011);
+        if (quadKey(vertex, fd, key) && keys.count(key)) {
+            take(x);
+            take(g.alpha(x, 3));  // the quad it was linked to
+        }
+    }
+    return faceDarts.size() > firstNew;
+}
+
+/// The end of relinkMergedQuads(): cuts the quads from @p firstNew on and pairs them with
+/// those of @p left again; kept only if every one finds its partner, else every link is put back.
+template <class SewByVertices>
+void cutAndPairAgain(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts, const std::vector<std::size_t>& left,
+                     std::size_t firstNew, bool returning, const SewByVertices& sewByVertices, FaceRelinkStats& st) {
     // Cut them, remembering the links.
     std::vector<std::pair<DartHandle, DartHandle>> saved;
     for (std::size_t k = firstNew; k < faceDarts.size(); ++k)
@@ -76,7 +175,7 @@ void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDar
     std::vector<std::size_t> pool = left;
     for (std::size_t k = firstNew; k < faceDarts.size(); ++k) pool.push_back(k);
     const long relinkedBefore = st.relinked_faces;
-    const std::vector<std::size_t> open = sewByVertices(labelOrbits(g, 0b1110, &nVertices), pool);
+    const std::vector<std::size_t> open = sewByVertices(quadVertexLabels(g, faceDarts, pool, returning), pool);
     if (open.empty()) {
         st.inconsistent_faces += static_cast<long>(faceDarts.size() - firstNew);
         return;
@@ -86,6 +185,21 @@ void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDar
     for (const auto& [x, y] : saved)
         if (x != y) g.sew(x, y, 3);
     st.relinked_faces = relinkedBefore;
+}
+
+/// Last pass for the cut quads @p left that found no partner (pig folded by 1.5, seed 21: a
+/// cell glued to itself by two of its own quads, whose four vertices stay one set because
+/// two quads of other cells, linked to each other, cross the same way and pass equation 2):
+/// the sewn quads with the same four vertices as a left quad are cut too, with the quads
+/// they were linked to, and all of them are paired once more by the vertices of the map as
+/// it is then. Kept only if every one of them finds its partner; otherwise every link is
+/// put back. @p returning: every link returns (linksReturn()).
+template <class SewByVertices>
+void relinkMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts, const std::vector<std::size_t>& left,
+                       bool returning, const SewByVertices& sewByVertices, FaceRelinkStats& st) {
+    const std::size_t firstNew = faceDarts.size();
+    if (!(returning ? findMergedQuadsNear(g, faceDarts, left) : findMergedQuads(g, faceDarts, left))) return;
+    cutAndPairAgain(g, faceDarts, left, firstNew, returning, sewByVertices, st);
 }
 
 } // namespace
@@ -136,14 +250,17 @@ FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
     st.inconsistent_faces = static_cast<long>(cutFaces.size());
     // The vertices are taken with the inconsistent links: they join darts at one vertex
     // (the links cross quads, not vertices), and without them a vertex can fall apart.
-    int nVertices = 0;
-    const std::vector<int> vertex = labelOrbits(g, 0b1110, &nVertices);
+    // (The quads' <alpha_0, alpha_1> orbits do not depend on alpha_3: all are found first.)
     std::vector<std::vector<DartHandle>> faceDarts;
     faceDarts.reserve(cutFaces.size());
-    for (const int f : cutFaces) {
-        faceDarts.push_back(g.orbit(DartHandle(f), 0b0011));
-        for (const DartHandle x : faceDarts.back()) g.unsew(x, 3);
-    }
+    for (const int f : cutFaces) faceDarts.push_back(g.orbit(DartHandle(f), 0b0011));
+    std::vector<std::size_t> all(faceDarts.size());
+    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
+    // Whether every link returns is checked once: only sew() and unsew() change links from here on.
+    const bool returning = linksReturn(g, 0b1111);
+    const std::vector<int> vertex = quadVertexLabels(g, faceDarts, all, returning);
+    for (const auto& fd : faceDarts)
+        for (const DartHandle x : fd) g.unsew(x, 3);
     // Quads by their four vertices (sorted); only quads of 8 darts with 4 distinct vertices.
     // Returns the quads left without a partner.
     auto sewByVertices = [&](const std::vector<int>& label, const std::vector<std::size_t>& quads) {
@@ -187,14 +304,12 @@ FaceRelinkStats relinkInconsistentFaces(GMap<3>& g) {
             if (!sewn[k]) left.push_back(k);
         return left;
     };
-    std::vector<std::size_t> all(faceDarts.size());
-    for (std::size_t k = 0; k < all.size(); ++k) all[k] = k;
     const std::vector<std::size_t> left = sewByVertices(vertex, all);
     // Quads the crossed links left without a partner (their vertex labels, taken with those
     // links, merged two vertices, so several cut quads share one key): once more with the
     // vertices of the map as it is now (cut quads open, the others sewn), among those only.
-    const std::vector<std::size_t> left2 = left.empty() ? left : sewByVertices(labelOrbits(g, 0b1110, &nVertices), left);
-    if (!left2.empty()) relinkMergedQuads(g, faceDarts, left2, sewByVertices, st);
+    const std::vector<std::size_t> left2 = left.empty() ? left : sewByVertices(quadVertexLabels(g, faceDarts, left, returning), left);
+    if (!left2.empty()) relinkMergedQuads(g, faceDarts, left2, returning, sewByVertices, st);
     return st;
 }
 
