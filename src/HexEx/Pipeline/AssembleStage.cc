@@ -10,6 +10,9 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         // The orbit labels (about 20 bytes per dart) are freed before the mesh check.
         HexOrbitLabels labels;
         out.validation = validateHexGMap(*in.map, &labels, in.threads);
+        // With the darts grouped by cell (cell_offset), the assembly does not read the cell
+        // label per dart: it is freed first (4 bytes per dart).
+        if (!labels.cell_offset.empty()) std::vector<int>().swap(labels.cell);
         out.stats.violations = &out.validation;
         out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
                                    in.want_hex_darts ? &out.hex_darts : nullptr);
