@@ -153,7 +153,7 @@ TEST(OvmFaces, SharedFacesOrientationAndEdges) {
     for (const auto& l : in) loops.add(l.begin(), l.end());
     const OvmFaces f = buildOvmFaces(loops, 5, 1);
     // 0 1 2 3 is face 0; its reversal is halfface 1; a rotation keeps the direction; 2 1 0 3 reverses it.
-    EXPECT_EQ(f.halffaces, (std::vector<int>{0, 1, 0, 1, 2, 3}));
+    EXPECT_EQ(std::vector<int>(f.halffaces.begin(), f.halffaces.end()), (std::vector<int>{0, 1, 0, 1, 2, 3}));
     // Edges in order of first use: 0-1, 1-2, 2-3, 3-0 (face 0), then 1-4, 4-2 (face 1).
     ASSERT_EQ(f.edges.size(), 6u);
     EXPECT_EQ(f.edges[0], (std::array<int, 2>{{0, 1}}));

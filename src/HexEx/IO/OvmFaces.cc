@@ -40,7 +40,7 @@ std::size_t prefixSums(std::vector<std::size_t>& counts) {
 /// the first item of the bucket equal to item i (i itself if none), and flip[i] = dir(that, i).
 /// same/less compare bucket positions; less is a strict weak order consistent with same.
 template <class Same, class Less, class Dir>
-void firstInBucket(const int* ids, std::size_t n, std::vector<int>& first, std::vector<std::uint8_t>& flip,
+void firstInBucket(const int* ids, std::size_t n, DefaultInitVector<int>& first, std::vector<std::uint8_t>& flip,
                    std::vector<std::size_t>& scratch, Same same, Less less, Dir dir) {
     if (n <= kPairwiseLimit) {
         std::size_t reps[kPairwiseLimit];  // positions of the bucket's first items
@@ -102,7 +102,7 @@ struct LoopBuckets {
 };
 
 /// Finds the first equal loop of every loop (same vertex multiset) and its direction.
-void firstLoops(const IntLists& loops, int nVertices, int threads, std::vector<int>& first, std::vector<std::uint8_t>& flip) {
+void firstLoops(const IntLists& loops, int nVertices, int threads, DefaultInitVector<int>& first, std::vector<std::uint8_t>& flip) {
     const LoopBuckets lb(loops, nVertices);
     const std::size_t nb = static_cast<std::size_t>(nVertices);
     parallelChunks(nb, loops.size() >= kParallelItems ? threads : 1, [&](int, std::size_t b0, std::size_t b1) {
@@ -144,8 +144,8 @@ void firstLoops(const IntLists& loops, int nVertices, int threads, std::vector<i
 /// Finds the first equal occurrence of every edge occurrence of @p faces (a face = a loop of
 /// @p loops given by @p faceLoop, occurrence offsets[f] + j = its j-th vertex pair) and
 /// whether it runs the other way.
-void firstEdges(const IntLists& loops, const std::vector<int>& faceLoop, const std::vector<std::size_t>& offsets,
-                int nVertices, int threads, std::vector<int>& first, std::vector<std::uint8_t>& flip) {
+void firstEdges(const IntLists& loops, const std::vector<int>& faceLoop, const DefaultInitVector<std::size_t>& offsets,
+                int nVertices, int threads, DefaultInitVector<int>& first, std::vector<std::uint8_t>& flip) {
     const std::size_t nb = static_cast<std::size_t>(nVertices);
     // Entry: (larger vertex << 1 | runs downward) << 32 | occurrence, bucketed by the smaller vertex.
     std::vector<std::size_t> start(nb + 1, 0);
@@ -197,7 +197,7 @@ OvmFaces buildOvmFaces(const IntLists& loops, int nVertices, int threads) {
                                         std::to_string(nVertices) + ")");
     OvmFaces out;
     // Faces: number the loops' faces in order of first use; key[i] becomes the halfface of loop i.
-    std::vector<int> key(n);
+    DefaultInitVector<int> key(n, 0);
     std::vector<std::uint8_t> flip(n, 0);
     firstLoops(loops, nVertices, threads, key, flip);
     std::vector<int> faceLoop;  // per face its first loop
@@ -219,7 +219,7 @@ OvmFaces buildOvmFaces(const IntLists& loops, int nVertices, int threads) {
     fh.offsets[0] = 0;
     for (std::size_t f = 0; f < nf; ++f) fh.offsets[f + 1] = fh.offsets[f] + loops.length(static_cast<std::size_t>(faceLoop[f]));
     const std::size_t no = fh.offsets[nf];
-    std::vector<int> he(no);
+    DefaultInitVector<int> he(no, 0);
     flip.assign(no, 0);
     firstEdges(loops, faceLoop, fh.offsets, nVertices, threads, he, flip);
     // Number the edges in order of first use; he[o] becomes the halfedge of occurrence o.

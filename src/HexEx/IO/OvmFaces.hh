@@ -6,16 +6,24 @@
 /// stored once, with the orientation of its first occurrence; faces and edges are numbered
 /// in order of first use, as OpenVolumeMesh numbers them when cells are added.
 
+#include "../Core/DefaultInitAllocator.hh"
+
 #include <array>
 #include <cstddef>
 #include <vector>
 
 namespace HexEx {
 
+/// A std::vector whose resize() leaves new elements of trivial types uninitialized
+/// (DefaultInitAllocator): the large lists of the face numbering are sized without a
+/// serial zeroing pass and then filled, in parallel, by the threads that number them.
+template <class T>
+using DefaultInitVector = std::vector<T, DefaultInitAllocator<T>>;
+
 /// Integer lists stored back to back: list i is values[offsets[i]] .. values[offsets[i + 1] - 1].
 struct IntLists {
-    std::vector<std::size_t> offsets{0};  ///< start of every list, then the end of the last
-    std::vector<int> values;              ///< the lists' entries
+    DefaultInitVector<std::size_t> offsets{0};  ///< start of every list, then the end of the last
+    DefaultInitVector<int> values;              ///< the lists' entries
 
     /// Number of lists.
     std::size_t size() const { return offsets.size() - 1; }
@@ -40,7 +48,7 @@ struct IntLists {
 
 /// The faces and edges found by buildOvmFaces().
 struct OvmFaces {
-    std::vector<int> halffaces;             ///< per input loop its halfface (2f + orientation)
+    DefaultInitVector<int> halffaces;       ///< per input loop its halfface (2f + orientation)
     std::vector<std::array<int, 2>> edges;  ///< edge end points, in order of first use
     IntLists faceHalfedges;                 ///< per face its halfedges (2e + orientation)
 };

@@ -21,7 +21,13 @@
 #include <climits>
 #include <cstdint>
 #include <memory>
+#include <utility>
 #include <vector>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 namespace HexEx {
 
@@ -86,45 +92,94 @@ std::size_t prefix(std::vector<std::size_t>& counts) {
     return sum;
 }
 
-/// Records filed in buckets by a vertex, compressed-row: the records of vertex v are
-/// rec[start[v]] to rec[start[v + 1]] - 1.
-/// The records live in a buffer that the caller gives (the quads' and then the edges'
-/// buckets reuse one buffer: pages touched once, not twice).
-template <class Rec>
-struct VertexBuckets {
+/// Counts of items filed in buckets by a vertex, for compressed-row buckets: the bucket of
+/// vertex v is [start[v], start[v + 1]).
+struct BucketCount {
+    int perHex;              ///< items per hex
     std::vector<int> start;  ///< per vertex its first record (and the end)
-    Rec* rec;                ///< the records, grouped by vertex (in the caller's buffer)
-
-    /// Files @p perHex items of every hex of @p nHex: item i of hex h goes to the bucket of
-    /// vertex key(h, i) as make(h, i). Chunk c of @p vChunks owns a range of vertices, reads
-    /// all hexes (in order, which the prefetcher follows) and files the items of its vertices
-    /// only: no atomics, and a bucket holds its records in hex order for any thread count.
-    /// @p buffer must hold perHex * nHex records.
-    template <class Key, class Make>
-    VertexBuckets(void* buffer, std::size_t nHex, std::size_t nv, int vChunks, int perHex, Key&& key, Make&& make)
-        : start(nv + 1, 0), rec(static_cast<Rec*>(buffer)) {
-        parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
-            for (std::size_t h = 0; h < nHex; ++h)
-                for (int i = 0; i < perHex; ++i) {
-                    const std::size_t v = static_cast<std::size_t>(key(h, i));
-                    if (v >= v0 && v < v1) ++start[v + 1];
-                }
-        });
-        for (std::size_t v = 0; v < nv; ++v) start[v + 1] += start[v];
-        std::vector<int, DefaultInitAllocator<int>> pos(start.begin(), start.end() - 1);
-        parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
-            for (std::size_t h = 0; h < nHex; ++h)
-                for (int i = 0; i < perHex; ++i) {
-                    const std::size_t v = static_cast<std::size_t>(key(h, i));
-                    if (v >= v0 && v < v1) rec[static_cast<std::size_t>(pos[v]++)] = make(h, i);
-                }
-        });
-    }
-    /// The records of vertex @p v.
-    Rec* begin(std::size_t v) { return rec + start[v]; }
-    /// The end of the records of vertex @p v.
-    Rec* end(std::size_t v) { return rec + start[v + 1]; }
 };
+
+/// The smallest and the largest vertex of a hex.
+inline std::pair<int, int> vertexSpan(const std::array<int, 8>& hx) {
+    int lo = hx[0], hi = hx[0];
+    for (std::size_t k = 1; k < 8; ++k) {
+        lo = std::min(lo, hx[k]);
+        hi = std::max(hi, hx[k]);
+    }
+    return {lo, hi};
+}
+
+/// Calls item(h, i, v) for every item i of every hex h of @p hexes whose key v = key(h, i)
+/// is in [@p v0, @p v1), hexes in order. A hex none of whose vertices is in the range is
+/// skipped, one with all of them in it needs no test per item (the keys are hex vertices):
+/// with the vertex ranges of several threads each thread computes the keys of the hexes
+/// that touch its range only.
+template <class Key, class Item>
+void forItemsInRange(const std::vector<std::array<int, 8>>& hexes, int perHex, std::size_t v0, std::size_t v1, Key&& key,
+                     Item&& item) {
+    const std::size_t nHex = hexes.size();
+    for (std::size_t h = 0; h < nHex; ++h) {
+        const auto [lo, hi] = vertexSpan(hexes[h]);
+        const std::size_t l = static_cast<std::size_t>(lo), u = static_cast<std::size_t>(hi);
+        if (u < v0 || l >= v1) continue;
+        if (l >= v0 && u < v1) {
+            for (int i = 0; i < perHex; ++i) item(h, i, static_cast<std::size_t>(key(h, i)));
+        } else {
+            for (int i = 0; i < perHex; ++i) {
+                const std::size_t v = static_cast<std::size_t>(key(h, i));
+                if (v >= v0 && v < v1) item(h, i, v);
+            }
+        }
+    }
+}
+
+/// Counts the items of every hex of @p hexes for both @p a and @p b in one pass over the
+/// hexes (keys @p keyA and @p keyB, hex vertices). Chunk c of @p vChunks owns a range of
+/// vertices and reads the hexes in order (which the prefetcher follows): no atomics.
+template <class KeyA, class KeyB>
+void countBuckets(const std::vector<std::array<int, 8>>& hexes, std::size_t nv, int vChunks, BucketCount& a, KeyA&& keyA,
+                  BucketCount& b, KeyB&& keyB) {
+    a.start.assign(nv + 1, 0);
+    b.start.assign(nv + 1, 0);
+    parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+        forItemsInRange(hexes, a.perHex, v0, v1, keyA, [&](std::size_t, int, std::size_t v) { ++a.start[v + 1]; });
+        forItemsInRange(hexes, b.perHex, v0, v1, keyB, [&](std::size_t, int, std::size_t v) { ++b.start[v + 1]; });
+    });
+    for (std::size_t v = 0; v < nv; ++v) {
+        a.start[v + 1] += a.start[v];
+        b.start[v + 1] += b.start[v];
+    }
+}
+
+/// Files the items counted in @p count into @p rec (perHex records per hex, the caller's
+/// buffer): item i of hex h goes to the bucket of vertex key(h, i) as make(h, i). Chunk c of
+/// @p vChunks files the items of its vertex range only (a bucket holds its records in hex
+/// order for any thread count).
+template <class Rec, class Key, class Make>
+void fileRecords(Rec* rec, const BucketCount& count, const std::vector<std::array<int, 8>>& hexes, std::size_t nv,
+                 int vChunks, Key&& key, Make&& make) {
+    std::vector<int, DefaultInitAllocator<int>> pos(count.start.begin(), count.start.end() - 1);
+    parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+        forItemsInRange(hexes, count.perHex, v0, v1, key,
+                        [&](std::size_t h, int i, std::size_t v) { rec[static_cast<std::size_t>(pos[v]++)] = make(h, i); });
+    });
+}
+
+/// Gives the whole pages of the consumed records [@p b, @p e) back to the system (Linux; a
+/// no-op elsewhere): they are not read again before the buffer is freed, and the arrays that
+/// grow meanwhile then do not raise the peak memory.
+inline void releasePages(const void* b, const void* e) {
+#if defined(__linux__) && defined(MADV_DONTNEED)
+    static_assert(sizeof(std::uintptr_t) >= sizeof(void*), "pointer as integer");
+    const std::uintptr_t page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const std::uintptr_t lo = (reinterpret_cast<std::uintptr_t>(b) + page - 1) / page * page;
+    const std::uintptr_t hi = reinterpret_cast<std::uintptr_t>(e) / page * page;
+    if (hi > lo) madvise(reinterpret_cast<void*>(lo), hi - lo, MADV_DONTNEED);
+#else
+    (void)b;
+    (void)e;
+#endif
+}
 
 /// Sorts [@p b, @p e) by @p less: insertion sort for the usual few records, std::sort for
 /// large buckets.
@@ -150,19 +205,26 @@ inline int bitCount(std::uint32_t x) {
     return static_cast<int>((((x + (x >> 4)) & 0x0F0F0F0Fu) * 0x01010101u) >> 24);
 }
 
-/// Position of local edge @p e in its smaller quad kT.edgeFaces[e][0].
-int firstPosition(int e) {
-    const int i = kT.edgeFaces[e][0];
+/// Position of local edge @p e in quad @p i (one of kT.edgeFaces[e]).
+int positionIn(int i, int e) {
     int j = 0;
     while (kT.edgeAt[i][j] != e) ++j;
     return j;
 }
 
+/// Position of local edge @p e in its smaller quad kT.edgeFaces[e][0].
+int firstPosition(int e) { return positionIn(kT.edgeFaces[e][0], e); }
+
+/// Per hex, during the numbering (see ovmHexFaces()): bits 0-11 the edges it owns by rank,
+/// bits 12-23 whether each one's first occurrence starts at its smaller vertex, bits 24-29
+/// its first loops, bits 32-63 first its first face number, later its first edge number.
+constexpr int kFirstLoopShift = 24;
+
 } // namespace
 
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     const std::size_t nHex = mesh.hexes.size(), nLoops = 6 * nHex, nv = mesh.vertices.size();
-    // Halffaces fit in int, owner references (32 h + bit) in 32 bits.
+    // Halffaces fit in int, owner references (16 h + rank) in 31 bits.
     if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12) || nHex > (std::size_t(1) << 27)) return false;
     const int chunks = chunksFor(nHex, threads), vChunks = chunksFor(nv, threads);
     const auto loopVertex = [&](std::size_t l, int j) {
@@ -182,29 +244,40 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     // owned edges are numbered in that order, so each local edge gets its rank among them.
     int rankOf[12], rankPos[12];  // local edge -> rank; rank -> 4 i + j
     bool startsAtFirstEnd[12];    // the first occurrence runs from kEdges[e][0] to kEdges[e][1]
+    int slotOf[12][2];            // position of local edge e in quad kT.edgeFaces[e][k]
     for (int e = 0; e < 12; ++e) {
         const int pos = 4 * kT.edgeFaces[e][0] + firstPosition(e);
         rankOf[e] = 0;
         for (int f = 0; f < 12; ++f) rankOf[e] += 4 * kT.edgeFaces[f][0] + firstPosition(f) < pos ? 1 : 0;
         rankPos[rankOf[e]] = pos;
         startsAtFirstEnd[e] = kOvmHexFaces[pos / 4][pos % 4] == kEdges[e][0];
+        for (int k = 0; k < 2; ++k) slotOf[e][k] = positionIn(kT.edgeFaces[e][k], e);
     }
+
+    // The buckets of the quads (by their smallest vertex) and of the hex edges (by their
+    // smaller vertex), counted in one pass over the hexes.
+    const auto quadKey = [&](std::size_t h, int i) {
+        const auto& hx = mesh.hexes[h];
+        const int* q = kOvmHexFaces[i];
+        return std::min(std::min(hx[static_cast<std::size_t>(q[0])], hx[static_cast<std::size_t>(q[1])]),
+                        std::min(hx[static_cast<std::size_t>(q[2])], hx[static_cast<std::size_t>(q[3])]));
+    };
+    const auto edgeKey = [&](std::size_t h, int e) {
+        const auto& hx = mesh.hexes[h];
+        return std::min(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
+    };
+    BucketCount quadCount{6, {}}, edgeCount{12, {}};
+    countBuckets(mesh.hexes, nv, vChunks, quadCount, quadKey, edgeCount, edgeKey);
 
     // Quads: filed by their smallest vertex with their other three vertices sorted, matched in
     // each bucket by a sort (neighbour loop or -1; more than two equal quads: not covered).
-    std::vector<int> nb(nLoops);
+    DefaultInitVector<int> nb(nLoops);  // every entry written by the matching
     // One buffer for both kinds of records: 6 quads of 16 bytes or 12 edges of 8 bytes per hex.
     static_assert(sizeof(std::uint64_t) * 12 == 16 * 6, "records of a hex");
     std::unique_ptr<std::uint64_t[]> records(new std::uint64_t[12 * nHex]);  // not zeroed: every entry written
     {
         struct Quad {  // the other three vertices, sorted, and the loop
             int a, b, d, loop;
-        };
-        const auto quadKey = [&](std::size_t h, int i) {
-            const auto& hx = mesh.hexes[h];
-            const int* q = kOvmHexFaces[i];
-            return std::min(std::min(hx[static_cast<std::size_t>(q[0])], hx[static_cast<std::size_t>(q[1])]),
-                            std::min(hx[static_cast<std::size_t>(q[2])], hx[static_cast<std::size_t>(q[3])]));
         };
         const auto quadRec = [&](std::size_t h, int i) {
             const auto& hx = mesh.hexes[h];
@@ -220,14 +293,15 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             return Quad{x, y, z, static_cast<int>(6 * h) + i};
         };
         static_assert(sizeof(Quad) == 16, "quad record");
-        VertexBuckets<Quad> qb(records.get(), nHex, nv, vChunks, 6, quadKey, quadRec);
+        Quad* qb = reinterpret_cast<Quad*>(records.get());
+        fileRecords(qb, quadCount, mesh.hexes, nv, vChunks, quadKey, quadRec);
         const auto less = [](const Quad& p, const Quad& q) {
             return p.a != q.a ? p.a < q.a : p.b != q.b ? p.b < q.b : p.d < q.d;
         };
         parallelChunks(nv, vChunks, [&](int c, std::size_t v0, std::size_t v1) {
             for (std::size_t v = v0; v < v1; ++v) {
-                Quad* b = qb.begin(v);
-                Quad* e = qb.end(v);
+                Quad* b = qb + quadCount.start[v];
+                Quad* e = qb + quadCount.start[v + 1];
                 sortBucket(b, e, less);
                 for (Quad* x = b; x < e;) {
                     Quad* y = x + 1;
@@ -241,23 +315,68 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             }
         });
     }
+    quadCount.start = std::vector<int>();
     if (!allOk()) return false;
+
+    // Faces: a face's first loop is the smaller of its loops (no neighbour or a later one);
+    // faces are numbered in order of first loops (count per chunk, prefix, number), then every
+    // second loop gets its halfface. The halffaces overwrite the neighbour loops in place: a
+    // first loop's neighbour is not needed again, a second loop reads its own before. Per hex,
+    // info holds its first loops and its first face number (see kFirstLoopShift).
+    std::vector<std::uint64_t, DefaultInitAllocator<std::uint64_t>> info(nHex);  // every entry written
+    std::vector<std::size_t> faceBase(static_cast<std::size_t>(chunks), 0);
+    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
+        std::size_t n = 0;
+        for (std::size_t h = h0; h < h1; ++h) {
+            std::uint32_t mask = 0;
+            for (std::size_t i = 0; i < 6; ++i) {
+                const std::size_t l = 6 * h + i;
+                if (nb[l] < 0 || static_cast<std::size_t>(nb[l]) > l) mask |= 1u << i;
+            }
+            info[h] = static_cast<std::uint64_t>(mask) << kFirstLoopShift;
+            n += static_cast<std::size_t>(bitCount(mask));
+        }
+        faceBase[static_cast<std::size_t>(c)] = n;
+    });
+    const std::size_t nFaces = prefix(faceBase);
+    const auto firstLoops = [](std::uint64_t x) { return static_cast<std::uint32_t>(x >> kFirstLoopShift) & 0x3Fu; };
+    DefaultInitVector<int>& hf = out.halffaces;
+    hf = std::move(nb);
+    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
+        std::size_t f = faceBase[static_cast<std::size_t>(c)];
+        for (std::size_t h = h0; h < h1; ++h) {
+            info[h] |= static_cast<std::uint64_t>(f) << 32;  // f < 2^30
+            const std::uint32_t mask = firstLoops(info[h]);
+            for (std::size_t i = 0; i < 6; ++i)
+                if (mask >> i & 1u) hf[6 * h + i] = static_cast<int>(2 * f++);
+        }
+    });
+    parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+        for (std::size_t h = h0; h < h1; ++h) {
+            const std::uint32_t mask = firstLoops(info[h]);
+            for (std::size_t i = 0; i < 6; ++i) {
+                if (mask >> i & 1u) continue;
+                const std::size_t l = 6 * h + i;
+                const std::size_t s = static_cast<std::size_t>(hf[l]);  // still the neighbour loop
+                // 0 if loop l runs like its first loop s at l's first vertex, 1 if against it.
+                const int v0 = loopVertex(l, 0);
+                int k = 0;
+                while (k < 4 && loopVertex(s, k) != v0) ++k;
+                hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
+            }
+        }
+    });
 
     // Edges: every hex edge filed by its smaller vertex as (larger vertex, 2 (12 h + local
     // edge) + 1 if kEdges' first end is the smaller vertex); sorted, an edge's uses lie together
     // and its first is the smallest hex with it, the owner, whose smaller quad through it is the
-    // edge's first loop. Per hex, ownInfo holds the edges it owns (bit r for rank r), whether
-    // each one's first occurrence starts at its smaller vertex (bit 12 + r) and, from below, its
-    // first edge number (bits 32-63): the halfedges then need one look-up in the owner's
-    // entry. Every hex edge gets a reference to its owner (16 owner hex + rank), so that the
-    // halfedges can be filled hex by hex in face order.
-    std::vector<std::uint64_t> ownInfo(nHex, 0);
-    std::vector<std::uint32_t, DefaultInitAllocator<std::uint32_t>> ownerRef(12 * nHex);  // every entry written, no zeroing
+    // edge's first occurrence. The owner gets the edge's bit in its info (rank r: bit r, and
+    // bit 12 + r if the first occurrence starts at the smaller vertex); every use writes the
+    // owner reference (16 owner hex + rank) into the halfedge slots of its quads that are first
+    // loops (the face's halfedge list, in place), where the last pass turns it into the halfedge.
+    IntLists& fh = out.faceHalfedges;
+    fh.values.resize(4 * nFaces);
     {
-        const auto edgeKey = [&](std::size_t h, int e) {
-            const auto& hx = mesh.hexes[h];
-            return std::min(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
-        };
         const auto edgeRec = [&](std::size_t h, int e) {
             const auto& hx = mesh.hexes[h];
             const int u = std::max(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
@@ -265,111 +384,100 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             return static_cast<std::uint64_t>(u) << 32 |
                    static_cast<std::uint64_t>(2 * (12 * h + static_cast<std::size_t>(e)) + (firstSmaller ? 1 : 0));
         };
-        VertexBuckets<std::uint64_t> eb(records.get(), nHex, nv, vChunks, 12, edgeKey, edgeRec);
+        std::uint64_t* eb = records.get();
+        fileRecords(eb, edgeCount, mesh.hexes, nv, vChunks, edgeKey, edgeRec);
+        int* slots = fh.values.data();
         parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
+            // The records of this range are consumed in order; their pages go back to the system
+            // in steps of 8 MiB while fh.values fills (the pages at the range's ends stay).
+            constexpr std::size_t kReleaseStep = std::size_t(1) << 20;  // records of 8 bytes
+            std::uint64_t* released = eb + edgeCount.start[v0];
             for (std::size_t v = v0; v < v1; ++v) {
-                std::uint64_t* b = eb.begin(v);
-                std::uint64_t* e = eb.end(v);
+                std::uint64_t* b = eb + edgeCount.start[v];
+                std::uint64_t* e = eb + edgeCount.start[v + 1];
+                if (static_cast<std::size_t>(b - released) >= kReleaseStep) {
+                    releasePages(released, b);
+                    released = b;
+                }
                 sortBucket(b, e, [](std::uint64_t p, std::uint64_t q) { return p < q; });
                 for (std::uint64_t* x = b; x < e;) {
                     const std::uint32_t id = static_cast<std::uint32_t>(*x) >> 1;
                     const bool firstSmaller = (*x & 1u) != 0;
                     const std::uint32_t oh = id / 12, eo = id % 12, r = static_cast<std::uint32_t>(rankOf[eo]);
                     const bool startsSmaller = startsAtFirstEnd[eo] == firstSmaller;
-                    __atomic_fetch_or(&ownInfo[oh], (std::uint64_t(1) << r) | (std::uint64_t(startsSmaller ? 1 : 0) << (12 + r)),
+                    __atomic_fetch_or(&info[oh], (std::uint64_t(1) << r) | (std::uint64_t(startsSmaller ? 1 : 0) << (12 + r)),
                                       __ATOMIC_RELAXED);
-                    const std::uint32_t ref = 16u * oh + r;
+                    const int ref = static_cast<int>(16u * oh + r);
                     const std::uint64_t u = *x >> 32;
-                    for (; x < e && *x >> 32 == u; ++x) ownerRef[static_cast<std::uint32_t>(*x) >> 1] = ref;
+                    for (; x < e && *x >> 32 == u; ++x) {
+                        const std::uint32_t use = static_cast<std::uint32_t>(*x) >> 1, h = use / 12, le = use % 12;
+                        // Bits 24-63 of info are not changed while the edges are filed.
+                        const std::uint64_t hi = __atomic_load_n(&info[h], __ATOMIC_RELAXED);
+                        const std::uint32_t mask = firstLoops(hi);
+                        const std::size_t f = static_cast<std::size_t>(hi >> 32);
+                        for (int k = 0; k < 2; ++k) {
+                            const int i = kT.edgeFaces[le][k];
+                            if (mask >> i & 1u)
+                                slots[4 * (f + static_cast<std::size_t>(bitCount(mask & ((1u << i) - 1u)))) +
+                                      static_cast<std::size_t>(slotOf[le][k])] = ref;
+                        }
+                    }
                 }
             }
         });
     }
     records.reset();
+    edgeCount.start = std::vector<int>();
 
-    // Faces: number the first loops (no neighbour or a later one) in loop order, then give
-    // every second loop its halfface. The halffaces overwrite the neighbour loops in place:
-    // a first loop's neighbour is not needed again, a second loop reads its own before.
-    const auto first = [&](std::size_t l) { return nb[l] < 0 || static_cast<std::size_t>(nb[l]) > l; };
-    std::vector<std::size_t> base(static_cast<std::size_t>(chunks), 0);
-    std::vector<std::uint8_t> firstMask(nHex, 0);  // per hex: bit i if loop 6h + i is a first loop
+    // Edges: numbered in order of their first loop and position (count, prefix, rank; the
+    // first edge number replaces the first face number in info); then hex by hex, every owner
+    // writes its edges and every first loop turns its owner references into halfedges.
+    const auto ownedMask = [](std::uint64_t x) { return static_cast<std::uint32_t>(x & 0xFFFu); };
+    std::vector<std::size_t> edgeBase(static_cast<std::size_t>(chunks), 0);
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
-        for (std::size_t l = 6 * h0; l < 6 * h1; ++l)
-            if (first(l)) {
-                ++n;
-                firstMask[l / 6] = static_cast<std::uint8_t>(firstMask[l / 6] | 1u << (l % 6));
-            }
-        base[static_cast<std::size_t>(c)] = n;
+        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(ownedMask(info[h])));
+        edgeBase[static_cast<std::size_t>(c)] = n;
     });
-    const std::size_t nFaces = prefix(base);
-    const auto isFirst = [&](std::size_t l) { return (firstMask[l / 6] >> (l % 6) & 1u) != 0; };
-    std::vector<int>& hf = out.halffaces;
-    hf = std::move(nb);
-    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
-        std::size_t f = base[static_cast<std::size_t>(c)];
-        for (std::size_t l = 6 * h0; l < 6 * h1; ++l)
-            if (isFirst(l)) hf[l] = static_cast<int>(2 * f++);
-    });
-    parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
-        for (std::size_t l = 6 * h0; l < 6 * h1; ++l) {
-            if (isFirst(l)) continue;
-            const std::size_t s = static_cast<std::size_t>(hf[l]);  // still the neighbour loop
-            // 0 if loop l runs like its first loop s at l's first vertex, 1 if against it.
-            const int v0 = loopVertex(l, 0);
-            int k = 0;
-            while (k < 4 && loopVertex(s, k) != v0) ++k;
-            hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
-        }
-    });
-
-    // Edges: numbered in order of their first loop and position (count, prefix, rank); then
-    // hex by hex, every owner writes its edges and every first loop its halfedges (looked up
-    // through the owner references).
-    const auto ownedMask = [](std::uint64_t info) { return static_cast<std::uint32_t>(info & 0xFFFu); };
-    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
-        std::size_t n = 0;
-        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(ownedMask(ownInfo[h])));
-        base[static_cast<std::size_t>(c)] = n;
-    });
-    const std::size_t nEdges = prefix(base);
+    const std::size_t nEdges = prefix(edgeBase);
     if (nEdges > static_cast<std::size_t>(INT_MAX / 2)) return false;
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
-        std::size_t n = base[static_cast<std::size_t>(c)];
+        std::size_t n = edgeBase[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
-            const std::uint64_t info = ownInfo[h];
-            ownInfo[h] = info | static_cast<std::uint64_t>(n) << 32;  // n < INT_MAX / 2
-            n += static_cast<std::size_t>(bitCount(ownedMask(info)));
+            const std::uint64_t x = info[h];
+            info[h] = (x & 0xFFFFFFFFu) | static_cast<std::uint64_t>(n) << 32;  // n < INT_MAX / 2
+            n += static_cast<std::size_t>(bitCount(ownedMask(x)));
         }
     });
     out.edges.resize(nEdges);
-    IntLists& fh = out.faceHalfedges;
     fh.offsets.resize(nFaces + 1);
-    fh.values.resize(4 * nFaces);
     parallelChunks(nFaces + 1, chunksFor(nFaces, threads), [&](int, std::size_t f0, std::size_t f1) {
         for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
     });
-    parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
+        std::size_t f = faceBase[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
-            std::size_t id = static_cast<std::size_t>(ownInfo[h] >> 32);
-            for (std::uint32_t bits = ownedMask(ownInfo[h]); bits != 0; bits &= bits - 1) {
+            const std::uint64_t own = info[h];
+            std::size_t id = static_cast<std::size_t>(own >> 32);
+            for (std::uint32_t bits = ownedMask(own); bits != 0; bits &= bits - 1) {
                 const int pos = rankPos[__builtin_ctz(bits)], i = pos / 4, j = pos % 4;
                 const std::size_t l = 6 * h + static_cast<std::size_t>(i);
                 out.edges[id++] = {{loopVertex(l, j), loopVertex(l, j + 1)}};
             }
+            const std::uint32_t mask = firstLoops(own);
             for (int i = 0; i < 6; ++i) {
-                if (!(firstMask[h] >> i & 1u)) continue;
+                if (!(mask >> i & 1u)) continue;
                 const std::size_t l = 6 * h + static_cast<std::size_t>(i);
-                int* values = &fh.values[2 * static_cast<std::size_t>(hf[l])];
+                int* values = &fh.values[4 * f++];
                 for (int j = 0; j < 4; ++j) {
-                    const std::uint32_t ref = ownerRef[12 * h + static_cast<std::size_t>(kT.edgeAt[i][j])];
-                    const std::uint64_t info = ownInfo[ref / 16];
+                    const std::uint32_t ref = static_cast<std::uint32_t>(values[j]);
+                    const std::uint64_t x = info[ref / 16];
                     const std::uint32_t r = ref % 16;
-                    const std::size_t id = static_cast<std::size_t>(info >> 32) +
-                                           static_cast<std::size_t>(bitCount(ownedMask(info) & ((1u << r) - 1u)));
-                    const bool startsSmaller = (info >> (12 + r) & 1u) != 0;
+                    const std::size_t e = static_cast<std::size_t>(x >> 32) +
+                                          static_cast<std::size_t>(bitCount(ownedMask(x) & ((1u << r) - 1u)));
+                    const bool startsSmaller = (x >> (12 + r) & 1u) != 0;
                     const bool fromSmaller = loopVertex(l, j) < loopVertex(l, j + 1);
-                    values[j] = static_cast<int>(2 * id) + (fromSmaller == startsSmaller ? 0 : 1);
+                    values[j] = static_cast<int>(2 * e) + (fromSmaller == startsSmaller ? 0 : 1);
                 }
             }
         }
