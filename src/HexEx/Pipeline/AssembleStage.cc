@@ -11,11 +11,12 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         HexOrbitLabels labels;
         out.validation = validateHexGMap(*in.map, &labels, in.threads);
         // With the darts grouped by cell (cell_offset), the assembly does not read the cell
-        // label per dart: it is freed first (4 bytes per dart).
-        if (!labels.cell_offset.empty()) std::vector<int>().swap(labels.cell);
+        // label per dart: its array (4 bytes per dart) is reused for the vertex labels.
+        std::vector<int> storage;
+        if (!labels.cell_offset.empty()) storage.swap(labels.cell);
         out.stats.violations = &out.validation;
         out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
-                                   in.want_hex_darts ? &out.hex_darts : nullptr);
+                                   in.want_hex_darts ? &out.hex_darts : nullptr, &storage);
         out.stats.violations = nullptr;
     }
     if (out.stats.degenerate_faces > 0)

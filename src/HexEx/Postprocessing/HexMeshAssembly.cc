@@ -27,7 +27,7 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
 
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts) {
+                        const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts, std::vector<int>* label_storage) {
     HexMesh out;
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -39,6 +39,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     const long nocc = implicit ? implicit->n_occurrences : 0;
     int nv = 0;
     std::vector<int> vlabel;
+    if (label_storage) vlabel = std::move(*label_storage);
+    if (label_storage) label_storage->clear();
     // Implicit cells: per occurrence the union-find slot that ends up holding its label
     // (encoded as -2 - label), so the occurrences need no label array of their own.
     std::vector<int> occSlot;

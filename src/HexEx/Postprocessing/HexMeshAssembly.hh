@@ -63,7 +63,10 @@ struct ImplicitCells {
 /// @p threads lets independent labellings run side by side (the result does not depend on it).
 /// If @p hex_darts is given it receives, per hex built from darts (the hexes before the
 /// implicit cells), the dart at its corner 0 whose frame points to corners 1, 3 and 4.
+/// If @p label_storage is given, its memory is taken over for the per-dart vertex labels
+/// (e.g. a freed label array of the validator: pages already in use); it is left empty.
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit = nullptr, int threads = 1, std::vector<int>* hex_darts = nullptr);
+                        const ImplicitCells* implicit = nullptr, int threads = 1, std::vector<int>* hex_darts = nullptr,
+                        std::vector<int>* label_storage = nullptr);
 
 } // namespace HexEx
