@@ -33,6 +33,7 @@
 /// which a loaded machine distorts less than the wall times.
 
 #include "../TestSupport/LccTetFixtures.hh"
+#include "BenchClock.hh"
 
 #include <HexEx/Adapters/CgalLinearCellComplex.hh>
 #include <HexEx/Generators/Generators.hh>
@@ -55,6 +56,8 @@
 #include <string>
 #include <time.h>
 #include <utility>
+
+using HexExBench::cpuSeconds;
 
 namespace {
 
@@ -83,12 +86,6 @@ double since(std::chrono::steady_clock::time_point t0) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-/// CPU seconds of this process so far (all threads).
-double cpuNow() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
-}
 
 using HexExTestSupport::HexLcc;
 using HexExTestSupport::TetLcc;
@@ -119,21 +116,21 @@ Timings timeThroughTraits(MakeView makeView, Output& out) {
     const auto in = makeView();
     r.view = since(t0);
     const auto t1 = std::chrono::steady_clock::now();
-    const double c1 = cpuNow();
+    const double c1 = cpuSeconds();
     HexEx::ParametrizedTetMesh copyPm = HexEx::toParametrizedTetMesh(in);
     r.copy = since(t1);
-    const double c2 = cpuNow();
+    const double c2 = cpuSeconds();
     r.cpu_copy = c2 - c1;
     const auto t2 = std::chrono::steady_clock::now();
     HexEx::HexMesh hm;
     HexEx::extractHexMesh(copyPm, hm);
     r.extract = since(t2);
-    const double c3 = cpuNow();
+    const double c3 = cpuSeconds();
     r.cpu_extract = c3 - c2;
     const auto t3 = std::chrono::steady_clock::now();
     HexEx::fromHexMesh(hm, out);
     r.write = since(t3);
-    r.cpu_write = cpuNow() - c3;
+    r.cpu_write = cpuSeconds() - c3;
     r.total = since(t0);
     return r;
 }
@@ -147,24 +144,24 @@ template <class Read, class Write>
 Timings timeOneCall(Read read, Write write) {
     Timings r;
     const auto t0 = std::chrono::steady_clock::now();
-    const double c0 = cpuNow();
+    const double c0 = cpuSeconds();
     HexEx::HexMesh hm;
     double c3 = 0;
     {
         HexEx::ParametrizedTetMesh copyPm = read();
         r.copy = since(t0);
-        const double c2 = cpuNow();
+        const double c2 = cpuSeconds();
         r.cpu_copy = c2 - c0;
         const auto t2 = std::chrono::steady_clock::now();
         HexEx::extractHexMesh(std::move(copyPm), hm);  // parameters taken over, as in the overloads
         r.extract = since(t2);
-        c3 = cpuNow();
+        c3 = cpuSeconds();
         r.cpu_extract = c3 - c2;
     }
     const auto t3 = std::chrono::steady_clock::now();
     write(hm, r);
     r.write = since(t3);
-    r.cpu_write = cpuNow() - c3 - r.cpu_incidences;
+    r.cpu_write = cpuSeconds() - c3 - r.cpu_incidences;
     r.total = since(t0);
     return r;
 }
@@ -200,10 +197,10 @@ int main(int argc, char** argv) {
         inputMb = rssMb();
         // copy_s: the adjacency, which the traits path builds inside its copy.
         auto t0 = std::chrono::steady_clock::now();
-        const double c0 = cpuNow();
+        const double c0 = cpuSeconds();
         pm.mesh.build_adjacency();
         r.copy = since(t0);
-        const double c1 = cpuNow();
+        const double c1 = cpuSeconds();
         r.cpu_copy = c1 - c0;
         HexEx::HexMesh hm;
         HexEx::HexProvenance prov;
@@ -212,7 +209,7 @@ int main(int argc, char** argv) {
         auto t1 = std::chrono::steady_clock::now();
         HexEx::extractHexMesh(pm, hm, opt);
         r.extract = since(t1);
-        r.cpu_extract = cpuNow() - c1;
+        r.cpu_extract = cpuSeconds() - c1;
         r.total = since(t0);
         hexes = hm.hexes.size();
     } else if (path == "arrays") {
@@ -280,24 +277,24 @@ int main(int argc, char** argv) {
                 out.deferIncidences();
                 HexEx::fromHexMesh(hm, out);
                 hm = HexEx::HexMesh();
-                const double c0 = cpuNow();
+                const double c0 = cpuSeconds();
                 if (split) {
                     // restoreIncidences()'s order, kind by kind: the vertex lists, the edge
                     // lists (face incidences still off: no ordering), then the face
                     // incidences, with which OpenVolumeMesh orders the halffaces around
                     // every edge.
                     hexMesh.enable_vertex_bottom_up_incidences(true);
-                    const double c1 = cpuNow();
+                    const double c1 = cpuSeconds();
                     hexMesh.enable_edge_bottom_up_incidences(true);
-                    const double c2 = cpuNow();
+                    const double c2 = cpuSeconds();
                     hexMesh.enable_face_bottom_up_incidences(true);
-                    const double c3 = cpuNow();
+                    const double c3 = cpuSeconds();
                     t.cpu_inc_vertex = c1 - c0;
                     t.cpu_inc_edge = c2 - c1;
                     t.cpu_inc_face = c3 - c2;
                 }
                 out.restoreIncidences();  // with split: nothing left to do
-                if (split) t.cpu_incidences = cpuNow() - c0;
+                if (split) t.cpu_incidences = cpuSeconds() - c0;
             });
         hexes = hexMesh.n_cells();
 #endif

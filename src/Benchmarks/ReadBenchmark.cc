@@ -9,6 +9,8 @@
 /// Prints the smallest wall and the smallest CPU time of each step over the repetitions,
 /// and the mesh's counts (a check that two builds read the same mesh).
 
+#include "BenchClock.hh"
+
 #include <HexEx/IO/FileBytes.hh>
 #include <HexEx/IO/HexExFile.hh>
 #include <HexEx/Pipeline/PreprocessStage.hh>
@@ -20,30 +22,9 @@
 #include <ctime>
 #include <exception>
 
-namespace {
-
-/// CPU time of the process (all threads) in seconds.
-double cpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-/// Wall-clock seconds since an arbitrary start.
-double wallSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-/// Smallest wall and CPU time of one step.
-struct Best {
-    double wall = 1e300;  ///< smallest wall time
-    double cpu = 1e300;   ///< smallest CPU time
-    /// Offers one run that started at wall @p w0 and CPU @p c0.
-    void offer(double w0, double c0) {
-        wall = std::min(wall, wallSeconds() - w0);
-        cpu = std::min(cpu, cpuSeconds() - c0);
-    }
-};
-
-} // namespace
+using HexExBench::BestTime;
+using HexExBench::cpuSeconds;
+using HexExBench::wallSeconds;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -53,7 +34,7 @@ int main(int argc, char** argv) {
     const int threads = argc > 2 ? std::max(1, std::atoi(argv[2])) : 2;
     const int reps = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
     try {
-        Best read, pre;
+        BestTime read, pre;
         std::size_t nv = 0, nc = 0, ne = 0, nf = 0, nb = 0;
         long singular = 0;
         for (int r = 0; r < reps; ++r) {

@@ -8,6 +8,8 @@
 /// Prints, per stage, the smallest wall and the smallest CPU time over the repetitions
 /// (each minimum over all runs separately), and the same for the whole extraction.
 
+#include "BenchClock.hh"
+
 #include <HexEx/HexEx.hh>
 #include <HexEx/IO/HexExFile.hh>
 
@@ -21,25 +23,9 @@
 #include <string>
 #include <vector>
 
-namespace {
-
-/// CPU time of the process (all threads) in seconds.
-double cpuSeconds() {
-    timespec ts{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
-/// Wall-clock seconds since an arbitrary start.
-double wallSeconds() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-/// Wall and CPU seconds of one stage.
-struct Lap {
-    double wall = 1e300;  ///< smallest wall time
-    double cpu = 1e300;   ///< smallest CPU time
-};
-
-} // namespace
+using HexExBench::cpuSeconds;
+using HexExBench::wallSeconds;
+using Lap = HexExBench::BestTime;
 
 int main(int argc, char** argv) {
     if (argc < 2) {
@@ -60,9 +46,7 @@ int main(int argc, char** argv) {
                 const double w = wallSeconds(), c = cpuSeconds();
                 if (!phase.empty()) {
                     if (!laps.count(phase)) order.push_back(phase);
-                    Lap& l = laps[phase];
-                    l.wall = std::min(l.wall, w - w0);
-                    l.cpu = std::min(l.cpu, c - c0);
+                    laps[phase].offerLap(w - w0, c - c0);
                 }
                 phase = next;
                 w0 = w;
@@ -77,9 +61,7 @@ int main(int argc, char** argv) {
             HexEx::extractHexMesh(pm, out, opt);
             close("");
             if (!laps.count("total")) order.push_back("total");
-            Lap& t = laps["total"];
-            t.wall = std::min(t.wall, wallSeconds() - wStart);
-            t.cpu = std::min(t.cpu, cpuSeconds() - cStart);
+            laps["total"].offer(wStart, cStart);
         }
         std::printf("%-12s %9s %9s   (best of %d, %d threads, %s)\n", "stage", "wall_s", "cpu_s", reps, threads, argv[1]);
         for (const std::string& s : order)
