@@ -98,7 +98,12 @@ public:
     /// groups (joinGroups() reads the same links either way: a removed dart's links never
     /// change, not even by AnnihilationRetry::repair, which re-links alive darts only).
     void runPhased() {
-        if (wantHeirs_) joinNow_ = true;
+        if (wantHeirs_) {
+            joinNow_ = true;
+            // The list of pending pairs stays empty: give its room (one pair per anti dart,
+            // reserved by the first pass) to the union-find, which this run allocates.
+            std::vector<std::pair<int, int>>().swap(pending_);
+        }
         for (int phase = 0; phase < 4; ++phase) {
             maxLink_ = phase;
             run(&antis_);
