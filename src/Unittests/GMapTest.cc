@@ -1,5 +1,7 @@
 // Generalized map kernel (2D and 3D), the validator, and dart annihilation step by step.
 
+#include "../TestSupport/HexGMapFixtures.hh"
+
 #include <HexEx/Core/UnionFind.hh>
 #include <HexEx/GMap/GMap.hh>
 #include <HexEx/GMap/GMapValidator.hh>
@@ -33,34 +35,8 @@ GMap<2> makeQuad() {
     return g;
 }
 
-/// A single hexahedron as a 3D generalized map (48 darts), built from its 6 quads.
-GMap<3> makeHex() {
-    // Faces of a cube by corner ids, each a loop; darts: 8 per face (2 per edge).
-    static const int F[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
-    GMap<3> g;
-    g.add_darts(48);
-    // Dart (f, k, s): face f, edge k of the loop, s = 0 at the edge's first corner, 1 at its second.
-    auto id = [](int f, int k, int s) { return DartHandle(8 * f + 2 * k + s); };
-    for (int f = 0; f < 6; ++f)
-        for (int k = 0; k < 4; ++k) {
-            g.sew(id(f, k, 0), id(f, k, 1), 0);
-            g.sew(id(f, k, 1), id(f, (k + 1) % 4, 0), 1);
-        }
-    // alpha_2: the two darts of neighbouring faces at the same corner of the same edge.
-    for (int f = 0; f < 6; ++f)
-        for (int k = 0; k < 4; ++k)
-            for (int s = 0; s < 2; ++s) {
-                const int v = F[f][(k + s) % 4], w = F[f][(k + 1 - s) % 4];
-                for (int f2 = 0; f2 < 6; ++f2) {
-                    if (f2 == f) continue;
-                    for (int k2 = 0; k2 < 4; ++k2)
-                        for (int s2 = 0; s2 < 2; ++s2)
-                            if (F[f2][(k2 + s2) % 4] == v && F[f2][(k2 + 1 - s2) % 4] == w)
-                                g.link(id(f, k, s), id(f2, k2, s2), 2);
-                }
-            }
-    return g;
-}
+/// A single hexahedron as a 3D generalized map (48 darts; numbering in HexGMapFixtures.hh).
+GMap<3> makeHex() { return HexExTestSupport::makeHexGMaps(1); }
 } // namespace
 
 TEST(GMap, QuadOrbits2D) {

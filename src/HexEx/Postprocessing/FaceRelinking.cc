@@ -25,6 +25,20 @@ bool quadKey(const std::vector<int>& label, const std::vector<DartHandle>& fd, s
     return m == 4 && fd.size() == 8;
 }
 
+/// The keys (quadKey()) of the quads @p left of @p faceDarts under the vertex labels
+/// @p vertex into @p keys, and their vertices marked in @p wanted (one entry per label, all
+/// zero on entry); false if no quad of @p left has four vertices.
+bool leftQuadKeys(const std::vector<int>& vertex, const std::vector<std::vector<DartHandle>>& faceDarts,
+                  const std::vector<std::size_t>& left, std::set<std::array<int, 4>>& keys, std::vector<char>& wanted) {
+    for (const std::size_t k : left) {
+        std::array<int, 4> key{};
+        if (!quadKey(vertex, faceDarts[k], key)) continue;
+        keys.insert(key);
+        for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
+    }
+    return !keys.empty();
+}
+
 /// True if every alpha_i link (bit i of @p mask) of an alive dart is free or leads to an
 /// alive dart that links back. Then what a search along those links reaches from a dart
 /// (GMap::orbit(), or labelOrbits()'s search) is its whole orbit, the same from every dart
@@ -90,13 +104,7 @@ bool findMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts
     const std::vector<int> vertex = labelOrbits(g, 0b1110, &nVertices);
     std::set<std::array<int, 4>> keys;
     std::vector<char> wanted(static_cast<std::size_t>(nVertices), 0);
-    for (const std::size_t k : left) {
-        std::array<int, 4> key{};
-        if (!quadKey(vertex, faceDarts[k], key)) continue;
-        keys.insert(key);
-        for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
-    }
-    if (keys.empty()) return false;
+    if (!leftQuadKeys(vertex, faceDarts, left, keys, wanted)) return false;
     const std::vector<int> face = labelOrbits(g, 0b0011, &nFaces);
     std::vector<char> seen(static_cast<std::size_t>(nFaces), 0);
     for (const auto& fd : faceDarts) seen[static_cast<std::size_t>(face[fd[0].uidx()])] = 1;
@@ -131,13 +139,7 @@ bool findMergedQuadsNear(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceD
     int nLabels = 0;
     for (const int v : vertex) nLabels = std::max(nLabels, v + 1);
     std::vector<char> wanted(static_cast<std::size_t>(nLabels), 0);
-    for (const std::size_t k : left) {
-        std::array<int, 4> key{};
-        if (!quadKey(vertex, faceDarts[k], key)) continue;
-        keys.insert(key);
-        for (const int v : key) wanted[static_cast<std::size_t>(v)] = 1;
-    }
-    if (keys.empty()) return false;
+    if (!leftQuadKeys(vertex, faceDarts, left, keys, wanted)) return false;
     const std::size_t n = g.n_darts();
     std::vector<char> seen(n, 0);
     for (const auto& fd : faceDarts)
