@@ -96,6 +96,25 @@ std::vector<int> quadVertexLabels(const GMap<3>& g, const std::vector<std::vecto
     return label;
 }
 
+/// In dart order, every alive dart d with an alpha_3 link that @p skip(d) lets through and
+/// whose quad (<alpha_0, alpha_1> orbit) has one of @p keys under @p vertex (quadKey()):
+/// calls @p take on d and on the dart it is linked to (the quad it was linked to).
+template <class Skip, class Take>
+void takeKeyedQuads(GMap<3>& g, const std::vector<int>& vertex, const std::set<std::array<int, 4>>& keys, const Skip& skip,
+                    const Take& take) {
+    const std::size_t n = g.n_darts();
+    for (std::size_t d = 0; d < n; ++d) {
+        const DartHandle x(static_cast<int>(d));
+        if (!g.is_alive(x) || g.is_free(x, 3) || skip(d)) continue;
+        std::array<int, 4> key{};
+        const std::vector<DartHandle> fd = g.orbit(x, 0b0011);
+        if (quadKey(vertex, fd, key) && keys.count(key)) {
+            take(x);
+            take(g.alpha(x, 3));
+        }
+    }
+}
+
 /// relinkMergedQuads() with the labels of the whole map: appends the sewn quads with the same
 /// four vertices as a quad of @p left, and the quads they are linked to, to @p faceDarts;
 /// false if there is none.
@@ -114,17 +133,9 @@ bool findMergedQuads(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceDarts
         seen[static_cast<std::size_t>(face[d.uidx()])] = 1;
         faceDarts.push_back(g.orbit(d, 0b0011));
     };
-    const std::size_t n = g.n_darts();
-    for (std::size_t d = 0; d < n; ++d) {
-        const DartHandle x(static_cast<int>(d));
-        if (!g.is_alive(x) || g.is_free(x, 3) || !wanted[static_cast<std::size_t>(vertex[d])] || seen[static_cast<std::size_t>(face[d])]) continue;
-        std::array<int, 4> key{};
-        const std::vector<DartHandle> fd = g.orbit(x, 0b0011);
-        if (quadKey(vertex, fd, key) && keys.count(key)) {
-            take(x);
-            take(g.alpha(x, 3));  // the quad it was linked to
-        }
-    }
+    takeKeyedQuads(g, vertex, keys,
+                   [&](std::size_t d) { return !wanted[static_cast<std::size_t>(vertex[d])] || seen[static_cast<std::size_t>(face[d])]; },
+                   take);
     return faceDarts.size() > firstNew;
 }
 
@@ -150,16 +161,9 @@ bool findMergedQuadsNear(GMap<3>& g, std::vector<std::vector<DartHandle>>& faceD
         faceDarts.push_back(g.orbit(d, 0b0011));
         for (const DartHandle x : faceDarts.back()) seen[x.uidx()] = 1;
     };
-    for (std::size_t d = 0; d < n; ++d) {
-        const DartHandle x(static_cast<int>(d));
-        if (vertex[d] < 0 || !wanted[static_cast<std::size_t>(vertex[d])] || !g.is_alive(x) || g.is_free(x, 3) || seen[d]) continue;
-        std::array<int, 4> key{};
-        const std::vector<DartHandle> fd = g.orbit(x, 0b0011);
-        if (quadKey(vertex, fd, key) && keys.count(key)) {
-            take(x);
-            take(g.alpha(x, 3));  // the quad it was linked to
-        }
-    }
+    takeKeyedQuads(g, vertex, keys,
+                   [&](std::size_t d) { return vertex[d] < 0 || !wanted[static_cast<std::size_t>(vertex[d])] || seen[d]; },
+                   take);
     return faceDarts.size() > firstNew;
 }
 
