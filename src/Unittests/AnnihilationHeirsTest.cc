@@ -28,6 +28,21 @@ void sew(Links& a, int x, int y, int i) {
     a[static_cast<std::size_t>(y)][static_cast<std::size_t>(i)] = x;
 }
 
+/// What one annihilation run with a heirs list leaves.
+struct HeirsRun {
+    int pairs = 0;            ///< pairs removed
+    std::vector<char> alive;  ///< per dart: 1 if it survived
+    Heirs heirs;              ///< (removed dart, heir) pairs
+};
+
+/// Annihilates the darts of @p a (all alive at first) with signs @p sign, keeping the heirs.
+HeirsRun annihilateWithHeirs(Links& a, const std::vector<signed char>& sign) {
+    HeirsRun r;
+    r.alive.assign(sign.size(), 1);
+    r.pairs = static_cast<int>(annihilateDarts(a, sign, r.alive, &r.heirs).pairs);
+    return r;
+}
+
 } // namespace
 
 TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
@@ -42,12 +57,10 @@ TEST(AnnihilationHeirs, ChainOfTwoPairsLeavesOneGroupWithTheSmallestSurvivor) {
     sew(a, 3, 4, 0);
     sew(a, 4, 5, 1);
     const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
-    std::vector<char> alive(6, 1);
-    Heirs heirs;
-    const auto st = annihilateDarts(a, sign, alive, &heirs);
-    EXPECT_EQ(st.pairs, 2);
-    EXPECT_EQ(alive, (std::vector<char>{0, 0, 1, 0, 0, 1}));
-    EXPECT_EQ(heirs, (Heirs{{0, 2}, {1, 2}, {3, 2}, {4, 2}}));
+    const HeirsRun r = annihilateWithHeirs(a, sign);
+    EXPECT_EQ(r.pairs, 2);
+    EXPECT_EQ(r.alive, (std::vector<char>{0, 0, 1, 0, 0, 1}));
+    EXPECT_EQ(r.heirs, (Heirs{{0, 2}, {1, 2}, {3, 2}, {4, 2}}));
 }
 
 TEST(AnnihilationHeirs, SeparatePairsKeepSeparateHeirs) {
@@ -58,11 +71,9 @@ TEST(AnnihilationHeirs, SeparatePairsKeepSeparateHeirs) {
     sew(a, 3, 4, 0);
     sew(a, 4, 5, 3);
     const std::vector<signed char> sign = {1, -1, 1, 1, -1, 1};
-    std::vector<char> alive(6, 1);
-    Heirs heirs;
-    const auto st = annihilateDarts(a, sign, alive, &heirs);
-    EXPECT_EQ(st.pairs, 2);
-    EXPECT_EQ(heirs, (Heirs{{0, 2}, {1, 2}, {3, 5}, {4, 5}}));
+    const HeirsRun r = annihilateWithHeirs(a, sign);
+    EXPECT_EQ(r.pairs, 2);
+    EXPECT_EQ(r.heirs, (Heirs{{0, 2}, {1, 2}, {3, 5}, {4, 5}}));
 }
 
 TEST(AnnihilationHeirs, OneSidedLinkToARemovedDartStillGivesTheGroupsOfThatMoment) {
@@ -73,10 +84,8 @@ TEST(AnnihilationHeirs, OneSidedLinkToARemovedDartStillGivesTheGroupsOfThatMomen
     // group, survivor 4.
     Links a = {{1, 0, 0, 0}, {0, 1, 1, 1}, {3, 0, 2, 2}, {2, 4, 3, 3}, {4, 3, 4, 4}};
     const std::vector<signed char> sign = {1, -1, 1, -1, 1};
-    std::vector<char> alive(5, 1);
-    Heirs heirs;
-    const auto st = annihilateDarts(a, sign, alive, &heirs);
-    EXPECT_EQ(st.pairs, 2);
-    EXPECT_EQ(alive, (std::vector<char>{0, 0, 0, 0, 1}));
-    EXPECT_EQ(heirs, (Heirs{{0, 4}, {1, 4}, {2, 4}, {3, 4}}));
+    const HeirsRun r = annihilateWithHeirs(a, sign);
+    EXPECT_EQ(r.pairs, 2);
+    EXPECT_EQ(r.alive, (std::vector<char>{0, 0, 0, 0, 1}));
+    EXPECT_EQ(r.heirs, (Heirs{{0, 4}, {1, 4}, {2, 4}, {3, 4}}));
 }
