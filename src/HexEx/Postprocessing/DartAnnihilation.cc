@@ -59,9 +59,21 @@ public:
         for (const auto& b : blocks_)
             for (const T& e : b) f(e);
     }
+    /// Like forEach(), and calls @p ahead on the entry 16 places further on first (to fetch
+    /// what @p f will need for it).
+    template <class F, class P>
+    void forEachAhead(F&& f, P&& ahead) const {
+        const std::size_t n = blocks_.empty() ? 0 : (blocks_.size() - 1) * kBlock + blocks_.back().size();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (i + 16 < n) ahead(at(i + 16));
+            f(at(i));
+        }
+    }
 
 private:
     static constexpr std::size_t kBlock = std::size_t(1) << 16;
+    /// Entry @p i in the order of appending.
+    const T& at(std::size_t i) const { return blocks_[i / kBlock][i % kBlock]; }
     std::vector<std::vector<T>> blocks_;
 };
 
@@ -205,13 +217,22 @@ private:
     /// Only touched darts changed: every removed dart and every dart that joined a vertex
     /// group was touched, and each was alive then.
     void restoreAll() {
-        saved_.forEach([&](const Saved& e) {
-            const long d = e.first;
-            A(d) = e.second;
-            alive_[idx(d)] = 1;
-            F(d) = static_cast<std::uint8_t>((F(d) & ~(kQueued | kTouched)) | kAlive);
-            if (!sameVertex_.parent.empty()) sameVertex_.parent[idx(d)] = e.first;
-        });
+        // The darts are spread over the arrays: their entries are fetched 16 darts ahead.
+        const bool groups = !sameVertex_.parent.empty();
+        saved_.forEachAhead(
+            [&](const Saved& e) {
+                const long d = e.first;
+                A(d) = e.second;
+                alive_[idx(d)] = 1;
+                F(d) = static_cast<std::uint8_t>((F(d) & ~(kQueued | kTouched)) | kAlive);
+                if (groups) sameVertex_.parent[idx(d)] = e.first;
+            },
+            [&](const Saved& e) {
+                prefetch(&A(e.first));
+                prefetch(&F(e.first));
+                prefetch(&alive_[idx(e.first)]);
+                if (groups) prefetch(&sameVertex_.parent[idx(e.first)]);
+            });
         pending_.clear();
         joinNow_ = false;
         pairs = 0;
@@ -323,6 +344,7 @@ private:
     BlockList<Saved> saved_;  // (dart, original links), in order of first change
     int maxLink_ = 3;                                        // partners are looked for among alpha_0..alpha_maxLink_
     std::vector<int> antis_;                                 // anti darts alive before the first pass
+    std::vector<int> live_;                                  // run(): the alive anti darts of its order
     // Removed pairs (regular, anti) of the current run whose vertex groups are not joined yet
     // (joinGroups() at the end, collectHeirs()); joinNow_: the run joins at once (step()).
     std::vector<std::pair<int, int>> pending_;
@@ -405,7 +427,10 @@ void Annihilator::run(const std::vector<int>* order) {
     // returns it), and a dart re-queued on the way is behind the scan or not in the order.
     // So the dead ones (most of them in the later phases of runPhased()) are left out at
     // once instead of being skipped, with their links prefetched, one by one.
-    std::vector<int> live;
+    // The list's room is kept for the next run (up to six runs over the same anti darts:
+    // no fresh pages to clear each time).
+    std::vector<int>& live = live_;
+    live.clear();
     if (order) {
         live.reserve(order->size());
         for (int d : *order)
@@ -518,7 +543,11 @@ void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const st
     // compression every dart points at its root (the group's smallest dart, see
     // UnionFind::unite()), and a root with an heir holds -2 - heir.
     std::vector<int>& parent = sameVertex_.parent;
-    for (long d = 0; d < n_; ++d) parent[idx(d)] = sameVertex_.find(static_cast<int>(d));
+    // Only touched darts can be in a group with others (every dart that joined one was
+    // touched, and restoreAll() made the darts of undone runs singletons again), so the
+    // others keep parent[d] == d.
+    for (long d = 0; d < n_; ++d)
+        if (flag_[idx(d)] & kTouched) parent[idx(d)] = sameVertex_.find(static_cast<int>(d));
     auto rootOf = [&](std::size_t d) { return parent[d] < 0 ? d : static_cast<std::size_t>(parent[d]); };
     for (std::size_t d = 0; d < flag_.size(); ++d) {
         if (!(flag_[d] & kTouched) || !alive_[d]) continue;

@@ -1,35 +1,96 @@
 #include "LocalHexCheck.hh"
 
+#include "../Core/Prefetch.hh"
+
+#include <array>
 #include <cstddef>
+#include <cstdint>
 
 namespace HexEx {
 
 namespace {
 
-/// Checks one cell, whose darts are @p cell (all marked @p in_cell, all links 0..2 valid involutions).
+/// The darts of one 48-dart cell numbered 0..47 (their order in the cell list), and the
+/// cell's alpha_0..alpha_2 links in those numbers, so that the orbit checks walk a table of
+/// 144 bytes instead of the link array.
+class LocalCell {
+public:
+    /// Numbers @p cell (48 distinct darts, all links 0..2 inside the cell).
+    LocalCell(const std::vector<std::array<int, 4>>& alpha, const std::vector<int>& cell) {
+        key_.fill(-1);
+        for (std::size_t k = 0; k < cell.size(); ++k) {
+            unsigned s = slot(cell[k]);
+            while (key_[s] >= 0) s = (s + 1) & (kSlots - 1);
+            key_[s] = cell[k];
+            val_[s] = static_cast<std::uint8_t>(k);
+        }
+        for (std::size_t k = 0; k < cell.size(); ++k)
+            for (int i = 0; i < 3; ++i) link_[k][static_cast<std::size_t>(i)] = local(alpha[static_cast<std::size_t>(cell[k])][static_cast<std::size_t>(i)]);
+    }
+    /// alpha_i of local dart @p k, as a local dart.
+    int a(int k, int i) const { return link_[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)]; }
+
+private:
+    static constexpr unsigned kSlots = 128;
+    static unsigned slot(int d) { return (static_cast<std::uint32_t>(d) * 2654435761u) >> 25; }
+    /// The number of @p d, a dart of the cell.
+    std::uint8_t local(int d) const {
+        unsigned s = slot(d);
+        while (key_[s] != d) s = (s + 1) & (kSlots - 1);
+        return val_[s];
+    }
+    std::array<int, kSlots> key_;
+    std::array<std::uint8_t, kSlots> val_{};
+    std::array<std::array<std::uint8_t, 3>, 48> link_{};
+};
+
+/// Checks one cell, whose darts are @p cell (all marked @p in_cell, all links 0..2 valid
+/// involutions without fixed points inside the cell).
+///
+/// Equations 3-5 ask every dart's orbit under two alternating involutions to have a given
+/// length. Both maps are involutions without fixed points on the cell's darts (alpha_1
+/// alpha_2 alpha_1 too), so each orbit is a cycle whose links alternate between the two, and
+/// the alternating walk from any of its darts returns after the cycle's length: the length
+/// is the same for every dart of the orbit, and one walk per orbit decides for all of its
+/// darts what a walk from each of them would.
 bool cellIsHex(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, const std::vector<int>& cell,
                const std::vector<std::uint8_t>& mark, std::uint8_t in_cell) {
     if (cell.size() != 48) return false;
-    auto a = [&](int d, int i) { return alpha[static_cast<std::size_t>(d)][static_cast<std::size_t>(i)]; };
-    // Length of the orbit of d under alternately applying f and g (both involutions here).
-    auto orbit = [&](int d, auto f, auto g) {
-        int x = d, n = 0;
+    const LocalCell c(alpha, cell);
+    // Length of the orbit of local dart k under alternately f and g (at most 49); every
+    // dart passed is added to @p seen.
+    auto orbit = [&](int k, auto f, auto g, std::uint64_t& seen) {
+        int x = k, n = 0;
         do {
+            seen |= std::uint64_t(1) << x;
             x = (n % 2 == 0) ? f(x) : g(x);
             ++n;
-        } while (x != d && n <= 48);
+        } while (x != k && n <= 48);
         return n;
     };
-    auto a0 = [&](int x) { return a(x, 0); };
-    auto a1 = [&](int x) { return a(x, 1); };
-    auto a2 = [&](int x) { return a(x, 2); };
-    auto a121 = [&](int x) { return a(a(a(x, 1), 2), 1); };
+    auto a0 = [&](int x) { return c.a(x, 0); };
+    auto a1 = [&](int x) { return c.a(x, 1); };
+    auto a2 = [&](int x) { return c.a(x, 2); };
+    auto a121 = [&](int x) { return c.a(c.a(c.a(x, 1), 2), 1); };
+    std::uint64_t seen3 = 0, seen4 = 0, seen5 = 0;
+    for (int k = 0; k < 48; ++k) {
+        if (c.a(c.a(c.a(c.a(k, 0), 2), 0), 2) != k) return false;                         // eq1
+        if (!(seen3 >> k & 1) && orbit(k, a0, a1, seen3) != 8) return false;              // eq3
+        if (!(seen4 >> k & 1) && orbit(k, a1, a2, seen4) != 6) return false;              // eq4
+        if (!(seen5 >> k & 1) && orbit(k, a0, a121, seen5) != 8) return false;            // eq5
+    }
+    auto a = [&](int d, int i) { return alpha[static_cast<std::size_t>(d)][static_cast<std::size_t>(i)]; };
     auto usable = [&](int x) { return x >= 0 && alive[static_cast<std::size_t>(x)]; };
+    // The alpha_3 partners lie in other cells, elsewhere in the arrays: fetch them all at
+    // once instead of one miss after the other.
     for (int d : cell) {
-        if (a(a(a(a(d, 0), 2), 0), 2) != d) return false;   // eq1
-        if (orbit(d, a0, a1) != 8) return false;            // eq3
-        if (orbit(d, a1, a2) != 6) return false;            // eq4
-        if (orbit(d, a0, a121) != 8) return false;          // eq5
+        const int p = a(d, 3);
+        if (p >= 0) {
+            prefetch(&alpha[static_cast<std::size_t>(p)]);
+            prefetch(&alive[static_cast<std::size_t>(p)]);
+        }
+    }
+    for (int d : cell) {
         const int p = a(d, 3);
         if (p < 0 || p == d) continue;                      // boundary or unconnected
         if (!usable(p) || a(p, 3) != d) return false;
