@@ -75,11 +75,19 @@ int firstRotationalExit(const TetSoS& T, const int* cand, int n, AxisDir normal_
     return best;
 }
 
+/// Signs of the face functions of one tet at one grid point, as far as they are known: the
+/// rotational exit faces of every dart of a run (one tet, one grid point) need the same
+/// signs, so a run keeps them (exact signs: the same values as computing them again).
+struct PointSides {
+    std::array<int, 4> oz{};  ///< oz[j]: sign of o_j at the point, where bit j of #have is set
+    unsigned have = 0;        ///< bits 0..3: oz[j] known; bit 4: the corner test was done
+};
+
 /// Exit face (local index) of a non-degenerate tet for the trace of type i, or -1.
 /// For i == 0, @p tie (if given) is set when the choice depended on s.d[1] or s.d[2].
-/// For i > 0, @p known (if given) holds the signs of the four face functions at s.z
-/// (DartSet::pointSides()); otherwise they are computed.
-int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr, const std::array<int, 4>* known = nullptr) {
+/// For i > 0, @p known (if given) holds what is known of the signs of the four face
+/// functions at s.z (DartSet::pointSides()) and receives the ones computed here.
+int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullptr, PointSides* known = nullptr) {
     const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
     int cand[4], n = 0;
     if (i == 0) {
@@ -117,21 +125,21 @@ int exitFace(int i, const TetSoS& T, const Desc& s, int entry, bool* tie = nullp
     // A candidate face passes through z (o_j(z) = 0) and meets the gradient conditions of
     // the trace type; the conditions are tested first, the face functions only where they
     // hold (an alpha_3 trace usually has one such face, an alpha_2 trace two).
-    std::array<int, 4> oz{};
-    unsigned have = 0;  // bit j: oz[j] is known
+    PointSides local;
+    PointSides& ps = known ? *known : local;
+    std::array<int, 4>& oz = ps.oz;
     const Vec3d z = toVec3d(s.z);
-    if (known) {
-        oz = *known;
-        have = 0xF;
-    } else {
+    if ((ps.have & 0xF) != 0xF && !(ps.have & 0x10)) {
+        ps.have |= 0x10;
         for (int k = 0; k < 4; ++k)
             if (z == T.p[k]) {  // at a corner: every other face passes through z (TetSoS::sides())
                 oz = {0, 0, 0, 0};
                 oz[static_cast<std::size_t>(k)] = T.vol;
-                have = 0xF;
+                ps.have |= 0xF;
                 break;
             }
     }
+    unsigned& have = ps.have;
     for (int j = 0; j < 4; ++j) {
         if (j == entry) continue;
         const int g0 = T.g[j][dirAxis(d0)], g1 = T.g[j][dirAxis(d1)], g2 = T.g[j][dirAxis(d2)];
@@ -231,7 +239,11 @@ long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 
 /// The signs of the four face functions of tet @p t at @p z from its dense index's flags
 /// (as DartSet::pointSides()), if it has them and z lies in the closed image; else false.
-bool flaggedSides(const DartSet& set, int t, const TetSoS& T, const Vec3i& z, std::array<int, 4>& oz) {
+/// Only tried once per @p ps (bit 5 of PointSides::have), and not if the signs are known.
+bool flaggedSides(const DartSet& set, int t, const TetSoS& T, const Vec3i& z, PointSides& ps) {
+    if ((ps.have & 0xF) == 0xF || (ps.have & 0x20)) return false;
+    ps.have |= 0x20;
+    std::array<int, 4>& oz = ps.oz;
     const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
     if (slot < 0) return false;
     const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
@@ -239,6 +251,7 @@ bool flaggedSides(const DartSet& set, int t, const TetSoS& T, const Vec3i& z, st
     if (l < 0 || !(di.flags[static_cast<std::size_t>(l)] & 1)) return false;
     const unsigned fl = di.flags[static_cast<std::size_t>(l)];
     for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
+    ps.have |= 0xF;
     return true;
 }
 
@@ -251,8 +264,10 @@ constexpr int kNoDart = -1, kSeveralDarts = -2;
 
 /// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
 /// tet at the dart's grid point (kNoDart / kSeveralDarts), replacing the local scan.
+/// @p runSides, if given, holds what is known of the face signs of the dart's tet at its
+/// grid point (shared by the traces of a run; i > 0 only) and receives the ones computed.
 long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-              long dart, int i, long& steps, const int* run = nullptr) {
+              long dart, int i, long& steps, const int* run = nullptr, PointSides* runSides = nullptr) {
     const Dart& D = set.darts[static_cast<std::size_t>(dart)];
     int t = D.tet;
     int s = tets[static_cast<std::size_t>(t)].vol;
@@ -312,8 +327,12 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
         } else if (i == 0) {
             f = exitFace(0, T, start, entry);
         } else {  // the face signs at the pivot point, from the dense index's flags where it has them
-            std::array<int, 4> oz;
-            f = exitFace(i, T, start, entry, nullptr, flaggedSides(set, t, T, start.z, oz) ? &oz : nullptr);
+            // At step 0 the trace is in the dart's tet at the dart's point (i > 0 never
+            // passes cancelled points): the run's signs apply.
+            PointSides here;
+            PointSides& ps = step == 0 && runSides ? *runSides : here;
+            flaggedSides(set, t, T, start.z, ps);
+            f = exitFace(i, T, start, entry, nullptr, &ps);
         }
         if (f < 0) return kUnconnected;
         const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), f);
@@ -495,6 +514,15 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
 
 namespace {
 
+/// Links back into deferred partners waiting for their entry to arrive in the cache (a ring
+/// of the last kSize writes; the oldest is done when a new one comes).
+struct BackQueue {
+    static constexpr unsigned kSize = 8;  ///< writes in flight
+    int* slot[kSize];                     ///< the partner's entry
+    int mine[kSize];                      ///< the finder
+    unsigned n = 0;                       ///< writes queued since the last flush
+};
+
 /// Darts per block of the tracing passes (parallelBlocks()).
 constexpr std::size_t kTraceBlock = 4096;
 
@@ -555,10 +583,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     // pass in dart order after pass 1 would write first); a value below kUnconnected there
     // is kPending or its own implicit-cell answer, which a link back replaces (pass 2 would
     // not have traced it).
-    auto linkBack = [&](std::size_t d, int i, long p) {
-        if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) return;
-        int* slot = &alpha[static_cast<std::size_t>(p)][i];
-        const int mine = static_cast<int>(d);
+    auto writeBack = [&](int* slot, int mine) {
         if (workers == 1) {  // no other writer: a locked exchange would only stall the walks
             if (*slot < kUnconnected || *slot > mine) *slot = mine;
             return;
@@ -568,11 +593,29 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                !__atomic_compare_exchange_n(slot, &cur, mine, true, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
         }
     };
-    auto record = [&](TraceStats& st, std::size_t d, int i, long p) {
+    // The partner's entry is usually far away in the link array: the write is queued behind
+    // a prefetch and done a few links later (BackQueue). The result does not depend on the
+    // order of these writes: an entry ends as the smallest finder if any wrote it, else as
+    // its dart's implicit answer (written only over kPending), else kPending.
+    auto linkBack = [&](BackQueue& q, std::size_t d, int i, long p) {
+        if (p < 0 || static_cast<std::size_t>(p) == d || !deferred(static_cast<std::size_t>(p), i)) return;
+        int* slot = &alpha[static_cast<std::size_t>(p)][i];
+        __builtin_prefetch(slot, 1);
+        const unsigned at = q.n++ % BackQueue::kSize;
+        if (q.n > BackQueue::kSize) writeBack(q.slot[at], q.mine[at]);
+        q.slot[at] = slot;
+        q.mine[at] = static_cast<int>(d);
+    };
+    auto flushBacks = [&](BackQueue& q) {
+        const unsigned m = std::min(q.n, BackQueue::kSize);
+        for (unsigned x = 0; x < m; ++x) writeBack(q.slot[x], q.mine[x]);
+        q.n = 0;
+    };
+    auto record = [&](TraceStats& st, BackQueue& q, std::size_t d, int i, long p) {
         alpha[d][i] = static_cast<int>(p);
         if (p == kUnconnected) ++st.unconnected[i];
         else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
-        linkBack(d, i, p);
+        linkBack(q, d, i, p);
     };
     // Walks that pass cancelled fold points are traced per dart (traceOne() handles them).
     shareEdgeTraces = shareEdgeTraces && darts.n_cancelled == 0;
@@ -587,6 +630,8 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         std::array<int, kFrameCodes> run;
         run.fill(kNoDart);
         std::size_t runB = b, runE = b;
+        PointSides runSides;  // face signs of the run's tet at its point, as far as computed
+        BackQueue backs;
         // The current group for shared alpha_0 walks (traceEdgeGroup()): darts [groupB, groupE).
         std::size_t groupB = b, groupE = b;
         long groupLink[kMaxGroup], groupSteps[kMaxGroup];
@@ -595,6 +640,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
             if (d >= runE) {
                 for (std::size_t x = runB; x < runE; ++x) run[static_cast<std::size_t>(frameCode(D[x].d))] = kNoDart;
                 runB = d;
+                runSides = PointSides{};
                 while (runB > 0 && sameRun(runB - 1, d)) --runB;
                 runE = d + 1;
                 while (runE < n && sameRun(runE, d)) ++runE;
@@ -618,7 +664,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                     }
                     if (d < groupE) {
                         const std::size_t g = d - groupB;
-                        record(st, d, 0, groupLink[g]);
+                        record(st, backs, d, 0, groupLink[g]);
                         st.steps += groupSteps[g];
                         ++st.shared_alpha0;
                         st.split_alpha0 += groupSplit[g];
@@ -650,7 +696,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                     }
                     if (hit >= 0) {
                         alpha[d][i] = hit;
-                        linkBack(d, i, hit);
+                        linkBack(backs, d, i, hit);
                         continue;
                     }
                     if (implicit) {
@@ -658,19 +704,24 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         continue;
                     }
                 }
-                record(st, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data()));
+                record(st, backs, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data(), &runSides));
             }
         }
+        flushBacks(backs);
         part[static_cast<std::size_t>(k)] = st;
     });
     // Pass 2: the entries still pending (no link back came, no implicit answer).
     std::vector<TraceStats> part2(static_cast<std::size_t>(workers));
     parallelBlocks(n, workers, kTraceBlock, [&](int k, std::size_t b, std::size_t e) {
         TraceStats st = part2[static_cast<std::size_t>(k)];
+        PointSides runSides;  // of the run (tet, grid point) of dart `last`
+        std::size_t last = e;
         for (std::size_t d = b; d < e; ++d)
             for (int i = 0; i < 4; ++i)
                 if (alpha[d][i] == kPending) {
-                    const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps);
+                    if (last == e || !sameRun(last, d)) runSides = PointSides{};
+                    last = d;
+                    const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, nullptr, &runSides);
                     alpha[d][i] = static_cast<int>(p);
                     if (p == kUnconnected) ++st.unconnected[i];
                     else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
