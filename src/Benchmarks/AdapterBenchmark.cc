@@ -49,6 +49,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -79,6 +80,16 @@ double rssMb() {
     while (std::getline(in, line))
         if (line.rfind("VmRSS:", 0) == 0) return std::stod(line.substr(6)) / 1024.0;
     return -1;
+}
+
+/// With the environment variable HEXEX_BENCH_MARKS set, prints `mark NAME T` to stderr, T
+/// the CLOCK_MONOTONIC seconds of the steady clock: the stage boundaries for
+/// `perf record -k CLOCK_MONOTONIC` and `perf report --time T0,T1` (a profile of one stage).
+void mark(const char* name) {
+    static const bool on = std::getenv("HEXEX_BENCH_MARKS") != nullptr;
+    if (on)
+        std::fprintf(stderr, "mark %s %.6f\n", name,
+                     std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count());
 }
 
 /// Seconds since @p t0.
@@ -143,6 +154,7 @@ Timings timeThroughTraits(MakeView makeView, Output& out) {
 template <class Read, class Write>
 Timings timeOneCall(Read read, Write write) {
     Timings r;
+    mark("read");
     const auto t0 = std::chrono::steady_clock::now();
     const double c0 = cpuSeconds();
     HexEx::HexMesh hm;
@@ -150,6 +162,7 @@ Timings timeOneCall(Read read, Write write) {
     {
         HexEx::ParametrizedTetMesh copyPm = read();
         r.copy = since(t0);
+        mark("extract");
         const double c2 = cpuSeconds();
         r.cpu_copy = c2 - c0;
         const auto t2 = std::chrono::steady_clock::now();
@@ -158,9 +171,11 @@ Timings timeOneCall(Read read, Write write) {
         c3 = cpuSeconds();
         r.cpu_extract = c3 - c2;
     }
+    mark("write");
     const auto t3 = std::chrono::steady_clock::now();
     write(hm, r);
     r.write = since(t3);
+    mark("end");
     r.cpu_write = cpuSeconds() - c3 - r.cpu_incidences;
     r.total = since(t0);
     return r;
@@ -196,6 +211,7 @@ int main(int argc, char** argv) {
     if (path == "builtin" || path == "builtin-provenance") {
         inputMb = rssMb();
         // copy_s: the adjacency, which the traits path builds inside its copy.
+        mark("read");
         auto t0 = std::chrono::steady_clock::now();
         const double c0 = cpuSeconds();
         pm.mesh.build_adjacency();
@@ -206,9 +222,11 @@ int main(int argc, char** argv) {
         HexEx::HexProvenance prov;
         HexEx::ExtractionOptions opt;
         if (path == "builtin-provenance") opt.provenance = &prov;
+        mark("extract");
         auto t1 = std::chrono::steady_clock::now();
         HexEx::extractHexMesh(pm, hm, opt);
         r.extract = since(t1);
+        mark("end");
         r.cpu_extract = cpuSeconds() - c1;
         r.total = since(t0);
         hexes = hm.hexes.size();

@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <memory>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -36,22 +37,19 @@ bool ovmFaceLoop(const Mesh& mesh, const OpenVolumeMesh::FaceHandle& f, OpenVolu
     return true;
 }
 
-template <class Mesh>
-void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
-                   std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite) {
+/// Corners of cell @p c (halffaces @p hfs) from the loops of its four halffaces
+/// (@p loops[k]: the vertices of halfface hfs[k] in its own orientation): the core of
+/// ovmTetCorners(), which reads the loops from the mesh, and of the table-driven read of
+/// ovmToParametrizedTetMesh(). Throws InputError naming @p c if the loops do not span a
+/// tetrahedron.
+inline void ovmCornersFromLoops(std::size_t c, const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs,
+                                const OpenVolumeMesh::VertexHandle (&loops)[4][3],
+                                std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
+                                std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite) {
     using VH = OpenVolumeMesh::VertexHandle;
-    const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs =
-        mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(c))).halffaces();
     const auto fail = [c](const std::string& why) {
         throw InputError("OpenVolumeMesh cell " + std::to_string(c) + why);
     };
-    if (hfs.size() != 4) fail(" has " + std::to_string(hfs.size()) + " halffaces, not a tetrahedron");
-    VH loops[4][3];
-    for (std::size_t k = 0; k < 4; ++k) {
-        // The face's halfedges run along its halfface 0; halfface 1 is the reversed loop.
-        if (!ovmFaceLoop(mesh, hfs[k].face_handle(), loops[k])) fail(" has a halfface that is not a triangle");
-        if (hfs[k].idx() & 1) std::swap(loops[k][1], loops[k][2]);
-    }
     // q: the first loop, then the first other vertex met; mask[k]: which of q are in loop k.
     VH q[4] = {loops[0][0], loops[0][1], loops[0][2], VH()};
     unsigned mask[4] = {0, 0, 0, 0};
@@ -83,40 +81,64 @@ void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::V
     }
 }
 
-/// Asks the processor to start loading what ovmTetCorners() will read for cell @p c, one
-/// level of OpenVolumeMesh's indirections per @p stage: 0 the cell's halfface list, 1 its
-/// faces, 2 their halfedge lists, 3 the edges. A hint only (no effect on results); called
-/// ahead of the cells being read, it overlaps the cache misses of consecutive cells.
 template <class Mesh>
-void ovmPrefetchCell(const Mesh& mesh, std::size_t c, int stage) {
-#if defined(__GNUC__)
+void ovmTetCorners(const Mesh& mesh, std::size_t c, std::array<OpenVolumeMesh::VertexHandle, 4>& cv,
+                   std::array<OpenVolumeMesh::HalfFaceHandle, 4>& opposite) {
+    using VH = OpenVolumeMesh::VertexHandle;
     const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs =
         mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(c))).halffaces();
-    if (stage == 0) {
-        __builtin_prefetch(hfs.data());
-        return;
+    if (hfs.size() != 4)
+        throw InputError("OpenVolumeMesh cell " + std::to_string(c) + " has " + std::to_string(hfs.size()) +
+                         " halffaces, not a tetrahedron");
+    VH loops[4][3];
+    for (std::size_t k = 0; k < 4; ++k) {
+        // The face's halfedges run along its halfface 0; halfface 1 is the reversed loop.
+        if (!ovmFaceLoop(mesh, hfs[k].face_handle(), loops[k]))
+            throw InputError("OpenVolumeMesh cell " + std::to_string(c) + " has a halfface that is not a triangle");
+        if (hfs[k].idx() & 1) std::swap(loops[k][1], loops[k][2]);
     }
-    for (const OpenVolumeMesh::HalfFaceHandle& hf : hfs) {
-        const auto& face = mesh.face(hf.face_handle());
-        if (stage == 1) {
-            __builtin_prefetch(&face);
-        } else if (stage == 2) {
-            __builtin_prefetch(face.halfedges().data());
-        } else {
-            for (const OpenVolumeMesh::HalfEdgeHandle& he : face.halfedges()) __builtin_prefetch(&mesh.edge(he.edge_handle()));
-        }
-    }
-#else
-    (void)mesh;
-    (void)c;
-    (void)stage;
-#endif
+    ovmCornersFromLoops(c, hfs, loops, cv, opposite);
 }
+
+/// The vertex loop of every face of @p mesh along its halfface 0, read once per face (a
+/// face is shared by two cells) on @p threads threads: entry f holds face f's three vertex
+/// indices, or -1 in all three if the face is not a triangle.
+template <class Mesh>
+std::unique_ptr<std::array<int, 3>[]> ovmFaceLoopTable(const Mesh& mesh, int threads) {
+    const std::size_t nf = mesh.n_faces();
+    std::unique_ptr<std::array<int, 3>[]> table(new std::array<int, 3>[nf]);  // not zeroed: every entry is written
+    parallelChunks(nf, threads, [&](int, std::size_t b, std::size_t e) {
+        constexpr std::size_t kAhead = 8;  // the halfedge lists of the faces ahead, then their edges
+        const auto faceAt = [&](std::size_t f) -> const auto& { return mesh.face(OpenVolumeMesh::FaceHandle(static_cast<int>(f))); };
+        OpenVolumeMesh::VertexHandle loop[3];
+        for (std::size_t f = b; f < e; ++f) {
+#if defined(__GNUC__)
+            if (f + 2 * kAhead < e) __builtin_prefetch(faceAt(f + 2 * kAhead).halfedges().data());
+            if (f + kAhead < e)
+                for (const OpenVolumeMesh::HalfEdgeHandle& he : faceAt(f + kAhead).halfedges())
+                    __builtin_prefetch(&mesh.edge(he.edge_handle()));
+#endif
+            if (ovmFaceLoop(mesh, OpenVolumeMesh::FaceHandle(static_cast<int>(f)), loop))
+                table[f] = {loop[0].idx(), loop[1].idx(), loop[2].idx()};
+            else
+                table[f] = {-1, -1, -1};
+        }
+    });
+    return table;
+}
+
+/// Cells per block of the parallel read (ovmToParametrizedTetMesh()): the signed volume is
+/// summed per block and the block sums in block order, so the orientation test rounds the
+/// same for any thread count.
+constexpr std::size_t kOvmReadBlock = std::size_t(1) << 14;
 
 /// Copies the tets of @p mesh into the built-in kernel, corners as OvmTetMesh reads them, the
 /// parameter of corner `v` opposite halfface `hf` of cell `c` being `paramOf(hf, c, v)`
 /// (indexable by 0..2), and builds the adjacency with @p threads threads. With @p given,
-/// fills @p givenOut with its value per built-in halfface (4 c + corner).
+/// fills @p givenOut with its value per built-in halfface (4 c + corner). The cells are read
+/// on @p threads threads (0 = all hardware threads) in contiguous ranges, each writing its
+/// own cells' slots (OpenVolumeMesh's const accessors and properties only read), so the
+/// copy is the same for any thread count; the error of the first bad cell is reported.
 template <class Mesh, class ParamOf>
 ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf, int threads,
                                              const OpenVolumeMesh::HalfFacePropertyT<int>* given = nullptr,
@@ -128,57 +150,102 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     if (nv > kMax || nc > kMax)
         throw InputError("mesh too large: " + std::to_string(nv) + " vertices, " + std::to_string(nc) +
                          " tets (at most " + std::to_string(kMax) + " each)");
-    // Filled once each (reserve + push_back, no zeroing pass) and moved into the kernel.
-    std::vector<Vec3d> positions;
-    std::vector<std::array<VertexHandle, 4>> cells;
+    // Sized once (Vec3d's constructor leaves the parameters and positions untouched; the
+    // corner handles are filled with -1), written in parallel, moved into the kernel.
+    std::vector<Vec3d> positions(nv);
+    std::vector<std::array<VertexHandle, 4>> cells(nc);
     ParametrizedTetMesh pm;
-    positions.reserve(nv);
-    cells.reserve(nc);
-    pm.params.reserve(nc);
+    pm.params.resize(nc);
     if (given) givenOut->assign(4 * nc, 0);
-    for (std::size_t v = 0; v < nv; ++v) {
-        const auto& p = mesh.vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
-        positions.emplace_back(p[0], p[1], p[2]);
-    }
-    std::array<OpenVolumeMesh::VertexHandle, 4> cv;
-    std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
-    std::array<VertexHandle, 4> h;
-    std::array<Vec3d, 4> u;
-    double volume = 0;
-    // Cells are read in order; the records of the next cells are requested ahead, one
-    // indirection level per distance (see ovmPrefetchCell()).
-    constexpr std::size_t kAhead[4] = {16, 12, 8, 4};
-    for (std::size_t c = 0; c < nc; ++c) {
-        for (int stage = 0; stage < 4; ++stage)
-            if (c + kAhead[stage] < nc) ovmPrefetchCell(mesh, c + kAhead[stage], stage);
-        ovmTetCorners(mesh, c, cv, opposite);
-        const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
-        for (std::size_t i = 0; i < 4; ++i) {
-            h[i] = VertexHandle(cv[i].idx());
-            const auto& ui = paramOf(opposite[i], ch, cv[i]);
-            u[i] = Vec3d(ui[0], ui[1], ui[2]);
-            if (given) {
-                const int r = (*given)[opposite[i]];
-                const bool interior = mesh.incident_cell(mesh.opposite_halfface_handle(opposite[i])).is_valid();
-                if (interior && (r < 0 || r > 23))
-                    throw InputError("OpenVolumeMesh halfface " + std::to_string(opposite[i].idx()) + ": given rotation " +
-                                     std::to_string(r) + " is not a rotation index (0..23)");
-                (*givenOut)[4 * c + i] = interior ? r : 0;
+    const int nThreads = nc < 2 * kOvmReadBlock ? 1 : resolveThreadCount(threads);
+    parallelChunks(nv, nThreads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t v = b; v < e; ++v) {
+            const auto& p = mesh.vertex(OpenVolumeMesh::VertexHandle(static_cast<int>(v)));
+            positions[v] = Vec3d(p[0], p[1], p[2]);
+        }
+    });
+    // Each face's loop is read once (OpenVolumeMesh keeps it as halfedges with stored edge
+    // endpoints, three indirections), then every cell looks its four up.
+    std::unique_ptr<std::array<int, 3>[]> loopTable = ovmFaceLoopTable(mesh, nThreads);
+    const std::array<int, 3>* const loopOf = loopTable.get();
+    const std::size_t nBlocks = (nc + kOvmReadBlock - 1) / kOvmReadBlock;
+    std::vector<double> blockVolume(nBlocks, 0.0);
+    parallelChunks(nBlocks, nThreads, [&](int, std::size_t bBegin, std::size_t bEnd) {
+        std::array<OpenVolumeMesh::VertexHandle, 4> cv;
+        std::array<OpenVolumeMesh::HalfFaceHandle, 4> opposite;
+        std::array<VertexHandle, 4> h;
+        OpenVolumeMesh::VertexHandle loops[4][3];
+        // Cells are read in order; the halfface list of a cell ahead is requested, and the
+        // loop entries and parameters of the one half as far ahead.
+        constexpr std::size_t kAhead = 8;
+        const std::size_t c0 = bBegin * kOvmReadBlock, cEnd = std::min(nc, bEnd * kOvmReadBlock);
+        const auto prefetchAhead = [&](std::size_t a) {
+#if defined(__GNUC__)
+            __builtin_prefetch(mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(a))).halffaces().data());
+            if (a >= kAhead / 2 + c0)
+                for (const OpenVolumeMesh::HalfFaceHandle& hf :
+                     mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(a - kAhead / 2))).halffaces())
+                    __builtin_prefetch(&loopOf[static_cast<std::size_t>(hf.face_handle().idx())]);
+#else
+            (void)a;
+#endif
+        };
+        for (std::size_t block = bBegin; block < bEnd; ++block) {
+            double volume = 0;
+            const std::size_t blockEnd = std::min(nc, (block + 1) * kOvmReadBlock);
+            for (std::size_t c = block * kOvmReadBlock; c < blockEnd; ++c) {
+                if (c + kAhead < cEnd) prefetchAhead(c + kAhead);
+                const std::vector<OpenVolumeMesh::HalfFaceHandle>& hfs =
+                    mesh.cell(OpenVolumeMesh::CellHandle(static_cast<int>(c))).halffaces();
+                if (hfs.size() != 4)
+                    throw InputError("OpenVolumeMesh cell " + std::to_string(c) + " has " + std::to_string(hfs.size()) +
+                                     " halffaces, not a tetrahedron");
+                for (std::size_t k = 0; k < 4; ++k) {
+                    const std::array<int, 3>& l = loopOf[static_cast<std::size_t>(hfs[k].face_handle().idx())];
+                    if (l[0] < 0)
+                        throw InputError("OpenVolumeMesh cell " + std::to_string(c) + " has a halfface that is not a triangle");
+                    const bool reversed = hfs[k].idx() & 1;  // halfface 1 is the reversed loop
+                    loops[k][0] = OpenVolumeMesh::VertexHandle(l[0]);
+                    loops[k][1] = OpenVolumeMesh::VertexHandle(l[reversed ? 2 : 1]);
+                    loops[k][2] = OpenVolumeMesh::VertexHandle(l[reversed ? 1 : 2]);
+                }
+                ovmCornersFromLoops(c, hfs, loops, cv, opposite);
+                const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
+                std::array<Vec3d, 4>& u = pm.params[c];
+                for (std::size_t i = 0; i < 4; ++i) {
+                    h[i] = VertexHandle(cv[i].idx());
+                    const auto& ui = paramOf(opposite[i], ch, cv[i]);
+                    u[i] = Vec3d(ui[0], ui[1], ui[2]);
+                    if (given) {
+                        const int r = (*given)[opposite[i]];
+                        const bool interior = mesh.incident_cell(mesh.opposite_halfface_handle(opposite[i])).is_valid();
+                        if (interior && (r < 0 || r > 23))
+                            throw InputError("OpenVolumeMesh halfface " + std::to_string(opposite[i].idx()) +
+                                             ": given rotation " + std::to_string(r) + " is not a rotation index (0..23)");
+                        (*givenOut)[4 * c + i] = interior ? r : 0;
+                    }
+                }
+                cells[c] = h;
+                const Vec3d& a = positions[h[0].uidx()];
+                const Vec3d e1 = positions[h[1].uidx()] - a, e2 = positions[h[2].uidx()] - a,
+                            e3 = positions[h[3].uidx()] - a;
+                volume += e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+                          e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
             }
+            blockVolume[block] = volume;
         }
-        pm.params.push_back(u);
-        const Vec3d& a = positions[h[0].uidx()];
-        const Vec3d e1 = positions[h[1].uidx()] - a, e2 = positions[h[2].uidx()] - a, e3 = positions[h[3].uidx()] - a;
-        volume += e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
-                  e1[2] * (e2[0] * e3[1] - e2[1] * e3[0]);
-        cells.push_back(h);
-    }
+    });
+    loopTable.reset();  // freed before the adjacency is built
+    double volume = 0;
+    for (const double v : blockVolume) volume += v;
     if (volume < 0)  // stored with outward halffaces: turn every tet the other way
-        for (std::size_t c = 0; c < nc; ++c) {
-            std::swap(cells[c][1], cells[c][2]);
-            std::swap(pm.params[c][1], pm.params[c][2]);
-            if (given) std::swap((*givenOut)[4 * c + 1], (*givenOut)[4 * c + 2]);
-        }
+        parallelChunks(nc, nThreads, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t c = b; c < e; ++c) {
+                std::swap(cells[c][1], cells[c][2]);
+                std::swap(pm.params[c][1], pm.params[c][2]);
+                if (given) std::swap((*givenOut)[4 * c + 1], (*givenOut)[4 * c + 2]);
+            }
+        });
     pm.mesh.assign(std::move(positions), std::move(cells));
     pm.mesh.build_adjacency(threads);
     return pm;
