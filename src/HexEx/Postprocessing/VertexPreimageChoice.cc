@@ -13,6 +13,28 @@ namespace HexEx {
 namespace {
 /// Clusters with at most this many candidate combinations are searched exhaustively.
 constexpr double kMaxCombinations = 65536;
+
+/// In @p q[1..], sorted ascending and holding @p old, replaces one entry equal to @p old by
+/// @p now and keeps the list sorted; adjusts @p q[0], minus the number of entries <= 0.
+/// The list is then the sorted list of the new values (up to the order of -0.0 and 0.0,
+/// which compare equal; no NaN may be involved).
+void replaceSorted(std::vector<double>& q, double old, double now) {
+    if (old <= 0) q[0] += 1.0;
+    if (now <= 0) q[0] -= 1.0;
+    const auto b = q.begin() + 1, e = q.end();
+    const auto it = std::lower_bound(b, e, old);
+    if (now > old) {
+        const auto j = std::upper_bound(it + 1, e, now);
+        std::move(it + 1, j, it);
+        *(j - 1) = now;
+    } else if (now < old) {
+        const auto j = std::upper_bound(b, it, now);
+        std::move_backward(j, it, it + 1);
+        *j = now;
+    } else {
+        *it = now;
+    }
+}
 } // namespace
 
 double minScaledJacobian(const HexMesh& mesh, const std::array<int, 8>& h) {
@@ -120,25 +142,47 @@ long chooseVertexPreimages(HexMesh& mesh, const VertexCandidates& candidates) {
                 }
                 std::vector<double> value(hexes.size());
                 for (std::size_t h = 0; h < hexes.size(); ++h) value[h] = minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(hexes[h])]);
+                // The sorted list of a combination is kept up to date from the previous
+                // one: the values of the hexes of the members that changed replace their
+                // old values in it (the same list as sorting all values again, up to the
+                // order of -0.0 and 0.0, which no comparison tells apart). With a NaN among
+                // the values, each combination's list is sorted anew, as before.
                 std::vector<double> bestQ, q(hexes.size() + 1);
-                for (bool more = true; more;) {
+                bool noNaN = true;
+                auto sortAll = [&]() {
                     q[0] = 0;
                     for (std::size_t h = 0; h < hexes.size(); ++h) {
                         q[h + 1] = value[h];
                         if (value[h] <= 0) q[0] -= 1.0;
                     }
                     std::sort(q.begin() + 1, q.end());
+                };
+                for (double v : value) noNaN = noNaN && !std::isnan(v);
+                sortAll();
+                // Members with one candidate wrap back to it at every step: their positions
+                // and hex values do not change, so the counter skips them.
+                std::vector<std::size_t> varying;
+                for (std::size_t m = 0; m < cl.size(); ++m)
+                    if (count[m] > 1) varying.push_back(m);
+                for (bool more = true; more;) {
+                    if (!noNaN) sortAll();
                     if (bestQ.empty() || q > bestQ) {
                         bestQ = q;
                         best = pick;
                     }
                     more = false;
-                    for (std::size_t m = cl.size(); m-- > 0;) {
+                    for (std::size_t v = varying.size(); v-- > 0;) {
+                        const std::size_t m = varying[v];
                         const bool wrapped = ++pick[m] >= count[m];
                         if (wrapped) pick[m] = 0;
                         setPos(cl[m], pick[m]);
-                        for (int h : memberHexes[m])
-                            value[static_cast<std::size_t>(h)] = minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(hexes[static_cast<std::size_t>(h)])]);
+                        for (int h : memberHexes[m]) {
+                            double& val = value[static_cast<std::size_t>(h)];
+                            const double now = minScaledJacobian(mesh, mesh.hexes[static_cast<std::size_t>(hexes[static_cast<std::size_t>(h)])]);
+                            if (std::isnan(now)) noNaN = false;
+                            if (noNaN) replaceSorted(q, val, now);
+                            val = now;
+                        }
                         if (!wrapped) {
                             more = true;
                             break;
