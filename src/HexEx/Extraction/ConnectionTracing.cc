@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdint>
 #include <limits>
 #include <string>
 #include "../Predicates/ExactPredicates.hh"
@@ -21,17 +22,38 @@ struct Desc {
     std::array<AxisDir, 3> d;
 };
 
-Desc alphaStar(int i, const Desc& s) {
-    switch (i) {
-        case 0: return {s.z + dirVec(s.d[0]), {dirNeg(s.d[0]), s.d[1], s.d[2]}};
-        case 1: return {s.z, {s.d[1], s.d[0], s.d[2]}};
-        case 2: return {s.z, {s.d[0], s.d[2], s.d[1]}};
-        default: return {s.z, {s.d[0], s.d[1], dirNeg(s.d[2])}};
-    }
+// The walks below write their descriptions field by field and read them field by field:
+// a vector stored in pieces (or at a computed index, as Rotation::apply() and dirVec() do)
+// and then loaded whole stalls the store forwarding, which was the hottest spot of a trace.
+
+/// @p z one step along direction @p d, per component.
+Vec3i stepAlong(const Vec3i& z, AxisDir d) {
+    const int a = dirAxis(d), u = dirSign(d);
+    return Vec3i(z[0] + (a == 0 ? u : 0), z[1] + (a == 1 ? u : 0), z[2] + (a == 2 ? u : 0));
 }
 
-Desc transform(const GridTransform& g, const Desc& s) {
-    return {g.apply(s.z), {g.applyDir(s.d[0]), g.applyDir(s.d[1]), g.applyDir(s.d[2])}};
+/// g.apply(z), each component gathered from the rotation's axis images.
+Vec3i applyToPoint(const GridTransform& g, const Vec3i& z) {
+    const AxisDir* img = detail::kRotationImages.img[g.R.index()];
+    const int v0 = (img[0] & 1) ? -z[0] : z[0], v1 = (img[1] & 1) ? -z[1] : z[1], v2 = (img[2] & 1) ? -z[2] : z[2];
+    const int a0 = img[0] >> 1, a1 = img[1] >> 1;
+    auto pick = [&](int m) { return a0 == m ? v0 : a1 == m ? v1 : v2; };
+    return Vec3i(pick(0) + g.t[0], pick(1) + g.t[1], pick(2) + g.t[2]);
+}
+
+/// out = alpha_i*(s), the expected partner's description (@p out is not @p s).
+void setAlphaStar(int i, const Desc& s, Desc& out) {
+    const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
+    out.z = i == 0 ? stepAlong(s.z, d0) : s.z;
+    out.d[0] = i == 0 ? dirNeg(d0) : i == 1 ? d1 : d0;
+    out.d[1] = i == 1 ? d0 : i == 2 ? d2 : d1;
+    out.d[2] = i == 2 ? d1 : i == 3 ? dirNeg(d2) : d2;
+}
+
+/// s = g(s), in place.
+void transformDesc(const GridTransform& g, Desc& s) {
+    s.z = applyToPoint(g, s.z);
+    for (int k = 0; k < 3; ++k) s.d[static_cast<std::size_t>(k)] = g.applyDir(s.d[static_cast<std::size_t>(k)]);
 }
 
 int signOf(double x) { return (x > 0) - (x < 0); }
@@ -240,11 +262,11 @@ long encodeImplicitPartner(long occurrence) { return -2 - occurrence; }
 /// The signs of the four face functions of tet @p t at @p z from its dense index's flags
 /// (as DartSet::pointSides()), if it has them and z lies in the closed image; else false.
 /// Only tried once per @p ps (bit 5 of PointSides::have), and not if the signs are known.
-bool flaggedSides(const DartSet& set, int t, const TetSoS& T, const Vec3i& z, PointSides& ps) {
+/// @p slot is the tet's DartSet::dense_slot entry.
+bool flaggedSides(const DartSet& set, int slot, const TetSoS& T, const Vec3i& z, PointSides& ps) {
     if ((ps.have & 0xF) == 0xF || (ps.have & 0x20)) return false;
     ps.have |= 0x20;
     std::array<int, 4>& oz = ps.oz;
-    const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
     if (slot < 0) return false;
     const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
     const long l = di.flags.empty() ? -1 : di.local(z);
@@ -262,41 +284,94 @@ int frameCode(const std::array<AxisDir, 3>& d) { return (d[0] * 6 + d[1]) * 6 + 
 /// Entries of a run table (see traceOne()): no dart with that frame, or several.
 constexpr int kNoDart = -1, kSeveralDarts = -2;
 
+/// What a trace needs of a tet before it knows whether it goes on from there: the range of
+/// its darts, its dense index and its volume sign, in one record (DartSet::tet_begin,
+/// DartSet::dense_slot and TetSoS::vol are three arrays: three cache misses per tet entered).
+struct TetDarts {
+    std::uint32_t begin;  ///< first dart (DartSet::tet_begin)
+    std::uint32_t end;    ///< one past the last dart
+    std::int32_t dense;   ///< DartSet::dense_slot, or -1
+    std::int32_t vol;     ///< TetSoS::vol
+};
+
+/// The records of all tets (darts are fewer than INT_MAX: traceConnections() checks).
+std::vector<TetDarts> tetDartRecords(const std::vector<TetSoS>& tets, const DartSet& set, int threads) {
+    std::vector<TetDarts> rec(tets.size());
+    parallelChunks(tets.size(), threads, [&](int, std::size_t b, std::size_t e) {
+        for (std::size_t t = b; t < e; ++t)
+            rec[t] = TetDarts{static_cast<std::uint32_t>(set.tet_begin[t]), static_cast<std::uint32_t>(set.tet_begin[t + 1]),
+                              set.dense_slot.empty() ? -1 : set.dense_slot[t], tets[t].vol};
+    });
+    return rec;
+}
+
+/// DartSet::find() with the tet's record: the same index.
+long findDart(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    if (r.dense >= 0) {
+        const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(r.dense)];
+        const long l = di.local(z);
+        if (l < 0) return -1;
+        for (std::size_t k = r.begin + di.offset[static_cast<std::size_t>(l)]; k < r.begin + di.offset[static_cast<std::size_t>(l) + 1]; ++k)
+            if (sameFrame(set.darts[k].d, d)) return static_cast<long>(k);
+        return -1;
+    }
+    const Dart* first = set.darts.data() + r.begin;
+    const Dart* last = set.darts.data() + r.end;
+    const Dart* it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
+    if (it != last && samePoint(it->z, z) && sameFrame(it->d, d)) return it - set.darts.data();
+    return -1;
+}
+
+/// DartSet::implicitCell() knowing the tet's record (only tets with a dense index have them).
+bool implicitIn(const DartSet& set, const TetDarts& r, int t, const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    return r.dense >= 0 && set.implicitCell(t, z, d);
+}
+
 /// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
 /// tet at the dart's grid point (kNoDart / kSeveralDarts), replacing the local scan.
 /// @p runSides, if given, holds what is known of the face signs of the dart's tet at its
 /// grid point (shared by the traces of a run; i > 0 only) and receives the ones computed.
+/// @p rec: tetDartRecords().
 long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-              long dart, int i, long& steps, const int* run = nullptr, PointSides* runSides = nullptr) {
+              const TetDarts* rec, long dart, int i, long& steps, const int* run = nullptr, PointSides* runSides = nullptr) {
     const Dart& D = set.darts[static_cast<std::size_t>(dart)];
     int t = D.tet;
-    int s = tets[static_cast<std::size_t>(t)].vol;
-    Desc start{D.z, D.d};
-    Desc target = alphaStar(i, start);
+    int s = rec[t].vol;
+    // desc[a] is the start, desc[a ^ 1] the target: a change of flippedness swaps them by
+    // flipping a.
+    Desc desc[2];
+    int a = 0;
+    desc[0].z = D.z;
+    desc[0].d = D.d;
+    setAlphaStar(i, desc[0], desc[1]);
+    const Desc& want = desc[1];  // the target before the first step
     int entry = -1;
     // First look among the darts of the same tet at the same grid point: they are stored
     // contiguously around this dart (alpha_1..alpha_3 partners usually are there).
-    const int known = run && samePoint(target.z, D.z) ? run[frameCode(target.d)] : kSeveralDarts;
+    const int known = run && samePoint(want.z, D.z) ? run[frameCode(want.d)] : kSeveralDarts;
     if (known >= 0) return known;
     if (known == kNoDart) {
-        if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
-    } else if (samePoint(target.z, D.z)) {
-        const std::size_t lo = set.tet_begin[static_cast<std::size_t>(t)], hi = set.tet_begin[static_cast<std::size_t>(t) + 1];
+        if (implicitIn(set, rec[t], t, want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
+    } else if (samePoint(want.z, D.z)) {
+        const std::size_t lo = rec[t].begin, hi = rec[t].end;
         for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
-            if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
+            if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
         for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && samePoint(set.darts[k].z, D.z); ++k)
-            if (sameFrame(set.darts[k].d, target.d)) return static_cast<long>(k);
-        if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+            if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
+        if (implicitIn(set, rec[t], t, want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
     }
     // Cancelled fold points passed on the way (each occurrence at most once per direction).
     long passed = 0;
     const long maxPassed = 2 * set.n_cancelled + 2;
     for (int step = 0; step < kMaxSteps; ++step) {
+        const TetDarts& R = rec[t];
         const TetSoS& T = tets[static_cast<std::size_t>(t)];
-        if (T.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
-            const long found = set.find(t, target.z, target.d);
+        Desc& start = desc[a];
+        Desc& target = desc[a ^ 1];
+        if (R.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
+            const long found = findDart(set, R, target.z, target.d);
             if (found >= 0) return found;
-            if (set.implicitCell(t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+            if (implicitIn(set, R, t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
             const int cancelled = i == 0 ? set.cancelledPoint(t, target.z) : 0;
             if (cancelled == 1 ||
                 (cancelled == 2 && T.contains(set.pointSides(t, T, target.z), target.d[0], target.d[1], target.d[2]))) {
@@ -315,8 +390,11 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
                         target.z = next;
                     }
                 }
-                start = Desc{target.z, {dirNeg(target.d[0]), target.d[1], target.d[2]}};
-                target = alphaStar(0, start);
+                start.z = target.z;
+                start.d[0] = dirNeg(target.d[0]);
+                start.d[1] = target.d[1];
+                start.d[2] = target.d[2];
+                setAlphaStar(0, start, target);
                 --step;
                 continue;
             }
@@ -331,7 +409,7 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
             // passes cancelled points): the run's signs apply.
             PointSides here;
             PointSides& ps = step == 0 && runSides ? *runSides : here;
-            flaggedSides(set, t, T, start.z, ps);
+            flaggedSides(set, R.dense, T, start.z, ps);
             f = exitFace(i, T, start, entry, nullptr, &ps);
         }
         if (f < 0) return kUnconnected;
@@ -340,15 +418,15 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
         if (!opp.is_valid()) return i == 3 ? dart : kUnconnected;
         const GridTransform& g = tr.halfface[hf.uidx()];
         if (!g.is_identity()) {
-            start = transform(g, start);
-            target = transform(g, target);
+            transformDesc(g, start);
+            transformDesc(g, target);
         }
         t = TetMesh::cell(opp).idx();
         entry = TetMesh::opposite_corner(opp);
         ++steps;
-        const int sv = tets[static_cast<std::size_t>(t)].vol;
+        const int sv = rec[t].vol;
         if (sv != 0 && sv != s) {
-            std::swap(start, target);
+            a ^= 1;
             s = sv;
         }
     }
@@ -359,9 +437,9 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
 constexpr int kMaxGroup = 8;
 /// The darts of tet @p t at grid point @p z, [first, second) (empty if none), in key order:
 /// the first one with a frame is the one DartSet::find() returns for it.
-std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, int t, const Vec3i& z) {
-    const std::size_t base = set.tet_begin[static_cast<std::size_t>(t)];
-    const int slot = set.dense_slot.empty() ? -1 : set.dense_slot[static_cast<std::size_t>(t)];
+std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, const TetDarts& r, const Vec3i& z) {
+    const std::size_t base = r.begin;
+    const int slot = r.dense;
     if (slot >= 0) {
         const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(slot)];
         const long l = di.local(z);
@@ -369,7 +447,7 @@ std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, int t, const 
         return {base + di.offset[static_cast<std::size_t>(l)], base + di.offset[static_cast<std::size_t>(l) + 1]};
     }
     const Dart* first = set.darts.data() + base;
-    const Dart* last = set.darts.data() + set.tet_begin[static_cast<std::size_t>(t) + 1];
+    const Dart* last = set.darts.data() + r.end;
     const Dart* lo = std::lower_bound(first, last, z, [](const Dart& x, const Vec3i& p) {
         for (int k = 0; k < 3; ++k)
             if (x.z[k] != p[k]) return x.z[k] < p[k];
@@ -390,7 +468,7 @@ std::pair<std::size_t, std::size_t> pointRange(const DartSet& set, int t, const 
 /// Writes for dart b + k: out[k] its alpha_0, stepsOut[k] the steps traceOne() would count,
 /// split[k] = 1 if it left the first walk at a tie (else 0).
 void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vector<TetSoS>& tets, const DartSet& set,
-                    std::size_t b, std::size_t e, long* out, long* stepsOut, unsigned char* split) {
+                    const TetDarts* rec, std::size_t b, std::size_t e, long* out, long* stepsOut, unsigned char* split) {
     const int n = static_cast<int>(e - b);
     std::array<AxisDir, 2> tail[kMaxGroup];  // (d2, d3) of each dart, in the chart of its walk
     for (int k = 0; k < n; ++k) {
@@ -408,8 +486,10 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
     const Dart& D0 = set.darts[b];
     Walk stack[kMaxGroup];  // a split leaves at most n - 1 walks waiting
     int waiting = 0;
-    stack[waiting++] = Walk{(1u << n) - 1, D0.tet, tets[static_cast<std::size_t>(D0.tet)].vol, -1, 0,
-                            D0.z, D0.z + dirVec(D0.d[0]), D0.d[0], dirNeg(D0.d[0])};
+    // The walk being followed (the first one built in place: a copy out of the stack right
+    // after building it there would stall the store forwarding).
+    Walk w{(1u << n) - 1, D0.tet, rec[D0.tet].vol, -1, 0,
+           D0.z, stepAlong(D0.z, D0.d[0]), D0.d[0], dirNeg(D0.d[0])};
     auto resolve = [&](unsigned m, long link, int step) {
         for (int k = 0; k < n; ++k)
             if (m >> k & 1) {
@@ -432,8 +512,8 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
         }
         const GridTransform& g = tr.halfface[hf.uidx()];
         if (!g.is_identity()) {
-            w.sz = g.apply(w.sz);
-            w.tz = g.apply(w.tz);
+            w.sz = applyToPoint(g, w.sz);
+            w.tz = applyToPoint(g, w.tz);
             w.sd = g.applyDir(w.sd);
             w.td = g.applyDir(w.td);
             for (int k = 0; k < n; ++k)
@@ -442,7 +522,7 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
         w.t = TetMesh::cell(opp).idx();
         w.entry = TetMesh::opposite_corner(opp);
         ++w.step;
-        const int sv = tets[static_cast<std::size_t>(w.t)].vol;
+        const int sv = rec[w.t].vol;
         if (sv != 0 && sv != w.s) {
             std::swap(w.sz, w.tz);
             std::swap(w.sd, w.td);
@@ -450,16 +530,16 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
         }
         return true;
     };
-    while (waiting > 0) {
-        Walk w = stack[--waiting];
+    for (;;) {
         for (;;) {
             if (w.step == kMaxSteps) {
                 resolve(w.members, kUnconnected, kMaxSteps);
                 break;
             }
             const TetSoS& T = tets[static_cast<std::size_t>(w.t)];
-            if (T.vol != 0) {
-                const auto range = pointRange(set, w.t, w.tz);
+            const TetDarts& R = rec[w.t];
+            if (R.vol != 0) {
+                const auto range = pointRange(set, R, w.tz);
                 for (int k = 0; k < n; ++k) {
                     if (!(w.members >> k & 1)) continue;
                     const std::array<AxisDir, 3> want{w.td, tail[k][0], tail[k][1]};
@@ -467,7 +547,7 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
                     for (std::size_t x = range.first; x < range.second && found < 0; ++x)
                         if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
                     if (found < 0) {
-                        if (!set.implicitCell(w.t, w.tz, want)) continue;
+                        if (!implicitIn(set, R, w.t, w.tz, want)) continue;
                         found = encodeImplicitPartner(set.occurrence(w.t, w.tz));
                     }
                     resolve(1u << k, found, w.step);
@@ -507,6 +587,8 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
             }
             if (!cross(w, f)) break;
         }
+        if (waiting == 0) break;
+        w = stack[--waiting];
     }
 }
 
@@ -572,6 +654,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     // pass for the links back and no thread reads an entry another one writes.
     std::vector<DartLinks> alpha(n, DartLinks{kPending, kPending, kPending, kPending});
     const int workers = std::max(1, threads);
+    const std::vector<TetDarts> rec = tetDartRecords(tets, darts, workers);
     std::vector<TraceStats> part(static_cast<std::size_t>(workers));
     auto deferred = [&](std::size_t d, int i) {
         const Dart& D = darts.darts[d];
@@ -660,7 +743,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         groupE = d + 1;
                         while (groupE < runE && D[groupE].d[0] == f[0]) ++groupE;
                         if (groupE - groupB <= 1 || groupE - groupB > static_cast<std::size_t>(kMaxGroup)) groupE = groupB;
-                        else traceEdgeGroup(mesh, tr, tets, darts, groupB, groupE, groupLink, groupSteps, groupSplit);
+                        else traceEdgeGroup(mesh, tr, tets, darts, rec.data(), groupB, groupE, groupLink, groupSteps, groupSplit);
                     }
                     if (d < groupE) {
                         const std::size_t g = d - groupB;
@@ -704,7 +787,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         continue;
                     }
                 }
-                record(st, backs, d, i, traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, run.data(), &runSides));
+                record(st, backs, d, i, traceOne(mesh, tr, tets, darts, rec.data(), static_cast<long>(d), i, st.steps, run.data(), &runSides));
             }
         }
         flushBacks(backs);
@@ -721,7 +804,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                 if (alpha[d][i] == kPending) {
                     if (last == e || !sameRun(last, d)) runSides = PointSides{};
                     last = d;
-                    const long p = traceOne(mesh, tr, tets, darts, static_cast<long>(d), i, st.steps, nullptr, &runSides);
+                    const long p = traceOne(mesh, tr, tets, darts, rec.data(), static_cast<long>(d), i, st.steps, nullptr, &runSides);
                     alpha[d][i] = static_cast<int>(p);
                     if (p == kUnconnected) ++st.unconnected[i];
                     else if (i == 3 && p == static_cast<long>(d)) ++st.boundary_alpha3;
