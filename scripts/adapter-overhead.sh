@@ -16,8 +16,14 @@
 #
 #   BENCH=build/src/Benchmarks/adapter_benchmark REPEAT=3 CASES="cube20 cube40 cylinder6" \
 #   PATHS="builtin ovm-native lcc-native" scripts/adapter-overhead.sh
+#
+# With OLD=another adapter_benchmark binary, every adapter path also runs with OLD in the same
+# round, right before BENCH's run (rows "PATH (old)"), for a paired before/after; the
+# builtin path runs from BENCH only. The wall columns (wall read, wall read+extract
+# overhead) are what the adapters' threads shorten; the CPU columns add all threads.
 set -euo pipefail
 BENCH=${BENCH:-build/src/Benchmarks/adapter_benchmark}
+OLD=${OLD:-}
 REPEAT=${REPEAT:-3}
 CASES=${CASES:-"cube20 cube40 cylinder6"}
 PATHS=${PATHS:-"builtin ovm-native lcc-native"}
@@ -26,9 +32,14 @@ trap 'rm -f "$out" "$out.time"' EXIT
 for r in $(seq "$REPEAT"); do
   for c in $CASES; do
     for p in $PATHS; do
-      line=$(/usr/bin/time -v -o "$out.time" "$BENCH" "$c" "$p")
-      rss=$(awk -F: '/Maximum resident set size/ {gsub(/ /, "", $2); print $2}' "$out.time")
-      echo "$line rss_kb=$rss" >> "$out"
+      runs="$BENCH"
+      if [ -n "$OLD" ] && [ "$p" != builtin ] && [ "$p" != builtin-provenance ]; then runs="$OLD $BENCH"; fi
+      for b in $runs; do
+        line=$(/usr/bin/time -v -o "$out.time" "$b" "$c" "$p")
+        rss=$(awk -F: '/Maximum resident set size/ {gsub(/ /, "", $2); print $2}' "$out.time")
+        [ "$b" = "$OLD" ] && [ "$b" != "$BENCH" ] && line=$(echo "$line" | sed "s/path=$p /path=$p(old) /")
+        echo "$line rss_kb=$rss load=$(cut -d' ' -f1 /proc/loadavg)" >> "$out"
+      done
     done
   done
 done
@@ -43,21 +54,27 @@ def med(key, runs):
     return statistics.median(v), v[0], v[-1]
 def fmt(t):
     return f"{t[0]:.2f} ({t[1]:.2f}-{t[2]:.2f})"
-print("| case / path | cpu read | cpu extract | cpu write | wall total | peak MB | input MB | read overhead | read+extract overhead |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("| case / path | cpu read | cpu extract | cpu write | wall read | wall total | peak MB | input MB | read overhead | read+extract overhead | wall read+extract overhead |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for (c, p), runs in rows.items():
     base = rows.get((c, "builtin"))
-    over = total = ""
+    over = total = wtotal = ""
     if base and p != "builtin":
         bx = med('cpu_extract_s', base)[0]
         over = f"{100 * (med('cpu_copy_s', runs)[0] - med('cpu_copy_s', base)[0]) / bx:+.0f} %"
         both = lambda rs: statistics.median(float(r['cpu_copy_s']) + float(r['cpu_extract_s']) for r in rs)
         total = f"{100 * (both(runs) - both(base)) / bx:+.0f} %"
+        wboth = lambda rs: statistics.median(float(r['copy_s']) + float(r['extract_s']) for r in rs)
+        wtotal = f"{100 * (wboth(runs) - wboth(base)) / med('extract_s', base)[0]:+.0f} %"
     peak = statistics.median(float(r["rss_kb"]) / 1024 for r in runs)
     # ovm-native-split: HexEx's writing, then OpenVolumeMesh's incidence rebuild
     inc = f" + {fmt(med('cpu_incidences_s', runs))} OVM incidences" if float(runs[0].get("cpu_incidences_s", 0)) > 0 else ""
     if inc and "cpu_inc_face_s" in runs[0]:  # vertex lists, edge lists, face incidences with the ordering around edges
         inc += f" (vertex {med('cpu_inc_vertex_s', runs)[0]:.2f}, edge {med('cpu_inc_edge_s', runs)[0]:.2f}, face + ordering {med('cpu_inc_face_s', runs)[0]:.2f})"
     print(f"| {c} {p} | {fmt(med('cpu_copy_s', runs))} | {fmt(med('cpu_extract_s', runs))} | "
-          f"{fmt(med('cpu_write_s', runs))}{inc} | {fmt(med('total_s', runs))} | {peak:.0f} | {runs[0]['input_mb']} | {over} | {total} |")
+          f"{fmt(med('cpu_write_s', runs))}{inc} | {fmt(med('copy_s', runs))} | {fmt(med('total_s', runs))} | {peak:.0f} | "
+          f"{runs[0]['input_mb']} | {over} | {total} | {wtotal} |")
+loads = sorted(float(r["load"]) for rs in rows.values() for r in rs if "load" in r)
+if loads:
+    print(f"\nload average (1 min) at the end of the runs: {loads[0]:.1f}-{loads[-1]:.1f}")
 PY
