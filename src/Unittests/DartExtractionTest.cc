@@ -148,3 +148,24 @@ TEST(DartExtraction, CapRefusesWithTheBudgetMessage) {
         }
     }
 }
+
+TEST(DartExtraction, ExactAndFilteredFaceSignsEqualTheDirectEnumeration) {
+    // The face signs of a grid point come three ways: at a tet corner without arithmetic,
+    // from exact doubles when every corner is a small dyadic number (multiples of 1/64 up to
+    // 512), else through the floating-point filter with its exact fallback. Maps without
+    // flipped tets (one pass) whose grid points lie at corners, on edges and on faces:
+    // corners at multiples of 0.75 (exact path), at multiples of 2/3 (filtered: grid points
+    // on edges and faces need the exact fallback), shifted by 1/3 or by 600 (dyadic, but
+    // beyond 512: filtered), and perturbed corners (filtered, points off the faces).
+    EXPECT_EQ(expectDirectDarts(generateCube(4, 3)), 0);
+    EXPECT_EQ(expectDirectDarts(generateCube(3, 2)), 0);
+    for (const double shift : {1.0 / 3.0, 600.0}) {
+        ParametrizedTetMesh pm = generateCube(4, 3);
+        for (auto& corners : pm.params)
+            for (auto& p : corners) p += Vec3d(shift, -shift, shift);
+        EXPECT_EQ(expectDirectDarts(pm), 0);
+    }
+    ParametrizedTetMesh pm = generateCube(3, 3);
+    perturbParameters(pm, 0.2, 7);
+    expectDirectDarts(pm);
+}

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <cmath>
 #include <new>
+#include <optional>
 #include <string>
 
 namespace HexEx {
@@ -66,10 +67,13 @@ GridBox gridBox(const TetSoS& T, std::size_t c) {
     GridBox box;
     box.points = 1;
     for (int a = 0; a < 3; ++a) {
-        if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]) || std::fabs(lo[a]) > 1e9 || std::fabs(hi[a]) > 1e9)
+        // (Also false for NaN.)
+        if (!(std::fabs(lo[a]) <= 1e9 && std::fabs(hi[a]) <= 1e9))
             throw InputError("tet " + std::to_string(c) + ": parameter out of range (|u| > 1e9 or not finite)");
-        box.lo[a] = static_cast<int>(std::ceil(lo[a]));
-        box.hi[a] = static_cast<int>(std::floor(hi[a]));
+        // ceil and floor by the truncating conversion (exact below 2^31; no libm calls).
+        const int tl = static_cast<int>(lo[a]), th = static_cast<int>(hi[a]);
+        box.lo[a] = tl + (static_cast<double>(tl) < lo[a] ? 1 : 0);
+        box.hi[a] = th - (static_cast<double>(th) > hi[a] ? 1 : 0);
         box.points *= std::max(0, box.hi[a] - box.lo[a] + 1);
     }
     return box;
@@ -193,16 +197,23 @@ void markBoxFlags(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di, boo
 } // namespace
 
 namespace {
-/// Frame index -> octant of the frame's cell: bit a is set if the frame points in the -a
-/// direction (the cell's lower corner is then z - octant).
-std::array<std::uint8_t, 48> frameOctants() {
-    std::array<std::uint8_t, 48> octant{};
+/// Per octant o (bit a set: the cell lies on the -a side of the point): the frames (bits of
+/// allFrames()) whose cell is that octant's, i.e. whose directions point to -a exactly for
+/// the bits a of o.
+std::array<std::uint64_t, 8> octantFrameMasks() {
+    std::array<std::uint64_t, 8> masks{};
     const auto& frames = allFrames();
-    for (std::size_t f = 0; f < frames.size(); ++f)
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+        unsigned octant = 0;
         for (AxisDir x : frames[f])
-            if (dirSign(x) < 0) octant[f] = static_cast<std::uint8_t>(octant[f] | (1u << dirAxis(x)));
-    return octant;
+            if (dirSign(x) < 0) octant |= 1u << dirAxis(x);
+        masks[octant] |= std::uint64_t(1) << f;
+    }
+    return masks;
 }
+
+/// All 48 frames.
+constexpr std::uint64_t kAllFrames = (std::uint64_t(1) << 48) - 1;
 
 /// Frames (bit fi of allFrames()) for which the symbolic side of a face through the point
 /// (TetSoS::sosSide() with oz = 0) is +1 (`pos`) or -1 (`neg`), per sign pattern of the
@@ -235,7 +246,7 @@ const FrameSideMasks& frameSideMasks() {
 /// tet @p T contains: bit fi set iff T.contains(oz, frames[fi]...).
 std::uint64_t containedFrames(const TetSoS& T, const std::array<int, 4>& oz) {
     const FrameSideMasks& m = frameSideMasks();
-    std::uint64_t mask = (std::uint64_t(1) << 48) - 1;
+    std::uint64_t mask = kAllFrames;
     for (int j = 0; j < 4; ++j) {
         if (oz[static_cast<std::size_t>(j)] != 0) continue;
         const int code = (T.g[j][0] + 1) * 9 + (T.g[j][1] + 1) * 3 + (T.g[j][2] + 1);
@@ -244,16 +255,85 @@ std::uint64_t containedFrames(const TetSoS& T, const std::array<int, 4>& oz) {
     return mask;
 }
 
-/// The darts of tet @p T at grid point (x, y, zc), box index @p l of the dense index @p di
-/// (if any; its flags, if any, decide membership and implicit octants): calls emit(z, frame
-/// index) in frame order and returns their number. With kCountOnly, a point strictly inside
-/// is counted without going through its frames (6 frames per octant not implicit).
-template <bool kCountOnly, class Emit>
-std::uint32_t pointDarts(const TetSoS& T, const FacePlanes& F, const DartSet::DenseIndex* di, int x, int y, int zc, std::size_t l,
-                         const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit) {
+/// Signs of the four face functions of one tet (TetSoS::side()) at grid points of its box.
+/// At a corner of the tet the signs need no arithmetic (TetSoS::sides()' rule: the faces
+/// through the corner are zero, the opposite one has the volume's sign). Elsewhere, when
+/// every corner is FacePlanes::smallDyadic() (a multiple of 1/64 of magnitude at most 512;
+/// the box's grid points are then too), the doubles are exact: the corner differences are
+/// multiples of 2^-6 below 2^10, the cross product n = (b - a) x (c - a) multiples of
+/// 2^-12 below 2^21, the terms of (x - a) . n multiples of 2^-18 below 2^31 and their sum
+/// below 2^33: an integer of at most 51 bits in units of 2^-18, so its sign is the exact
+/// sign, without a filter. A face is set up when a point first needs it (most points
+/// outside a tet are decided by one or two faces). Other tets go through FacePlanes
+/// (filter, exact fallback).
+class BoxFaceSigns {
+public:
+    /// For tet @p T (which must outlive this object).
+    explicit BoxFaceSigns(const TetSoS& T) : T_(T) {}
+
+    /// The signs at @p z; false as soon as one is opposite to the volume's sign (outside;
+    /// @p oz is then incomplete). @p interior: all four are non-zero.
+    bool sides(const Vec3i& z, std::array<int, 4>& oz, bool& interior) {
+        const Vec3d zp(z[0], z[1], z[2]);
+        for (int k = 0; k < 4; ++k)
+            if (zp[0] == T_.p[k][0] && zp[1] == T_.p[k][1] && zp[2] == T_.p[k][2]) {
+                oz = {0, 0, 0, 0};
+                oz[static_cast<std::size_t>(k)] = T_.vol;
+                interior = false;
+                return true;
+            }
+        if (mode_ == Mode::Unknown) {
+            mode_ = FacePlanes::smallDyadic(T_.p[0]) && FacePlanes::smallDyadic(T_.p[1]) &&
+                            FacePlanes::smallDyadic(T_.p[2]) && FacePlanes::smallDyadic(T_.p[3])
+                        ? Mode::Exact
+                        : Mode::Planes;
+            if (mode_ == Mode::Planes) planes_.emplace(T_);
+        }
+        interior = true;
+        for (int j = 0; j < 4; ++j) {
+            const int s = mode_ == Mode::Exact ? exactSide(j, zp) : planes_->side(j, zp);
+            if (s == -T_.vol) return false;
+            oz[static_cast<std::size_t>(j)] = s;
+            interior = interior && s != 0;
+        }
+        return true;
+    }
+
+private:
+    enum class Mode : unsigned char { Unknown, Exact, Planes };
+
+    /// o_j(x) = (-1)^(3-j) det(b - a, c - a, x - a), (a, b, c) the corners other than j in
+    /// index order (as in FacePlanes), exactly.
+    int exactSide(int j, const Vec3d& x) {
+        if (!((ready_ >> j) & 1)) {
+            const int a = j == 0 ? 1 : 0, b = j <= 1 ? 2 : 1, c = j <= 2 ? 3 : 2;
+            const Vec3d u = T_.p[b] - T_.p[a], v = T_.p[c] - T_.p[a];
+            n_[j] = Vec3d(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+            base_[j] = a;
+            ready_ |= 1u << j;
+        }
+        const Vec3d& p = T_.p[base_[j]];
+        const double det = (x[0] - p[0]) * n_[j][0] + (x[1] - p[1]) * n_[j][1] + (x[2] - p[2]) * n_[j][2];
+        const int s = (det > 0) - (det < 0);
+        return (3 - j) % 2 == 0 ? s : -s;
+    }
+
+    const TetSoS& T_;
+    Mode mode_ = Mode::Unknown;
+    unsigned ready_ = 0;                // bit j: face j of an exact tet is set up
+    int base_[4];                       // corner a of face j
+    Vec3d n_[4];                        // (b - a) x (c - a) of face j, exact
+    std::optional<FacePlanes> planes_;  // tets that are not exact, at their first non-corner point
+};
+
+/// The frames (bits of allFrames()) of the darts of tet @p T at grid point (x, y, zc), box
+/// index @p l of the dense index @p di (if any; its flags, if any, decide membership and
+/// implicit octants); else @p S (at that point of its row) gives the face signs.
+std::uint64_t pointFrames(const TetSoS& T, BoxFaceSigns& S, const DartSet::DenseIndex* di, int x, int y, int zc,
+                          std::size_t l, const std::array<std::uint64_t, 8>& octantFrames) {
     std::array<int, 4> oz;
     bool interior = true;
-    unsigned implicitOctants = 0;
+    std::uint64_t allowed = kAllFrames;
     if (di && !di->flags.empty()) {
         // The signs were found while marking the implicit cells.
         const std::uint8_t fl = di->flags[l];
@@ -262,44 +342,40 @@ std::uint32_t pointDarts(const TetSoS& T, const FacePlanes& F, const DartSet::De
         interior = (fl >> 4) == 0;
         for (unsigned o = 0; o < 8 && di->implicit_marks; ++o) {
             const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1), zc - static_cast<int>(o >> 2)));
-            if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) implicitOctants |= 1u << o;
+            if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) allowed &= ~octantFrames[o];
         }
-        if (implicitOctants == 0xFF) return 0;  // every cell around z is implicit
-    } else {
-        const Vec3d zp(x, y, zc);
-        for (int j = 0; j < 4; ++j) {
-            oz[static_cast<std::size_t>(j)] = F.side(j, zp);
-            if (oz[static_cast<std::size_t>(j)] == -T.vol) return 0;  // outside
-            if (oz[static_cast<std::size_t>(j)] == 0) interior = false;
-        }
+        if (allowed == 0) return 0;  // every cell around z is implicit
+    } else if (!S.sides(Vec3i(x, y, zc), oz, interior)) {
+        return 0;  // outside
     }
-    if (kCountOnly && interior) {
-        std::uint32_t n = 0;
-        for (unsigned o = 0; o < 8; ++o) n += ((implicitOctants >> o) & 1) ? 0 : 6;
-        return n;
-    }
-    const auto& frames = allFrames();
-    const Vec3i z(x, y, zc);
     // The frames the tet contains there: one mask per face through z (no per-frame tests).
-    const std::uint64_t inside = interior ? ~std::uint64_t(0) : containedFrames(T, oz);
-    std::uint32_t n = 0;
-    for (std::size_t fi = 0; fi < frames.size(); ++fi) {
-        if ((implicitOctants >> frameOctant[fi]) & 1) continue;
-        if (!((inside >> fi) & 1)) continue;
-        emit(z, fi);
-        ++n;
-    }
-    return n;
+    return interior ? allowed : allowed & containedFrames(T, oz);
 }
 
-/// Enumerates the darts of tet @p T, the grid points of @p box in x-major order (calls
-/// emit(z, frame index) unless kCountOnly) and returns their number; with a dense index
-/// @p di, appends its offsets (one per box point: the darts before it, and the total).
-/// row(darts so far) is called before every row of constant (x, y).
-template <bool kCountOnly, class Emit, class Row>
-std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di,
-                              const std::array<std::uint8_t, 48>& frameOctant, Emit&& emit, Row&& row) {
-    const FacePlanes F(T);
+/// Writes the darts of tet @p tet (sign @p sign) at @p z with the frames of @p frames, in
+/// frame order, to @p out; returns the end.
+Dart* writeFrames(Dart* out, int tet, const Vec3i& z, signed char sign, std::uint64_t frames) {
+    const auto& all = allFrames();
+    Dart proto;
+    proto.tet = tet;
+    proto.z = z;
+    proto.sign = sign;
+    for (; frames; frames &= frames - 1) {
+        proto.d = all[static_cast<std::size_t>(__builtin_ctzll(frames))];
+        *out++ = proto;
+    }
+    return out;
+}
+
+/// Visits the grid points of @p box in x-major order: row(darts so far) before every row of
+/// constant (x, y), and per point with darts point(z, frames), where frames (bits of
+/// allFrames()) are the darts of tet @p T there; returns their number. With a dense index
+/// @p di, appends its offsets (one per box point: the darts before it, and
+/// the total).
+template <class Row, class Point>
+std::size_t visitTetDarts(const TetSoS& T, const GridBox& box, DartSet::DenseIndex* di,
+                          const std::array<std::uint64_t, 8>& octantFrames, Row&& row, Point&& point) {
+    BoxFaceSigns S(T);
     std::uint32_t counted = 0;
     std::size_t l = 0;  // local index of (x, y, zc) in the box
     for (int x = box.lo[0]; x <= box.hi[0]; ++x)
@@ -307,7 +383,10 @@ std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::Dens
             row(counted);
             for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
                 if (di) di->offset.push_back(counted);
-                counted += pointDarts<kCountOnly>(T, F, di, x, y, zc, l, frameOctant, emit);
+                const std::uint64_t frames = pointFrames(T, S, di, x, y, zc, l, octantFrames);
+                if (!frames) continue;
+                point(Vec3i(x, y, zc), frames);
+                counted += static_cast<std::uint32_t>(__builtin_popcountll(frames));
             }
         }
     if (di) di->offset.push_back(counted);
@@ -318,31 +397,22 @@ std::size_t enumerateTetDarts(const TetSoS& T, const GridBox& box, DartSet::Dens
 /// (from the counting pass) skip the points without darts and give the points with all 48
 /// at once; other points repeat the counting pass's tests.
 void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::DenseIndex* di,
-                   const std::array<std::uint8_t, 48>& frameOctant, Dart* out) {
-    const auto& frames = allFrames();
+                   const std::array<std::uint64_t, 8>& octantFrames, Dart* out) {
     const signed char sign = static_cast<signed char>(T.vol);
-    auto emit = [&](const Vec3i& z, std::size_t fi) {
-        Dart& d = *out++;
-        d.tet = c;
-        d.z = z;
-        d.d = frames[fi];
-        d.sign = sign;
-    };
-    const FacePlanes F(T);
+    if (!di) {
+        visitTetDarts(T, box, nullptr, octantFrames, [](std::uint32_t) {},
+                      [&](const Vec3i& z, std::uint64_t frames) { out = writeFrames(out, c, z, sign, frames); });
+        return;
+    }
+    BoxFaceSigns S(T);
     std::size_t l = 0;
     for (int x = box.lo[0]; x <= box.hi[0]; ++x)
         for (int y = box.lo[1]; y <= box.hi[1]; ++y)
             for (int zc = box.lo[2]; zc <= box.hi[2]; ++zc, ++l) {
-                if (di) {
-                    const std::uint32_t n = di->offset[l + 1] - di->offset[l];
-                    if (n == 0) continue;
-                    if (n == frames.size()) {
-                        const Vec3i z(x, y, zc);
-                        for (std::size_t fi = 0; fi < frames.size(); ++fi) emit(z, fi);
-                        continue;
-                    }
-                }
-                pointDarts<false>(T, F, di, x, y, zc, l, frameOctant, emit);
+                const std::uint32_t n = di->offset[l + 1] - di->offset[l];
+                if (n == 0) continue;
+                const Vec3i z(x, y, zc);
+                out = writeFrames(out, c, z, sign, n == 48 ? kAllFrames : pointFrames(T, S, di, x, y, zc, l, octantFrames));
             }
 }
 } // namespace
@@ -357,7 +427,7 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     std::vector<std::vector<DartSet::DenseIndex>> denseParts(static_cast<std::size_t>(chunks));
     constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
     std::vector<std::size_t> count(n, 0);  // darts per tet
-    const std::array<std::uint8_t, 48> frameOctant = frameOctants();
+    const std::array<std::uint64_t, 8> octantFrames = octantFrameMasks();
     auto capError = [&] {
         return ResourceError("dart extraction stopped after more than " + std::to_string(max_darts) +
                              " darts, the most the memory budget allows");
@@ -396,7 +466,6 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         if (extracted.fetch_add(cnt, std::memory_order_relaxed) + cnt > max_darts) throw capError();
     };
     DartSet s;
-    const auto& frames = allFrames();
     if (!folds) {
         // Without flipped tets every unit cell has its 48 darts once: the volume predicts the
         // count, chunk 0 reserves room for all (untouched reserved memory costs no RSS) and
@@ -416,15 +485,11 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                 DartSet::DenseIndex* di = prepareTet(k, c, box);
                 const int tet = static_cast<int>(c);
                 const signed char sign = static_cast<signed char>(T.vol);
-                counted(c, enumerateTetDarts<false>(T, box, di, frameOctant,
-                                                    [&](const Vec3i& z, std::size_t fi) {
-                                                        Dart& d = out.emplace_back();
-                                                        d.tet = tet;
-                                                        d.z = z;
-                                                        d.d = frames[fi];
-                                                        d.sign = sign;
-                                                    },
-                                                    capCheck));
+                counted(c, visitTetDarts(T, box, di, octantFrames, capCheck, [&](const Vec3i& z, std::uint64_t frames) {
+                    const std::size_t at = out.size();
+                    out.resize(at + static_cast<std::size_t>(__builtin_popcountll(frames)));
+                    writeFrames(out.data() + at, tet, z, sign, frames);
+                }));
             }
         });
         std::size_t total = 0;
@@ -463,9 +528,9 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                 GridBox box;
                 DartSet::DenseIndex* di = prepareTet(k, c, box);
                 if (capAfterCancel)
-                    count[c] = enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, [](std::uint32_t) {});
+                    count[c] = visitTetDarts(tets[c], box, di, octantFrames, [](std::uint32_t) {}, [](const Vec3i&, std::uint64_t) {});
                 else
-                    counted(c, enumerateTetDarts<true>(tets[c], box, di, frameOctant, [](const Vec3i&, std::size_t) {}, capCheck));
+                    counted(c, visitTetDarts(tets[c], box, di, octantFrames, capCheck, [](const Vec3i&, std::uint64_t) {}));
             }
         });
         if (chart_component) {
@@ -487,7 +552,7 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
                 if (T.vol == 0) continue;
                 const DartSet::DenseIndex* di =
                     nextDense < dense.size() && dense[nextDense].tet == static_cast<int>(c) ? &dense[nextDense++] : nullptr;
-                writeTetDarts(T, static_cast<int>(c), gridBox(T, c), di, frameOctant, s.darts.data() + s.tet_begin[c]);
+                writeTetDarts(T, static_cast<int>(c), gridBox(T, c), di, octantFrames, s.darts.data() + s.tet_begin[c]);
             }
         });
     }
