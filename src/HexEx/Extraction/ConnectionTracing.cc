@@ -322,9 +322,14 @@ long findDart(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::
     return -1;
 }
 
-/// DartSet::implicitCell() knowing the tet's record (only tets with a dense index have them).
-bool implicitIn(const DartSet& set, const TetDarts& r, int t, const Vec3i& z, const std::array<AxisDir, 3>& d) {
-    return r.dense >= 0 && set.implicitCell(t, z, d);
+/// DartSet::implicitCell() knowing the tet's record (only tets with a dense index have
+/// them), inline: the same test on the same flags.
+bool implicitIn(const DartSet& set, const TetDarts& r, int, const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    if (r.dense < 0) return false;
+    const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(r.dense)];
+    if (di.flags.empty()) return false;
+    const long l = di.local(cellLowerCorner(z, d));
+    return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
 }
 
 /// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
@@ -761,7 +766,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                     const int hit = run[static_cast<std::size_t>(frameCode(want))];
                     // No dart with that frame in the run but an implicit cell there: the
                     // answer traceOne() gives at once, with or without the run table.
-                    const bool implicit = hit == kNoDart && darts.implicitCell(D[d].tet, D[d].z, want);
+                    const bool implicit = hit == kNoDart && implicitIn(darts, rec[static_cast<std::size_t>(D[d].tet)], D[d].tet, D[d].z, want);
                     if (def) {
                         // What pass 2 would trace: only the implicit answer is known here,
                         // and a link back still takes precedence over it.
