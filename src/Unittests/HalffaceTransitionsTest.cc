@@ -1,7 +1,9 @@
 /// @file HalffaceTransitionsTest.cc
 /// Tests of the compact per-halfface transition storage against a plain array of
-/// GridTransform: sparse and dense translations, overwriting and clearing.
+/// GridTransform: sparse and dense translations, overwriting and clearing; all_identity() and
+/// the singularities of a one-chart map (found without walking the edges).
 
+#include <HexEx/Generators/Generators.hh>
 #include <HexEx/Preprocessing/Transitions.hh>
 
 #include <gtest/gtest.h>
@@ -75,4 +77,45 @@ TEST(HalffaceTransitions, SparseThenDenseTranslations) {
         }
         expectSame(h, ref);
     }
+}
+
+TEST(HalffaceTransitions, AllIdentitySeesEveryHalfface) {
+    // A non-identity entry anywhere (first, last, across the scan's blocks of 4096 bytes, a
+    // translation without rotation) makes all_identity() false; setting it back makes it true.
+    const std::size_t n = 3 * 4096 + 17;
+    HalffaceTransitions h;
+    h.reset(0);
+    EXPECT_TRUE(h.all_identity());
+    h.reset(n);
+    EXPECT_TRUE(h.all_identity());
+    for (std::size_t i : {std::size_t(0), std::size_t(4095), std::size_t(4096), std::size_t(2 * 4096 + 5), n - 1}) {
+        h.set(i, GridTransform(Rotation(5), Vec3i(0, 0, 0)));
+        EXPECT_FALSE(h.all_identity()) << "rotation at " << i;
+        h.set(i, GridTransform(Rotation(), Vec3i(0, 2, 0)));
+        EXPECT_FALSE(h.all_identity()) << "translation at " << i;
+        h.set(i, GridTransform());
+        EXPECT_TRUE(h.all_identity()) << "cleared at " << i;
+    }
+}
+
+TEST(HalffaceTransitions, OneChartMapHasNoSingularities) {
+    // The cube has one chart: no singular edge or vertex, the per-vertex flags all zero; a
+    // valence-3 cylinder (not one chart) still has its axis.
+    ParametrizedTetMesh cube = generateCube(3, 2);
+    cube.mesh.build_adjacency();
+    const Transitions tc = computeTransitions(cube.mesh, cube.params);
+    EXPECT_TRUE(tc.halfface.all_identity());
+    for (int threads : {1, 2}) {
+        const Singularities s = findSingularities(cube.mesh, cube.params, tc, threads);
+        EXPECT_TRUE(s.edges.empty());
+        EXPECT_TRUE(s.vertices.empty());
+        EXPECT_EQ(s.is_singular_vertex, std::vector<char>(cube.mesh.n_vertices(), 0));
+    }
+    ParametrizedTetMesh cyl = generateCylinder(3, 2, 2, 1, 1);
+    cyl.mesh.build_adjacency();
+    const Transitions ty = computeTransitions(cyl.mesh, cyl.params);
+    EXPECT_FALSE(ty.halfface.all_identity());
+    const Singularities s = findSingularities(cyl.mesh, cyl.params, ty, 2);
+    ASSERT_FALSE(s.edges.empty());
+    for (const SingularEdge& e : s.edges) EXPECT_EQ(e.valence, 3);
 }

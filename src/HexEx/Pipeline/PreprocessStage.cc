@@ -83,9 +83,12 @@ void checkGivenRotations(const TetMesh& mesh, const std::vector<int>& given) {
     }
 }
 
-/// Counts flipped and degenerate tets and sums the signed volume (deterministic blocks);
-/// sums the sizes the memory estimate needs into @p cost.
-void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::Input& stats, TetCostSummary& cost) {
+/// Builds the symbolic-perturbation data of every tet into @p tets (sized to the tets) and,
+/// in the same pass while the tet is in the cache, counts flipped and degenerate tets and
+/// sums the signed volume (deterministic blocks); sums the sizes the memory estimate needs
+/// into @p cost.
+void buildAndClassify(const CornerParams& params, std::vector<TetSoS>& tets, int threads, ExtractionReport::Input& stats,
+                      TetCostSummary& cost) {
     struct BlockCounts {
         CompensatedSum volume6;
         long flipped = 0, degenerate = 0;
@@ -98,6 +101,7 @@ void classify(const std::vector<TetSoS>& tets, int threads, ExtractionReport::In
     parallelChunks(nBlocks, threads, [&](int, std::size_t bb, std::size_t be) {
         for (std::size_t blk = bb; blk < be; ++blk)
             for (std::size_t c = blk * kSumBlock; c < std::min(tets.size(), (blk + 1) * kSumBlock); ++c) {
+                tets[c] = TetSoS(params[c]);
                 const TetSoS& T = tets[c];
                 if (T.vol < 0) ++blocks[blk].flipped;
                 if (T.vol == 0) ++blocks[blk].degenerate;
@@ -232,8 +236,8 @@ PreprocessOutput preprocess(const PreprocessInput& in) {
     const Singularities sing = findSingularities(mesh, out.params, out.transitions, in.threads);
     out.stats.singular_edges = static_cast<long>(sing.edges.size());
     out.stats.singular_vertices = static_cast<long>(sing.vertices.size());
-    out.tets = buildTetSoS(out.params, in.threads);
-    classify(out.tets, in.threads, out.stats, out.cost);
+    out.tets.resize(out.params.size());
+    buildAndClassify(out.params, out.tets, in.threads, out.stats, out.cost);
     if (ss.repaired_corners > 0) out.warnings.push_back(repairWarning(ss));
     else if (out.transitions.n_inconsistent > 0)
         out.warnings.push_back(std::to_string(out.transitions.n_inconsistent) +

@@ -54,9 +54,10 @@ void applyInto(const GridTransform& g, const Vec3d& u, Vec3d& out) {
 
 /// The common case, without the breadth-first walk: every face around @p v has the
 /// identity transition and every cell holds the same parameter for @p v. Then all copies
-/// get the same quantized value. Returns false (nothing changed) otherwise.
-bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Transitions& tr, VertexHandle v,
-                          double epsilon, int& snapped) {
+/// get the same quantized value. Returns false (nothing changed) otherwise. With
+/// @p oneChart (every transition the identity) the transitions are not looked at.
+bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Transitions& tr, bool oneChart,
+                          VertexHandle v, double epsilon, int& snapped) {
     auto cells = mesh.vertex_cells(v);
     const Vec3d* first = nullptr;
     for (auto it = cells.first; it != cells.second; ++it) {
@@ -65,6 +66,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
         const Vec3d& p = params[c.uidx()][k];
         if (first && !(p == *first)) return false;
         if (!first) first = &p;
+        if (oneChart) continue;
         for (int j = 0; j < 4; ++j)
             if (j != k && !tr.halfface.is_identity(TetMesh::halfface(c, j).uidx())) return false;
     }
@@ -127,21 +129,24 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     SanitizeStats stats;
     // Every vertex writes only its own corners, so vertices are processed in parallel chunks.
     const int chunks = std::max(1, opt.threads);
+    const bool oneChart = tr.halfface.all_identity();
     std::vector<int> snapped(static_cast<std::size_t>(chunks), 0);
     std::vector<std::vector<CornerRepair>> repaired(static_cast<std::size_t>(chunks));
     parallelChunks(mesh.n_vertices(), chunks, [&](int chunk, std::size_t vbegin, std::size_t vend) {
     std::vector<int> star;                 // cells around the vertex, BFS order
     std::vector<unsigned char> slot;       // per star entry: the vertex's corner in that cell
     std::vector<GridTransform> toChart;    // transform from the reference chart, per star entry
-    // mark[c] == v: cell c already in the star of vertex v (O(1) instead of a search).
-    std::vector<int> mark(mesh.n_cells(), -1);
+    // mark[c] == v: cell c already in the star of vertex v (O(1) instead of a search);
+    // allocated at the chunk's first vertex that needs the walk (none on a one-chart map).
+    std::vector<int> mark;
     std::vector<Vec3d> ref;                // the star's values in the reference chart (vote)
     std::vector<char> agrees;              // per star entry: agrees with the voted value
     for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
-        if (sanitizeSimpleVertex(mesh, params, tr, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;
+        if (sanitizeSimpleVertex(mesh, params, tr, oneChart, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;
+        if (mark.empty()) mark.assign(mesh.n_cells(), -1);
         star.assign(1, *cells.first);
         slot.assign(1, static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(*cells.first)), v)));
         mark[static_cast<std::size_t>(*cells.first)] = static_cast<int>(vi);

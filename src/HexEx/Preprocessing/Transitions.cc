@@ -186,6 +186,19 @@ void HalffaceTransitions::reset(std::size_t n) {
     dense_.clear();
 }
 
+bool HalffaceTransitions::all_identity() const {
+    // Blocks of bytes OR-ed together (vectorized), an exit after the first non-zero block.
+    constexpr std::size_t kBlock = 4096;
+    const std::uint8_t* c = code_.data();
+    for (std::size_t b = 0; b < code_.size(); b += kBlock) {
+        const std::size_t e = std::min(code_.size(), b + kBlock);
+        unsigned any = 0;
+        for (std::size_t h = b; h < e; ++h) any |= c[h];
+        if (any) return false;
+    }
+    return true;
+}
+
 Vec3i HalffaceTransitions::translation(std::size_t h) const {
     if (!dense_.empty()) return dense_[h];
     const auto it = std::lower_bound(sparse_.begin(), sparse_.end(), static_cast<int>(h),
@@ -243,7 +256,9 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     auto fitOf = [&](std::size_t h) -> const FaceFit& {
         return std::lower_bound(fits.begin(), fits.end(), h, [](const auto& x, std::size_t k) { return x.first < k; })->second;
     };
-    std::vector<char> decided(nhf, 1);
+    // Per halfface: its transition is known; built only when there are ambiguous faces to
+    // resolve (before that every face is decided or in the list of fits).
+    std::vector<char> decided;
 
     // With a list, only rotations are written and non-zero translations are collected
     // (the parallel pass); without, the transform is stored at once (the sequential pass).
@@ -271,7 +286,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             out.halfface.set(h, g);
             out.halfface.set(opp.uidx(), gi);
         }
-        decided[h] = decided[opp.uidx()] = 1;
+        if (!decided.empty()) decided[h] = decided[opp.uidx()] = 1;
     };
 
     // Each interior face is fitted by the chunk owning its smaller halfface; the writes go to
@@ -322,7 +337,6 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             if (fit.ambiguous) {
                 ambiguousFits[static_cast<std::size_t>(chunk)].emplace_back(h, fit);
                 ++ambiguous[static_cast<std::size_t>(chunk)];
-                decided[h] = decided[opp.uidx()] = 0;
             } else {
                 setTransition(h, fit.best, &moved);
             }
@@ -337,6 +351,8 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     for (int a : inconsistent) out.n_inconsistent += a;
     for (auto& part : ambiguousFits) fits.insert(fits.end(), part.begin(), part.end());  // chunks are in halfface order
     if (out.n_ambiguous == 0) return out;
+    decided.assign(nhf, 1);
+    for (const auto& f : fits) decided[f.first] = decided[mesh.opposite_halfface(HalfFaceHandle(static_cast<int>(f.first))).uidx()] = 0;
 
     // Resolve ambiguous faces from edge consistency: the rotation that makes the holonomy
     // around one of the face's edges trivial, once all other faces around that edge are known.
@@ -393,8 +409,10 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
 
 Singularities findSingularities(const TetMesh& mesh, const CornerParams& params, const Transitions& tr, int threads) {
     Singularities s;
-    std::vector<int> count(mesh.n_vertices(), 0);
     s.is_singular_vertex.assign(mesh.n_vertices(), 0);
+    // One chart (every transition the identity): every holonomy is the identity.
+    if (tr.halfface.all_identity()) return s;
+    std::vector<int> count(mesh.n_vertices(), 0);
     // Edges are independent: chunks collect their singular edges, concatenated in order.
     const int chunks = std::max(1, threads);
     std::vector<std::vector<SingularEdge>> found(static_cast<std::size_t>(chunks));

@@ -32,6 +32,9 @@ public:
     Rotation rotation(std::size_t h) const { return Rotation(code_[h] & kRotationMask); }
     /// True if halfface @p h has the identity.
     bool is_identity(std::size_t h) const { return code_[h] == 0; }
+    /// True if every halfface has the identity (a map with one chart): one pass over the
+    /// one-byte codes.
+    bool all_identity() const;
     /// Sets the transform of halfface @p h (not thread-safe; see set_rotation_only()).
     void set(std::size_t h, const GridTransform& g);
     /// Sets only the rotation of @p h, whose translation must be zero. Distinct halffaces
