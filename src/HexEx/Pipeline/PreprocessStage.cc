@@ -35,6 +35,20 @@ void offerLargest(std::vector<std::pair<int, double>>& top, const std::pair<int,
     if (top.size() > 5) top.pop_back();
 }
 
+/// std::floor and std::ceil for |x| <= 1e9 (the parameters are checked to be) by the
+/// truncating conversion, without libm calls: the same values up to the sign of a zero,
+/// which the box sizes below (differences plus one, products of non-negative numbers) do
+/// not see.
+double floorChecked(double x) {
+    const double t = static_cast<double>(static_cast<long long>(x));
+    return t > x ? t - 1 : t;
+}
+/// See floorChecked().
+double ceilChecked(double x) {
+    const double t = static_cast<double>(static_cast<long long>(x));
+    return t < x ? t + 1 : t;
+}
+
 /// Area of the triangle a, b, c.
 double area(const Vec3d& a, const Vec3d& b, const Vec3d& c) { return 0.5 * ((b - a) % (c - a)).norm(); }
 
@@ -120,7 +134,7 @@ void buildAndClassify(const CornerParams& params, std::vector<TetSoS>& tets, int
                     hi.maximize(T.p[i]);
                 }
                 double box = 1;
-                for (int a = 0; a < 3; ++a) box *= std::max(0.0, std::floor(hi[a]) - std::ceil(lo[a]) + 1);
+                for (int a = 0; a < 3; ++a) box *= std::max(0.0, floorChecked(hi[a]) - ceilChecked(lo[a]) + 1);
                 double shell = vol;
                 if (box >= kDenseMinPoints) {
                     BlockCounts& B = blocks[blk];
@@ -129,8 +143,8 @@ void buildAndClassify(const CornerParams& params, std::vector<TetSoS>& tets, int
                     if (T.vol < 0) {
                         B.flippedBox += box;
                         for (int a = 0; a < 3; ++a) {
-                            B.lo[a] = std::min(B.lo[a], std::ceil(lo[a]));
-                            B.hi[a] = std::max(B.hi[a], std::floor(hi[a]));
+                            B.lo[a] = std::min(B.lo[a], ceilChecked(lo[a]));
+                            B.hi[a] = std::max(B.hi[a], floorChecked(hi[a]));
                         }
                     }
                     if (T.vol > 0) {

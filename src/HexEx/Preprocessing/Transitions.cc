@@ -18,6 +18,12 @@ int localIndex(const TetMesh& mesh, CellHandle c, VertexHandle v) {
     return -1;
 }
 
+/// Local index of vertex @p v in the corners @p cv, which must contain it; without branches
+/// (which corner it is varies from face to face).
+int cornerIndex(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
+    return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
+}
+
 Vec3i roundVec(const Vec3d& v) {
     return Vec3i(static_cast<int>(std::lround(v[0])), static_cast<int>(std::lround(v[1])),
                  static_cast<int>(std::lround(v[2])));
@@ -307,11 +313,13 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
                 continue;
             }
             const CellHandle c = TetMesh::cell(hf), c2 = TetMesh::cell(opp);
+            const auto& cv = mesh.cell_vertices(c);
+            const auto& cv2 = mesh.cell_vertices(c2);  // contains the face's three vertices
             Vec3d u[3], w[3];
             for (int k = 0; k < 3; ++k) {
                 const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
                 u[k] = params[c.uidx()][lc];
-                w[k] = params[c2.uidx()][localIndex(mesh, c2, mesh.cell_vertex(c, lc))];
+                w[k] = params[c2.uidx()][cornerIndex(cv2, cv[lc])];
             }
             // Same chart on both sides of a proper face: identity (already set). A face whose
             // image is degenerate may hide a rotation about it, so it goes through the fit.
