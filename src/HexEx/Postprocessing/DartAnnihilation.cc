@@ -344,7 +344,6 @@ private:
     BlockList<Saved> saved_;  // (dart, original links), in order of first change
     int maxLink_ = 3;                                        // partners are looked for among alpha_0..alpha_maxLink_
     std::vector<int> antis_;                                 // anti darts alive before the first pass
-    std::vector<int> live_;                                  // run(): the alive anti darts of its order
     // Removed pairs (regular, anti) of the current run whose vertex groups are not joined yet
     // (joinGroups() at the end, collectHeirs()); joinNow_: the run joins at once (step()).
     std::vector<std::pair<int, int>> pending_;
@@ -427,10 +426,7 @@ void Annihilator::run(const std::vector<int>* order) {
     // returns it), and a dart re-queued on the way is behind the scan or not in the order.
     // So the dead ones (most of them in the later phases of runPhased()) are left out at
     // once instead of being skipped, with their links prefetched, one by one.
-    // The list's room is kept for the next run (up to six runs over the same anti darts:
-    // no fresh pages to clear each time).
-    std::vector<int>& live = live_;
-    live.clear();
+    std::vector<int> live;
     if (order) {
         live.reserve(order->size());
         for (int d : *order)
