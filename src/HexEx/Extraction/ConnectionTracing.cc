@@ -305,31 +305,14 @@ std::vector<TetDarts> tetDartRecords(const std::vector<TetSoS>& tets, const Dart
     return rec;
 }
 
-/// DartSet::find() with the tet's record: the same index.
-long findDart(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::array<AxisDir, 3>& d) {
-    if (r.dense >= 0) {
-        const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(r.dense)];
-        const long l = di.local(z);
-        if (l < 0) return -1;
-        for (std::size_t k = r.begin + di.offset[static_cast<std::size_t>(l)]; k < r.begin + di.offset[static_cast<std::size_t>(l) + 1]; ++k)
-            if (sameFrame(set.darts[k].d, d)) return static_cast<long>(k);
-        return -1;
-    }
-    const Dart* first = set.darts.data() + r.begin;
-    const Dart* last = set.darts.data() + r.end;
-    const Dart* it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
-    if (it != last && samePoint(it->z, z) && sameFrame(it->d, d)) return it - set.darts.data();
-    return -1;
+/// DartSet::find() with the tet's record.
+inline long findDart(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    return set.findInTet(r.dense, r.begin, r.end, z, d);
 }
 
-/// DartSet::implicitCell() knowing the tet's record (only tets with a dense index have
-/// them), inline: the same test on the same flags.
-bool implicitIn(const DartSet& set, const TetDarts& r, int, const Vec3i& z, const std::array<AxisDir, 3>& d) {
-    if (r.dense < 0) return false;
-    const DartSet::DenseIndex& di = set.dense[static_cast<std::size_t>(r.dense)];
-    if (di.flags.empty()) return false;
-    const long l = di.local(cellLowerCorner(z, d));
-    return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
+/// DartSet::implicitCell() with the tet's record.
+inline bool implicitIn(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::array<AxisDir, 3>& d) {
+    return set.implicitInSlot(r.dense, z, d);
 }
 
 /// Traces alpha_i of @p dart. @p run, if given, maps frame codes to the darts of the same
@@ -356,14 +339,14 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     const int known = run && samePoint(want.z, D.z) ? run[frameCode(want.d)] : kSeveralDarts;
     if (known >= 0) return known;
     if (known == kNoDart) {
-        if (implicitIn(set, rec[t], t, want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
+        if (implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
     } else if (samePoint(want.z, D.z)) {
         const std::size_t lo = rec[t].begin, hi = rec[t].end;
         for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
             if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
         for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && samePoint(set.darts[k].z, D.z); ++k)
             if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
-        if (implicitIn(set, rec[t], t, want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
+        if (implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
     }
     // Cancelled fold points passed on the way (each occurrence at most once per direction).
     long passed = 0;
@@ -376,7 +359,7 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
         if (R.vol != 0 && (step > 0 || !samePoint(target.z, D.z))) {
             const long found = findDart(set, R, target.z, target.d);
             if (found >= 0) return found;
-            if (implicitIn(set, R, t, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
+            if (implicitIn(set, R, target.z, target.d)) return encodeImplicitPartner(set.occurrence(t, target.z));
             const int cancelled = i == 0 ? set.cancelledPoint(t, target.z) : 0;
             if (cancelled == 1 ||
                 (cancelled == 2 && T.contains(set.pointSides(t, T, target.z), target.d[0], target.d[1], target.d[2]))) {
@@ -552,7 +535,7 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
                     for (std::size_t x = range.first; x < range.second && found < 0; ++x)
                         if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
                     if (found < 0) {
-                        if (!implicitIn(set, R, w.t, w.tz, want)) continue;
+                        if (!implicitIn(set, R, w.tz, want)) continue;
                         found = encodeImplicitPartner(set.occurrence(w.t, w.tz));
                     }
                     resolve(1u << k, found, w.step);
@@ -766,7 +749,7 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                     const int hit = run[static_cast<std::size_t>(frameCode(want))];
                     // No dart with that frame in the run but an implicit cell there: the
                     // answer traceOne() gives at once, with or without the run table.
-                    const bool implicit = hit == kNoDart && implicitIn(darts, rec[static_cast<std::size_t>(D[d].tet)], D[d].tet, D[d].z, want);
+                    const bool implicit = hit == kNoDart && implicitIn(darts, rec[static_cast<std::size_t>(D[d].tet)], D[d].z, want);
                     if (def) {
                         // What pass 2 would trace: only the implicit answer is known here,
                         // and a link back still takes precedence over it.

@@ -29,25 +29,8 @@ const std::array<std::array<AxisDir, 3>, 48>& allFrames() {
 }
 
 long DartSet::find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
-    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
-    if (slot >= 0) {
-        const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
-        long local = 0;
-        for (int k = 0; k < 3; ++k) {
-            const int c = z[k] - di.lo[k];
-            if (c < 0 || c >= di.dims[k]) return -1;
-            local = local * di.dims[k] + c;
-        }
-        const std::size_t base = tet_begin[static_cast<std::size_t>(t)];
-        for (std::size_t k = base + di.offset[static_cast<std::size_t>(local)]; k < base + di.offset[static_cast<std::size_t>(local) + 1]; ++k)
-            if (sameFrame(darts[k].d, d)) return static_cast<long>(k);
-        return -1;
-    }
-    auto first = darts.begin() + static_cast<long>(tet_begin[t]);
-    auto last = darts.begin() + static_cast<long>(tet_begin[t + 1]);
-    auto it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
-    if (it != last && samePoint(it->z, z) && sameFrame(it->d, d)) return it - darts.begin();
-    return -1;
+    return findInTet(dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)], tet_begin[static_cast<std::size_t>(t)],
+                     tet_begin[static_cast<std::size_t>(t) + 1], z, d);
 }
 
 std::vector<TetSoS> buildTetSoS(const CornerParams& params, int threads) {
@@ -113,15 +96,6 @@ std::array<int, 4> DartSet::pointSides(int t, const TetSoS& T, const Vec3i& z) c
         }
     }
     return T.sides(Vec3d(z[0], z[1], z[2]));
-}
-
-bool DartSet::implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
-    const int slot = dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)];
-    if (slot < 0) return false;
-    const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
-    if (di.flags.empty()) return false;
-    const long l = di.local(cellLowerCorner(z, d));
-    return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include "../Core/DefaultInitAllocator.hh"
 #include "TetSoS.hh"
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -89,6 +90,10 @@ struct DartSet {
 
     /// Index of the dart of tet @p t with key (z, d), or -1.
     long find(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
+    /// find() for a caller that already has the tet's dense slot @p slot (dense_slot, or -1)
+    /// and its dart range [@p begin, @p end) (tet_begin): the same index, without reading
+    /// those two arrays again (the tracing keeps them in one record per tet).
+    long findInTet(int slot, std::size_t begin, std::size_t end, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
     /// Occurrence id of grid point @p z in the closed image of tet @p t (a vertex known
     /// without darts), or -1 if @p t has no dense index with flags or @p z is outside.
     long occurrence(int t, const Vec3i& z) const;
@@ -113,7 +118,11 @@ struct DartSet {
     /// computed (TetSoS::sides()).
     std::array<int, 4> pointSides(int t, const TetSoS& T, const Vec3i& z) const;
     /// True if the unit cell of the dart (z, d) in tet @p t is implicit (no darts stored).
-    bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
+    bool implicitCell(int t, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
+        return implicitInSlot(dense_slot.empty() ? -1 : dense_slot[static_cast<std::size_t>(t)], z, d);
+    }
+    /// implicitCell() for a caller that already has the tet's dense slot @p slot (or -1).
+    bool implicitInSlot(int slot, const Vec3i& z, const std::array<AxisDir, 3>& d) const;
 };
 
 /// The 48 axis frames (d1, d2, d3) in lexicographic order.
@@ -139,6 +148,31 @@ inline Vec3i cellLowerCorner(const Vec3i& z, const std::array<AxisDir, 3>& d) {
     for (AxisDir x : d)
         if (dirSign(x) < 0) --c[dirAxis(x)];
     return c;
+}
+
+inline long DartSet::findInTet(int slot, std::size_t begin, std::size_t end, const Vec3i& z,
+                               const std::array<AxisDir, 3>& d) const {
+    if (slot >= 0) {
+        const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+        const long l = di.local(z);
+        if (l < 0) return -1;
+        for (std::size_t k = begin + di.offset[static_cast<std::size_t>(l)]; k < begin + di.offset[static_cast<std::size_t>(l) + 1]; ++k)
+            if (sameFrame(darts[k].d, d)) return static_cast<long>(k);
+        return -1;
+    }
+    const Dart* first = darts.data() + begin;
+    const Dart* last = darts.data() + end;
+    const Dart* it = std::lower_bound(first, last, 0, [&](const Dart& x, int) { return dartKeyLess(x.z, x.d, z, d); });
+    if (it != last && samePoint(it->z, z) && sameFrame(it->d, d)) return it - darts.data();
+    return -1;
+}
+
+inline bool DartSet::implicitInSlot(int slot, const Vec3i& z, const std::array<AxisDir, 3>& d) const {
+    if (slot < 0) return false;
+    const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
+    if (di.flags.empty()) return false;
+    const long l = di.local(cellLowerCorner(z, d));
+    return l >= 0 && (di.flags[static_cast<std::size_t>(l)] & 2);
 }
 
 /// Bit j of the per-tet masks passed to extractDarts(): grid points on face j may be
