@@ -300,10 +300,19 @@ private:
     std::optional<FacePlanes> planes_;  // tets that are not exact, at their first non-corner point
 };
 
+/// Forces inlining where the compiler knows how (GCC, Clang): pointFrames() runs once per
+/// grid point of every box; left out of line it cost the cylinder v6 map's darts stage 10 %
+/// (288 tets with dense indices: 0.24 s against 0.21 s at 1 thread).
+#if defined(__GNUC__)
+#define HEXEX_DARTS_INLINE inline __attribute__((always_inline))
+#else
+#define HEXEX_DARTS_INLINE inline
+#endif
+
 /// The frames (bits of allFrames()) of the darts of tet @p T at grid point (x, y, zc), box
 /// index @p l of the dense index @p di (if any; its flags, if any, decide membership and
 /// implicit octants); else @p S (at that point of its row) gives the face signs.
-std::uint64_t pointFrames(const TetSoS& T, BoxFaceSigns& S, const DartSet::DenseIndex* di, int x, int y, int zc,
+HEXEX_DARTS_INLINE std::uint64_t pointFrames(const TetSoS& T, BoxFaceSigns& S, const DartSet::DenseIndex* di, int x, int y, int zc,
                           std::size_t l, const std::array<std::uint64_t, 8>& octantFrames) {
     std::array<int, 4> oz;
     bool interior = true;
