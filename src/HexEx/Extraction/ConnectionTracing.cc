@@ -23,23 +23,9 @@ struct Desc {
 };
 
 // The walks below write their descriptions field by field and read them field by field:
-// a vector stored in pieces (or at a computed index, as Rotation::apply() and dirVec() do)
-// and then loaded whole stalls the store forwarding, which was the hottest spot of a trace.
-
-/// @p z one step along direction @p d, per component.
-Vec3i stepAlong(const Vec3i& z, AxisDir d) {
-    const int a = dirAxis(d), u = dirSign(d);
-    return Vec3i(z[0] + (a == 0 ? u : 0), z[1] + (a == 1 ? u : 0), z[2] + (a == 2 ? u : 0));
-}
-
-/// g.apply(z), each component gathered from the rotation's axis images.
-Vec3i applyToPoint(const GridTransform& g, const Vec3i& z) {
-    const AxisDir* img = detail::kRotationImages.img[g.R.index()];
-    const int v0 = (img[0] & 1) ? -z[0] : z[0], v1 = (img[1] & 1) ? -z[1] : z[1], v2 = (img[2] & 1) ? -z[2] : z[2];
-    const int a0 = img[0] >> 1, a1 = img[1] >> 1;
-    auto pick = [&](int m) { return a0 == m ? v0 : a1 == m ? v1 : v2; };
-    return Vec3i(pick(0) + g.t[0], pick(1) + g.t[1], pick(2) + g.t[2]);
-}
+// a vector stored in pieces and then loaded whole stalls the store forwarding, which was
+// the hottest spot of a trace (Rotation::apply(), GridTransform::apply(), dirVec() and
+// stepAlong() build their results per component).
 
 /// out = alpha_i*(s), the expected partner's description (@p out is not @p s).
 void setAlphaStar(int i, const Desc& s, Desc& out) {
@@ -52,7 +38,7 @@ void setAlphaStar(int i, const Desc& s, Desc& out) {
 
 /// s = g(s), in place.
 void transformDesc(const GridTransform& g, Desc& s) {
-    s.z = applyToPoint(g, s.z);
+    s.z = g.apply(s.z);
     for (int k = 0; k < 3; ++k) s.d[static_cast<std::size_t>(k)] = g.applyDir(s.d[static_cast<std::size_t>(k)]);
 }
 
@@ -500,8 +486,8 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
         }
         const GridTransform& g = tr.halfface[hf.uidx()];
         if (!g.is_identity()) {
-            w.sz = applyToPoint(g, w.sz);
-            w.tz = applyToPoint(g, w.tz);
+            w.sz = g.apply(w.sz);
+            w.tz = g.apply(w.tz);
             w.sd = g.applyDir(w.sd);
             w.td = g.applyDir(w.td);
             for (int k = 0; k < n; ++k)

@@ -21,7 +21,10 @@ struct GridTransform {
     /// g(u) for a point.
     Vec3d apply(const Vec3d& u) const { Vec3d r = R.apply(u); return Vec3d(r[0] + t[0], r[1] + t[1], r[2] + t[2]); }
     /// g(z) for an integer point.
-    Vec3i apply(const Vec3i& z) const { return R.apply(z) + t; }
+    Vec3i apply(const Vec3i& z) const {
+        const Vec3i r = R.apply(z);  // per component: see Rotation::apply()
+        return Vec3i(r[0] + t[0], r[1] + t[1], r[2] + t[2]);
+    }
     /// Image of a direction (translation does not act on directions).
     AxisDir applyDir(AxisDir d) const { return R.apply(d); }
     /// Composition (*this) o (o): apply @p o first.

@@ -21,7 +21,16 @@ inline int dirSign(AxisDir d) { return (d & 1) ? -1 : 1; }
 /// The opposite direction.
 inline AxisDir dirNeg(AxisDir d) { return static_cast<AxisDir>(d ^ 1); }
 /// The direction as an integer vector.
-inline Vec3i dirVec(AxisDir d) { Vec3i v(0, 0, 0); v[dirAxis(d)] = dirSign(d); return v; }
+inline Vec3i dirVec(AxisDir d) {
+    // Built per component, not stored at a computed index (see Rotation::apply()).
+    const int a = dirAxis(d), s = dirSign(d);
+    return Vec3i(a == 0 ? s : 0, a == 1 ? s : 0, a == 2 ? s : 0);
+}
+/// @p z one step along direction @p d (z + dirVec(d)), per component.
+inline Vec3i stepAlong(const Vec3i& z, AxisDir d) {
+    const int a = dirAxis(d), s = dirSign(d);
+    return Vec3i(z[0] + (a == 0 ? s : 0), z[1] + (a == 1 ? s : 0), z[2] + (a == 2 ? s : 0));
+}
 /// Direction code from axis and sign.
 inline AxisDir makeDir(int axis, int sign) { return static_cast<AxisDir>(2 * axis + (sign < 0 ? 1 : 0)); }
 /// Handedness of the frame (a, b, c): +1 if a x b = c, -1 if a x b = -c, 0 if axes repeat.
@@ -74,17 +83,9 @@ public:
     /// Entry (row r, column c) of the matrix.
     int matrix(int r, int c) const { return perm(c) == r ? sign(c) : 0; }
     /// R u for a double vector (exact: only permutes and negates).
-    Vec3d apply(const Vec3d& u) const {
-        Vec3d r;
-        for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
-        return r;
-    }
+    Vec3d apply(const Vec3d& u) const { return gather(u); }
     /// R u for an integer vector.
-    Vec3i apply(const Vec3i& u) const {
-        Vec3i r;
-        for (int j = 0; j < 3; ++j) r[perm(j)] = sign(j) * u[j];
-        return r;
-    }
+    Vec3i apply(const Vec3i& u) const { return gather(u); }
     /// Image of a direction code.
     AxisDir apply(AxisDir d) const {
         const AxisDir img = detail::kRotationImages.img[idx_][d >> 1];
@@ -104,6 +105,19 @@ public:
     int angleClass() const;
 
 private:
+    /// R u: component k of the result is sign(j) u[j] for the j with perm(j) = k, each
+    /// component gathered and written once at its fixed place. (Stores at computed indices
+    /// into a vector that is read whole right after stall the store forwarding; this was
+    /// the hottest instruction of the tracing and of the sanitization.)
+    template <class V>
+    V gather(const V& u) const {
+        const AxisDir* img = detail::kRotationImages.img[idx_];
+        const auto v0 = (img[0] & 1) ? -u[0] : u[0], v1 = (img[1] & 1) ? -u[1] : u[1], v2 = (img[2] & 1) ? -u[2] : u[2];
+        const int a0 = img[0] >> 1, a1 = img[1] >> 1;
+        auto pick = [&](int k) { return a0 == k ? v0 : a1 == k ? v1 : v2; };
+        return V(pick(0), pick(1), pick(2));
+    }
+
     std::uint8_t idx_ = 0;
 };
 

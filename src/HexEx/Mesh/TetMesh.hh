@@ -57,6 +57,12 @@ public:
     const std::array<VertexHandle, 4>& cell_vertices(CellHandle c) const { return cells_[c.uidx()]; }
     /// Corner @p i of cell @p c.
     VertexHandle cell_vertex(CellHandle c, int i) const { return cells_[c.uidx()][i]; }
+    /// Local index (0..3) of vertex @p v among the corners @p cv of a cell, which must contain
+    /// it; without branches (which corner it is varies from cell to cell, so a search
+    /// mispredicts).
+    static int corner_of(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
+        return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
+    }
     /// Swaps corners @p i and @p j of cell @p c (changes its orientation). Invalidates adjacency.
     void swap_corners(CellHandle c, int i, int j);
 

@@ -24,12 +24,6 @@ void quantizeParameter(Vec3d& u, double bound, double epsilon, int& snapped) {
 }
 
 namespace {
-/// The corner (0..3) of the tet with corners @p cv that is @p v, which must be one of
-/// them; without branches (which corner it is varies from tet to tet).
-int cornerOf(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
-    return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
-}
-
 /// g^-1(p), the same doubles as g.inverse().apply(p): R^-1 is the transpose of R, so
 /// coordinate j of the result is sign(j) p[perm(j)] minus the integer sign(j) t[perm(j)].
 /// Reads at computed places and writes to fixed ones (no stores at computed places into a
@@ -43,15 +37,6 @@ Vec3d applyInverse(const GridTransform& g, const Vec3d& p) {
     return r;
 }
 
-/// Writes g(u) into @p out (not @p u itself): the same doubles as g.apply(u), each written
-/// once to its place.
-void applyInto(const GridTransform& g, const Vec3d& u, Vec3d& out) {
-    for (int j = 0; j < 3; ++j) {
-        const int i = g.R.perm(j);
-        out[i] = g.R.sign(j) * u[j] + g.t[i];
-    }
-}
-
 /// The common case, without the breadth-first walk: every face around @p v has the
 /// identity transition and every cell holds the same parameter for @p v. Then all copies
 /// get the same quantized value. Returns false (nothing changed) otherwise. With
@@ -62,7 +47,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     const Vec3d* first = nullptr;
     for (auto it = cells.first; it != cells.second; ++it) {
         const CellHandle c(*it);
-        const int k = cornerOf(mesh.cell_vertices(c), v);
+        const int k = TetMesh::corner_of(mesh.cell_vertices(c), v);
         const Vec3d& p = params[c.uidx()][k];
         if (first && !(p == *first)) return false;
         if (!first) first = &p;
@@ -75,7 +60,7 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     if (u == *first) return true;  // already clean: nothing to write
     for (auto it = cells.first; it != cells.second; ++it) {
         const CellHandle c(*it);
-        params[c.uidx()][cornerOf(mesh.cell_vertices(c), v)] = u;
+        params[c.uidx()][TetMesh::corner_of(mesh.cell_vertices(c), v)] = u;
     }
     return true;
 }
@@ -148,7 +133,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
         if (sanitizeSimpleVertex(mesh, params, tr, oneChart, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;
         if (mark.empty()) mark.assign(mesh.n_cells(), -1);
         star.assign(1, *cells.first);
-        slot.assign(1, static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(*cells.first)), v)));
+        slot.assign(1, static_cast<unsigned char>(TetMesh::corner_of(mesh.cell_vertices(CellHandle(*cells.first)), v)));
         mark[static_cast<std::size_t>(*cells.first)] = static_cast<int>(vi);
         toChart.assign(1, GridTransform());
         for (std::size_t q = 0; q < star.size(); ++q) {
@@ -162,7 +147,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                 if (mark[static_cast<std::size_t>(n)] == static_cast<int>(vi)) continue;
                 mark[static_cast<std::size_t>(n)] = static_cast<int>(vi);
                 star.push_back(n);
-                slot.push_back(static_cast<unsigned char>(cornerOf(mesh.cell_vertices(CellHandle(n)), v)));
+                slot.push_back(static_cast<unsigned char>(TetMesh::corner_of(mesh.cell_vertices(CellHandle(n)), v)));
                 // Faces inside a chart (most of them) have the identity: nothing to compose.
                 toChart.push_back(tr.halfface.is_identity(hf.uidx()) ? toChart[q] : tr.halfface[hf.uidx()] * toChart[q]);
             }
@@ -193,7 +178,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
                               umax + std::max({std::abs(t[0]), std::abs(t[1]), std::abs(t[2])})});
         }
         quantizeParameter(u, bound, opt.epsilon, snapped[static_cast<std::size_t>(chunk)]);
-        for (std::size_t q = 0; q < star.size(); ++q) applyInto(toChart[q], u, corner(q));
+        for (std::size_t q = 0; q < star.size(); ++q) corner(q) = toChart[q].apply(u);
         for (std::size_t k = firstRepair; k < list.size(); ++k)
             list[k].repaired = params[static_cast<std::size_t>(list[k].tet)][list[k].corner];
     }

@@ -18,12 +18,6 @@ int localIndex(const TetMesh& mesh, CellHandle c, VertexHandle v) {
     return -1;
 }
 
-/// Local index of vertex @p v in the corners @p cv, which must contain it; without branches
-/// (which corner it is varies from face to face).
-int cornerIndex(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
-    return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
-}
-
 Vec3i roundVec(const Vec3d& v) {
     return Vec3i(static_cast<int>(std::lround(v[0])), static_cast<int>(std::lround(v[1])),
                  static_cast<int>(std::lround(v[2])));
@@ -319,7 +313,7 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
             for (int k = 0; k < 3; ++k) {
                 const int lc = TetMesh::kFaceCorners[TetMesh::opposite_corner(hf)][k];
                 u[k] = params[c.uidx()][lc];
-                w[k] = params[c2.uidx()][cornerIndex(cv2, cv[lc])];
+                w[k] = params[c2.uidx()][TetMesh::corner_of(cv2, cv[lc])];
             }
             // Same chart on both sides of a proper face: identity (already set). A face whose
             // image is degenerate may hide a rotation about it, so it goes through the fit.
