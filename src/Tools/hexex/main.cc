@@ -1,6 +1,7 @@
 /// @file main.cc
 /// Entry point of the hexex tool: dispatches to the subcommands.
 
+#include "AllocatorTuning.hh"
 #include "Commands.hh"
 
 #include <cstring>
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
         std::cerr << kUsage;
         return argc < 2 ? 2 : 0;
     }
+    HexExTool::keepLargeBlocksOnHeap();
     const std::string cmd = argv[1];
     HexExTool::Args args(argv + 2, argv + argc);
     try {
