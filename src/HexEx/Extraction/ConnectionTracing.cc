@@ -324,15 +324,17 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     // contiguously around this dart (alpha_1..alpha_3 partners usually are there).
     const int known = run && samePoint(want.z, D.z) ? run[frameCode(want.d)] : kSeveralDarts;
     if (known >= 0) return known;
+    // alpha_1 and alpha_2 keep the dart's unit cell, which its own tet never marks implicit
+    // (the extraction stores no dart of such a cell): only alpha_3 needs the test here.
     if (known == kNoDart) {
-        if (implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
+        if (i == 3 && implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
     } else if (samePoint(want.z, D.z)) {
         const std::size_t lo = rec[t].begin, hi = rec[t].end;
         for (std::size_t k = static_cast<std::size_t>(dart); k-- > lo && samePoint(set.darts[k].z, D.z);)
             if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
         for (std::size_t k = static_cast<std::size_t>(dart) + 1; k < hi && samePoint(set.darts[k].z, D.z); ++k)
             if (sameFrame(set.darts[k].d, want.d)) return static_cast<long>(k);
-        if (implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
+        if (i == 3 && implicitIn(set, rec[t], want.z, want.d)) return encodeImplicitPartner(set.occurrence(t, want.z));
     }
     // Cancelled fold points passed on the way (each occurrence at most once per direction).
     long passed = 0;
@@ -513,7 +515,14 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
             const TetSoS& T = tets[static_cast<std::size_t>(w.t)];
             const TetDarts& R = rec[w.t];
             if (R.vol != 0) {
-                const auto range = pointRange(set, R, w.tz);
+                // The point's darts are in key order, so those with d1 == w.td (the only ones
+                // a member can match) are one contiguous part of them: found once for all
+                // members; the first match there is the first in the whole range.
+                auto range = pointRange(set, R, w.tz);
+                while (range.first < range.second && set.darts[range.first].d[0] < w.td) ++range.first;
+                std::size_t sub = range.first;
+                while (sub < range.second && set.darts[sub].d[0] == w.td) ++sub;
+                range.second = sub;
                 for (int k = 0; k < n; ++k) {
                     if (!(w.members >> k & 1)) continue;
                     const std::array<AxisDir, 3> want{w.td, tail[k][0], tail[k][1]};
@@ -734,8 +743,12 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                                                                  : std::array<AxisDir, 3>{f[0], f[1], dirNeg(f[2])};
                     const int hit = run[static_cast<std::size_t>(frameCode(want))];
                     // No dart with that frame in the run but an implicit cell there: the
-                    // answer traceOne() gives at once, with or without the run table.
-                    const bool implicit = hit == kNoDart && implicitIn(darts, rec[static_cast<std::size_t>(D[d].tet)], D[d].z, want);
+                    // answer traceOne() gives at once, with or without the run table. Only
+                    // alpha_3 can get it: alpha_1 and alpha_2 keep the dart's unit cell, and a
+                    // tet stores no dart of a cell its flags mark implicit (the extraction
+                    // drops those octants), so the test would be false.
+                    const bool implicit =
+                        i == 3 && hit == kNoDart && implicitIn(darts, rec[static_cast<std::size_t>(D[d].tet)], D[d].z, want);
                     if (def) {
                         // What pass 2 would trace: only the implicit answer is known here,
                         // and a link back still takes precedence over it.
