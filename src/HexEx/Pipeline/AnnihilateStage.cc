@@ -42,7 +42,7 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
                     for (auto it = undo.rbegin(); it != undo.rend(); ++it) (*in.alpha)[static_cast<std::size_t>(it->first)] = it->second;
                 return kept;
             };
-        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, retry);
+        const AnnihilationStats as = annihilateDarts(*in.alpha, *in.sign, out.alive, &out.heir, samePlace, retry, in.mutual_links);
         out.stats = as;
         out.pairs = as.pairs;
         out.remaining_anti = as.remaining_anti;

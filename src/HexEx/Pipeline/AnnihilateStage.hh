@@ -32,6 +32,9 @@ struct AnnihilateInput {
     /// Per tet, its chart component (tets joined by identity transitions), computed only
     /// when broken cells are reconnected (reconnectBrokenCells()); empty: each tet alone.
     std::function<std::vector<int>()> chart_components;
+    /// Every link in @p alpha is mutual (true for connectStage()'s output, which cuts the
+    /// one-sided ones): passed to annihilateDarts() as mutual_links (same result, less work).
+    bool mutual_links = false;
 };
 
 /// Output of annihilateStage().

@@ -82,8 +82,8 @@ private:
 class Annihilator {
 public:
     Annihilator(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign, std::vector<char>& alive, bool heirs,
-                bool retries)
-        : retries_(retries), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
+                bool retries, bool mutual)
+        : retries_(retries), mutual_(mutual), alpha_(alpha), sign_(sign), alive_(alive), wantHeirs_(heirs), n_(static_cast<long>(alpha.size())),
           flag_(static_cast<std::size_t>(n_), 0), sameVertex_(0) {
         for (std::size_t d = 0; d < flag_.size(); ++d)
             flag_[d] = static_cast<std::uint8_t>((alive_[d] ? kAlive : 0) | (sign_[d] < 0 ? kAnti : 0) | (sign_[d] > 0 ? kRegular : 0));
@@ -133,6 +133,10 @@ public:
 
 private:
     const bool retries_;  // only the retries need the original links and the anti darts (not the 2D extractor)
+    // Every link of the input is mutual (annihilateDarts()'s mutual_links); steps keep it so:
+    // x and y are linked to each other or become free or unconnected, and no alive dart
+    // links to a removed one.
+    const bool mutual_;
 
     static std::size_t idx(long d) { return static_cast<std::size_t>(d); }
     std::array<int, 4>& A(long d) { return alpha_[idx(d)]; }
@@ -396,6 +400,12 @@ void Annihilator::step(long anti, std::deque<long>& requeued) {
     kill(reg);
     kill(anti);
     ++pairs;
+    // With mutual links, phase 0 of runPhased() (partners by alpha_0 only) needs no work
+    // list: its steps never change an alpha_0 link (j = 0 is the pair's own link: x == anti),
+    // so a dart it would re-queue was scanned before with the alpha_0 link it has now, had no
+    // alive regular partner by it then, and has none now (darts only die); processing it again
+    // would change nothing (see the note in run()).
+    if (mutual_ && maxLink_ == 0) return;
     // The neighbours may now be regular/anti pairs themselves.
     for (int j = 0; j < 4; ++j)
         for (long nb : {A(reg)[j], A(anti)[j]}) {
@@ -408,7 +418,9 @@ void Annihilator::step(long anti, std::deque<long>& requeued) {
                 }
                 continue;
             }
-            for (int k = 0; k < 4; ++k) {
+            // With mutual links, a partner m = alpha_k(nb) with k <= maxLink_ is never queued
+            // here (see run()): it is skipped unread.
+            for (int k = mutual_ ? maxLink_ + 1 : 0; k < 4; ++k) {
                 const long m = A(nb)[k];
                 if (m >= 0 && isAliveAnti(m) && !(F(m) & kQueued)) {
                     requeued.push_back(m);
@@ -426,6 +438,14 @@ void Annihilator::run(const std::vector<int>* order) {
     // returns it), and a dart re-queued on the way is behind the scan or not in the order.
     // So the dead ones (most of them in the later phases of runPhased()) are left out at
     // once instead of being skipped, with their links prefetched, one by one.
+    //
+    // Every alive anti dart is in @p order (all of them are in antis_, and a run never makes
+    // a dart alive), so an alive anti dart that is not queued was returned earlier in this run
+    // and found no alive regular partner among alpha_0..alpha_maxLink_ then; its links have
+    // not changed since (a step writes only the links of its neighbours x and y, and
+    // re-queues those that are anti darts), and darts only die. With mutual links, a partner
+    // m = alpha_k(nb), k <= maxLink_, of an alive regular dart nb has alpha_k(m) = nb: it
+    // is dead, regular or queued, never a dart step() would queue; step() skips it unread.
     std::vector<int> live;
     if (order) {
         live.reserve(order->size());
@@ -588,9 +608,9 @@ void Annihilator::collectHeirs(std::vector<std::pair<int, int>>& heirs, const st
 
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs,
-                                  const std::function<bool(int, int)>& same_place, const AnnihilationRetry& retry) {
+                                  const std::function<bool(int, int)>& same_place, const AnnihilationRetry& retry, bool mutual_links) {
     AnnihilationStats st;
-    Annihilator an(alpha, sign, alive, heirs != nullptr, retry.enabled);
+    Annihilator an(alpha, sign, alive, heirs != nullptr, retry.enabled, mutual_links);
     an.runAll();
     if (retry.enabled && an.pairs > 0) an.retry(retry, st);
     st.pairs = an.pairs;

@@ -72,9 +72,14 @@ struct AnnihilationRetry {
 /// hex cells (AnnihilationRetry). With @p same_place (true if two darts, the first the smaller, sit at the same
 /// grid point of the same tet), an entry at the same place and with the same heir as the
 /// entry before it is left out: it would add the same candidate again.
+///
+/// @p mutual_links promises that every link is mutual: alpha_i(alpha_i(d)) = d wherever
+/// alpha_i(d) is another dart (connectStage() cuts the one-sided ones). The result is the
+/// same as without the promise; the work list then skips checks that cannot succeed
+/// (algorithm.md, "Annihilation with mutual links"). A broken promise can change the result.
 AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const std::vector<signed char>& sign,
                                   std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs = nullptr,
                                   const std::function<bool(int, int)>& same_place = {},
-                                  const AnnihilationRetry& retry = {});
+                                  const AnnihilationRetry& retry = {}, bool mutual_links = false);
 
 } // namespace HexEx
