@@ -95,6 +95,7 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* own
     enter("postprocess");
     AnnihilateInput annihilateIn{&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads, {}, {}};
     annihilateIn.retry.enabled = opt.annihilation_retries && !implicit;
+    annihilateIn.mutual_links = true;  // connectStage() keeps only mutual links
     annihilateIn.chart_components = [&]() { return identityChartComponents(mesh, pre.transitions); };
     AnnihilateOutput survivors = annihilateStage(annihilateIn);
     addToReport(survivors, rep);
