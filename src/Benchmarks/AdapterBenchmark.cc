@@ -284,11 +284,9 @@ int main(int argc, char** argv) {
         const bool split = path == "ovm-native-split";
         r = timeOneCall(
             [&] {
+                // The accessor of the halfface overload (the property's values by pointer, prefetched).
                 return HexEx::detail::ovmToParametrizedTetMesh(
-                    tm,
-                    [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
-                        const OpenVolumeMesh::VertexHandle&) -> const OpenVolumeMesh::Geometry::Vec3d& { return prop[hf]; },
-                    0);
+                    tm, HexEx::detail::OvmHalffaceParams<OpenVolumeMesh::Geometry::Vec3d>{prop.data_vector().data()}, 0);
             },
             [&](HexEx::HexMesh& hm, Timings& t) {  // the writing of the one-call overload (extractOvm())
                 HexEx::OvmHexOutput<OvmHexes> out(hexMesh);

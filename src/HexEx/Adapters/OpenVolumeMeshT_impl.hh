@@ -14,9 +14,11 @@
 #include <algorithm>
 #include <array>
 #include <climits>
+#include <iterator>
 #include <memory>
 #include <cstddef>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -127,6 +129,93 @@ std::unique_ptr<std::array<int, 3>[]> ovmFaceLoopTable(const Mesh& mesh, int thr
     return table;
 }
 
+/// True if @p P has `prefetch(HalfFaceHandle, CellHandle)`: a parameter accessor of
+/// ovmToParametrizedTetMesh() whose values can be requested ahead of their reading.
+template <class P, class = void>
+struct hasParamPrefetch : std::false_type {};
+/// Specialization for accessors with `prefetch()`.
+template <class P>
+struct hasParamPrefetch<P, std::void_t<decltype(std::declval<const P&>().prefetch(OpenVolumeMesh::HalfFaceHandle(),
+                                                                                  OpenVolumeMesh::CellHandle()))>>
+    : std::true_type {};
+
+/// Parameter accessor of ovmToParametrizedTetMesh() for HexHex's convention: the value of a
+/// halfface property read from the property's storage (OpenVolumeMesh's public
+/// `data_vector()`), one load per value instead of two through the property's shared
+/// storage pointer, and requested ahead of its reading by prefetch().
+template <class VecT>
+struct OvmHalffaceParams {
+    const VecT* values;  ///< the property's values, indexed by halfface
+
+    /// Parameter of the corner opposite @p hf (the cell and vertex are not needed).
+    const VecT& operator()(const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
+                           const OpenVolumeMesh::VertexHandle&) const {
+        return values[hf.uidx()];
+    }
+    /// Requests the value of @p hf into the cache (both ends: a value may span two lines).
+    void prefetch(const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&) const {
+#if defined(__GNUC__)
+        const char* p = reinterpret_cast<const char*>(values + hf.uidx());
+        __builtin_prefetch(p);
+        __builtin_prefetch(p + sizeof(VecT) - 1);
+#else
+        (void)hf;
+#endif
+    }
+};
+
+/// Forward iterator over the cells of a read (ovmToParametrizedTetMesh()) giving each cell's
+/// four corner parameters from the accessor, corner i's value on the halfface opposite it:
+/// the parameter array is assigned from it in one pass (allocated once, each value written
+/// once, no zeroing of the array first), the values of the cells ahead requested early.
+template <class ParamOf>
+struct OvmParamIterator {
+    using iterator_category = std::forward_iterator_tag;  ///< one pass
+    using value_type = std::array<Vec3d, 4>;               ///< a cell's corner parameters
+    using difference_type = std::ptrdiff_t;                ///< cells between two iterators
+    using pointer = const value_type*;                     ///< unused
+    using reference = value_type;                          ///< values are computed
+
+    const ParamOf* paramOf = nullptr;                                 ///< the accessor (with prefetch())
+    const std::array<int, 4>* opposite = nullptr;                     ///< per cell: halfface opposite corner i
+    const std::array<VertexHandle, 4>* corners = nullptr;             ///< per cell: its corners
+    std::size_t cell = 0, end = 0;                                    ///< position, number of cells
+    bool swap12 = false;                                              ///< corners 1 and 2 exchanged (outward mesh)
+
+    /// Corner parameters of the current cell (corners 1 and 2 exchanged if #swap12).
+    value_type operator*() const {
+        constexpr std::size_t kAhead = 8;
+        if (cell + kAhead < end) {
+            const OpenVolumeMesh::CellHandle ah(static_cast<int>(cell + kAhead));
+            for (const int hf : opposite[cell + kAhead]) paramOf->prefetch(OpenVolumeMesh::HalfFaceHandle(hf), ah);
+        }
+        const OpenVolumeMesh::CellHandle ch(static_cast<int>(cell));
+        value_type u;
+        for (std::size_t i = 0; i < 4; ++i) {
+            const auto& ui = (*paramOf)(OpenVolumeMesh::HalfFaceHandle(opposite[cell][i]), ch,
+                                        OpenVolumeMesh::VertexHandle(corners[cell][i].idx()));
+            u[i] = Vec3d(ui[0], ui[1], ui[2]);
+        }
+        if (swap12) std::swap(u[1], u[2]);
+        return u;
+    }
+    /// Next cell.
+    OvmParamIterator& operator++() {
+        ++cell;
+        return *this;
+    }
+    /// Next cell (postfix).
+    OvmParamIterator operator++(int) {
+        OvmParamIterator old = *this;
+        ++cell;
+        return old;
+    }
+    /// Same position.
+    bool operator==(const OvmParamIterator& o) const { return cell == o.cell; }
+    /// Different position.
+    bool operator!=(const OvmParamIterator& o) const { return cell != o.cell; }
+};
+
 /// Cells per block of the parallel read (ovmToParametrizedTetMesh()): the signed volume is
 /// summed per block and the block sums in block order, so the orientation test rounds the
 /// same for any thread count.
@@ -155,7 +244,13 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     std::vector<Vec3d> positions(nv);
     std::vector<std::array<VertexHandle, 4>> cells(nc);
     ParametrizedTetMesh pm;
-    pm.params.resize(nc);
+    // An accessor with prefetch() (a plain halfface property) is read after the corners, in
+    // one pass that assigns the parameter array (no zeroing of 96 B per tet first); the
+    // others (a map per cell, slow to look up) are read on the threads into the sized array.
+    constexpr bool kParamPass = hasParamPrefetch<std::decay_t<ParamOf>>::value;
+    std::unique_ptr<std::array<int, 4>[]> oppositeTable;  // per cell: the halfface opposite corner i
+    if constexpr (kParamPass) oppositeTable.reset(new std::array<int, 4>[nc]);  // not zeroed: every entry is written
+    else pm.params.resize(nc);
     if (given) givenOut->assign(4 * nc, 0);
     const int nThreads = nc < 2 * kOvmReadBlock ? 1 : resolveThreadCount(threads);
     parallelChunks(nv, nThreads, [&](int, std::size_t b, std::size_t e) {
@@ -176,8 +271,8 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
         std::array<VertexHandle, 4> h;
         OpenVolumeMesh::VertexHandle loops[4][3];
         // Cells are read in order; the halfface list of a cell ahead is requested, and the
-        // loop entries and parameters of the one half as far ahead.
-        constexpr std::size_t kAhead = 8;
+        // loop entries of the one half as far ahead.
+        constexpr std::size_t kAhead = 16;
         const std::size_t c0 = bBegin * kOvmReadBlock, cEnd = std::min(nc, bEnd * kOvmReadBlock);
         const auto prefetchAhead = [&](std::size_t a) {
 #if defined(__GNUC__)
@@ -211,11 +306,14 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
                 }
                 ovmCornersFromLoops(c, hfs, loops, cv, opposite);
                 const OpenVolumeMesh::CellHandle ch(static_cast<int>(c));
-                std::array<Vec3d, 4>& u = pm.params[c];
                 for (std::size_t i = 0; i < 4; ++i) {
                     h[i] = VertexHandle(cv[i].idx());
-                    const auto& ui = paramOf(opposite[i], ch, cv[i]);
-                    u[i] = Vec3d(ui[0], ui[1], ui[2]);
+                    if constexpr (kParamPass) {
+                        oppositeTable[c][i] = opposite[i].idx();
+                    } else {
+                        const auto& ui = paramOf(opposite[i], ch, cv[i]);
+                        pm.params[c][i] = Vec3d(ui[0], ui[1], ui[2]);
+                    }
                     if (given) {
                         const int r = (*given)[opposite[i]];
                         const bool interior = mesh.incident_cell(mesh.opposite_halfface_handle(opposite[i])).is_valid();
@@ -238,11 +336,18 @@ ParametrizedTetMesh ovmToParametrizedTetMesh(const Mesh& mesh, ParamOf&& paramOf
     loopTable.reset();  // freed before the adjacency is built
     double volume = 0;
     for (const double v : blockVolume) volume += v;
-    if (volume < 0)  // stored with outward halffaces: turn every tet the other way
+    const bool outward = volume < 0;  // stored with outward halffaces: turn every tet the other way
+    if constexpr (kParamPass) {
+        using It = OvmParamIterator<std::decay_t<ParamOf>>;
+        pm.params.assign(It{&paramOf, oppositeTable.get(), cells.data(), 0, nc, outward},
+                         It{&paramOf, oppositeTable.get(), cells.data(), nc, nc, outward});
+        oppositeTable.reset();
+    }
+    if (outward)
         parallelChunks(nc, nThreads, [&](int, std::size_t b, std::size_t e) {
             for (std::size_t c = b; c < e; ++c) {
                 std::swap(cells[c][1], cells[c][2]);
-                std::swap(pm.params[c][1], pm.params[c][2]);
+                if (!kParamPass) std::swap(pm.params[c][1], pm.params[c][2]);
                 if (given) std::swap((*givenOut)[4 * c + 1], (*givenOut)[4 * c + 2]);
             }
         });
@@ -382,9 +487,7 @@ ExtractionReport extractHexMesh(const TetMeshT& tetMesh, const OpenVolumeMesh::H
                                 const OvmHexProperties& hexResults) {
     return detail::extractOvm(
         tetMesh,
-        [&](const OpenVolumeMesh::HalfFaceHandle& hf, const OpenVolumeMesh::CellHandle&,
-            const OpenVolumeMesh::VertexHandle&) -> const VecT& { return parameters[hf]; },
-        hexMesh, options, results, hexResults);
+        detail::OvmHalffaceParams<VecT>{parameters.data_vector().data()}, hexMesh, options, results, hexResults);
 }
 
 } // namespace HexEx

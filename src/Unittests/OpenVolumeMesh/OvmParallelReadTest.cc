@@ -1,7 +1,8 @@
 // The OpenVolumeMesh one-call overloads' read (detail::ovmToParametrizedTetMesh()) on several
 // threads: the same built-in mesh and parameters for any thread count, equal to the
 // sequential OvmTetMesh view's, also for meshes stored with outward halffaces, and the error
-// of the first bad cell whichever thread meets it.
+// of the first bad cell whichever thread meets it; both through a plain accessor (read on the
+// threads) and through the halfface overload's OvmHalffaceParams (read in a pass of its own).
 
 #include "../../TestSupport/OvmTetFixtures.hh"
 
@@ -38,6 +39,14 @@ HexEx::ParametrizedTetMesh readOn(const Mesh& m, int threads) {
         threads);
 }
 
+/// The read of @p m through the halfface overload's accessor (parameters in a pass of their own).
+template <class Mesh>
+HexEx::ParametrizedTetMesh readWithAccessorOn(const Mesh& m, int threads) {
+    const auto prop = *m.template get_halfface_property<OvmVec>(HexEx::kOvmParametrization);
+    return HexEx::detail::ovmToParametrizedTetMesh(m, HexEx::detail::OvmHalffaceParams<OvmVec>{prop.data_vector().data()},
+                                                   threads);
+}
+
 /// Positions, corners and parameters of @p a and @p b equal bitwise.
 void expectSameCopy(const HexEx::ParametrizedTetMesh& a, const HexEx::ParametrizedTetMesh& b, const std::string& what) {
     ASSERT_EQ(a.mesh.n_vertices(), b.mesh.n_vertices()) << what;
@@ -71,6 +80,8 @@ TEST(OvmParallelRead, SameCopyForAnyThreadCountAndAsTheSequentialView) {
             const HexEx::ParametrizedTetMesh r = readOn(m, threads);
             expectSameCopy(r, view, kind + ", " + std::to_string(threads) + " threads");
             EXPECT_TRUE(r.mesh.has_adjacency());
+            const HexEx::ParametrizedTetMesh a = readWithAccessorOn(m, threads);
+            expectSameCopy(a, view, kind + ", accessor, " + std::to_string(threads) + " threads");
         }
     }
 }
@@ -103,12 +114,15 @@ TEST(OvmParallelRead, FirstBadCellReportedForAnyThreadCount) {
         if (t == 5000 || t == 40000) hfs[3] = outside;
         ASSERT_TRUE(m.add_cell(hfs, false).is_valid());
     }
-    for (const int threads : {1, 2, 3}) {
-        try {
-            readOn(m, threads);
-            ADD_FAILURE() << "no exception at " << threads << " threads";
-        } catch (const HexEx::InputError& e) {
-            EXPECT_EQ(std::string(e.what()), "OpenVolumeMesh cell 5000 spans more than four vertices") << threads << " threads";
+    for (const int threads : {1, 2, 3})
+        for (const bool accessor : {false, true}) {
+            try {
+                if (accessor) readWithAccessorOn(m, threads);
+                else readOn(m, threads);
+                ADD_FAILURE() << "no exception at " << threads << " threads";
+            } catch (const HexEx::InputError& e) {
+                EXPECT_EQ(std::string(e.what()), "OpenVolumeMesh cell 5000 spans more than four vertices")
+                    << threads << " threads, accessor " << accessor;
+            }
         }
-    }
 }
