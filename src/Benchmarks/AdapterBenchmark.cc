@@ -22,7 +22,15 @@
 /// ovm-native's cpu_write_s; cpu_inc_vertex_s, cpu_inc_edge_s, cpu_inc_face_s: its vertex
 /// lists, edge lists, and face incidences with OpenVolumeMesh's ordering of the halffaces
 /// around every edge); ovm-native-vf is ovm-native into a hex mesh whose edge
-/// incidences the user turned off (vertex and face incidences only). Run one measurement per process:
+/// incidences the user turned off (vertex and face incidences only). The other ways that
+/// OpenVolumeMesh's public API leaves for writing into a hex mesh with all its incidences on
+/// (issue 34; read and extraction as ovm-native): ovm-native-fe turns the face incidences on
+/// before the edge incidences (cpu_inc_face_s: the face incidences alone, cpu_inc_edge_s: the
+/// edge lists with the ordering of the halffaces around every edge); ovm-write-inc writes
+/// with the incidences on from the start (OvmHexOutput's lookup tables, the mesh's
+/// reserve_*() calls, OpenVolumeMesh updating its incidences cell by cell); ovm-write-ovm adds
+/// every hex through OpenVolumeMesh's own add_cell(vertices) with its topology check, the
+/// incidences on from the start (OvmHexOutput's topologyCheck). Run one measurement per process:
 /// the peak resident set size (VmHWM) then belongs to it. Prints one line of
 /// `key=value` pairs; building the input in the user's structure is not timed (input_mb:
 /// the resident memory once it is built, the generated built-in mesh freed except for builtin). view_s:
@@ -188,7 +196,7 @@ int main(int argc, char** argv) {
         std::cerr << "usage: adapter_benchmark cube40|cylinder6|cube20|cylinder6m|cube8|cylinder6s "
                      "builtin|builtin-provenance|arrays|lcc|lcc-native"
 #ifdef HEXEX_BENCH_OVM
-                     "|ovm|ovm-native|ovm-native-split|ovm-native-vf"
+                     "|ovm|ovm-native|ovm-native-split|ovm-native-vf|ovm-native-fe|ovm-write-inc|ovm-write-ovm"
 #endif
                      "\n";
         return 2;
@@ -273,7 +281,8 @@ int main(int argc, char** argv) {
         HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
         r = timeThroughTraits([&] { return HexEx::OvmTetMesh(tm); }, out);
         hexes = out.cells().size();
-    } else if (path == "ovm-native" || path == "ovm-native-split" || path == "ovm-native-vf") {
+    } else if (path == "ovm-native" || path == "ovm-native-split" || path == "ovm-native-vf" || path == "ovm-native-fe" ||
+               path == "ovm-write-inc" || path == "ovm-write-ovm") {
         OvmTets tm;
         HexExTestSupport::buildOvmTets(pm, tm);
         pm = HexEx::ParametrizedTetMesh();
@@ -281,7 +290,7 @@ int main(int argc, char** argv) {
         const auto prop = *tm.get_halfface_property<OpenVolumeMesh::Geometry::Vec3d>(HexEx::kOvmParametrization);
         OvmHexes hexMesh;
         if (path == "ovm-native-vf") hexMesh.enable_edge_bottom_up_incidences(false);  // the user needs no edge incidences
-        const bool split = path == "ovm-native-split";
+        const bool split = path == "ovm-native-split", faceFirst = path == "ovm-native-fe";
         r = timeOneCall(
             [&] {
                 // The accessor of the halfface overload (the property's values by pointer, prefetched).
@@ -289,11 +298,42 @@ int main(int argc, char** argv) {
                     tm, HexEx::detail::OvmHalffaceParams<OpenVolumeMesh::Geometry::Vec3d>{prop.data_vector().data()}, 0);
             },
             [&](HexEx::HexMesh& hm, Timings& t) {  // the writing of the one-call overload (extractOvm())
+                if (path == "ovm-write-inc") {  // incidences on while writing: no OvmHexOutput::reserve()
+                    HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
+                    out.clear();
+                    hexMesh.reserve_vertices(hm.vertices.size());
+                    hexMesh.reserve_edges(hm.vertices.size() + 2 * hm.hexes.size());
+                    hexMesh.reserve_faces(3 * hm.hexes.size() + hm.hexes.size() / 2);
+                    hexMesh.reserve_cells(hm.hexes.size());
+                    for (const HexEx::Vec3d& p : hm.vertices) out.addVertex(p);
+                    for (const auto& h : hm.hexes) {
+                        std::array<std::size_t, 8> hv;
+                        for (std::size_t i = 0; i < 8; ++i) hv[i] = static_cast<std::size_t>(h[i]);
+                        out.addHex(hv);
+                    }
+                    return;
+                }
+                if (path == "ovm-write-ovm") {  // OpenVolumeMesh's own add_cell(vertices), checked
+                    HexEx::OvmHexOutput<OvmHexes> out(hexMesh, /*topologyCheck=*/true);
+                    HexEx::fromHexMesh(hm, out);
+                    return;
+                }
                 HexEx::OvmHexOutput<OvmHexes> out(hexMesh);
                 out.deferIncidences();
                 HexEx::fromHexMesh(hm, out);
                 hm = HexEx::HexMesh();
                 const double c0 = cpuSeconds();
+                if (faceFirst) {  // face incidences first: the ordering is done with the edge lists
+                    hexMesh.enable_vertex_bottom_up_incidences(true);
+                    const double c1 = cpuSeconds();
+                    hexMesh.enable_face_bottom_up_incidences(true);
+                    const double c2 = cpuSeconds();
+                    hexMesh.enable_edge_bottom_up_incidences(true);
+                    const double c3 = cpuSeconds();
+                    t.cpu_inc_vertex = c1 - c0;
+                    t.cpu_inc_face = c2 - c1;
+                    t.cpu_inc_edge = c3 - c2;
+                }
                 if (split) {
                     // restoreIncidences()'s order, kind by kind: the vertex lists, the edge
                     // lists (face incidences still off: no ordering), then the face
@@ -310,7 +350,7 @@ int main(int argc, char** argv) {
                     t.cpu_inc_face = c3 - c2;
                 }
                 out.restoreIncidences();  // with split: nothing left to do
-                if (split) t.cpu_incidences = cpuSeconds() - c0;
+                if (split || faceFirst) t.cpu_incidences = cpuSeconds() - c0;
             });
         hexes = hexMesh.n_cells();
 #endif
