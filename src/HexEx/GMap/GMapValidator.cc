@@ -94,29 +94,42 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
     return count;
 }
 
-/// Orbit labelling for maps whose darts are all alive and whose links are all involutions:
-/// one breadth-first search per cell (<alpha_0, alpha_1, alpha_2>), in dart order (cells
-/// are numbered by their smallest dart); then, cells in parallel, the face, corner and
-/// strip orbits of each cell (they never leave it), numbered within the cell first and
-/// offset by the counts of the cells before it (the numbering does not depend on the
-/// thread count). Fills the equation 3-6 counts of @p v and, if given, @p out.
-/// Cells (<alpha_0, alpha_1, alpha_2> orbits) by breadth-first search in dart order: cell
-/// numbers by smallest dart, each cell's darts in search order. Safe on any map (every dart
-/// is visited once), so it may run before the involution checks are known.
-struct CellSearch {
-    std::vector<int> cell;   ///< per dart: its cell
-    std::vector<int> size;   ///< per cell: number of darts
-    std::vector<int> darts;  ///< the darts, cell after cell
-    std::vector<int> off;    ///< cell c holds darts[off[c] .. off[c + 1])
+/// Orbit labelling for maps whose darts are all alive and whose links are all involutions,
+/// in one pass over the cells (<alpha_0, alpha_1, alpha_2> orbits): each cell is found by a
+/// breadth-first search from its smallest dart (cells numbered in dart order, each cell's
+/// darts in search order), and while its darts are in the cache its strip, face and corner
+/// orbits (they never leave the cell) are walked, faces and corners numbered cell after
+/// cell. Terminates on any map whose links are dart indices (every walk stops at a marked
+/// dart), so it may run before the involution checks are known; its labels are used only
+/// if they find an involutive map with every dart alive.
+struct CellLabels {
+    GMapValidation counts;     ///< equation 3-6 counts
+    std::vector<int> cell;     ///< per dart: its cell
+    std::vector<int> size;     ///< per cell: number of darts
+    std::vector<int> darts;    ///< the darts, cell after cell
+    std::vector<int> off;      ///< cell c holds darts[off[c] .. off[c + 1])
+    std::vector<int> face;     ///< per dart: its face orbit
+    std::vector<int> corner;   ///< per dart: its corner orbit
+    std::vector<int> fsize;    ///< per face orbit: number of darts
+    std::vector<int> ksize;    ///< per corner orbit: number of darts
 };
 
-CellSearch findCells(const GMap<3>& g) {
+CellLabels labelCells(const GMap<3>& g) {
     const auto& L = g.links();
     const std::size_t n = L.size();
-    CellSearch cs;
+    CellLabels cs;
     cs.cell.assign(n, -1);
+    cs.face.assign(n, -1);
+    cs.corner.assign(n, -1);
     cs.darts.reserve(n);
     cs.off.push_back(0);
+    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
+    auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
+    std::vector<int>& face = cs.face;
+    std::vector<int>& corner = cs.corner;
+    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
+    constexpr int kStripSeen = -2;
+    GMapValidation& v = cs.counts;
     for (std::size_t s = 0; s < n; ++s) {
         if (cs.cell[s] >= 0) continue;
         const int c = static_cast<int>(cs.size.size());
@@ -134,104 +147,59 @@ CellSearch findCells(const GMap<3>& g) {
                 }
             }
         }
-        cs.size.push_back(static_cast<int>(cs.darts.size() - first));
+        const int size = static_cast<int>(cs.darts.size() - first);
+        cs.size.push_back(size);
         cs.off.push_back(static_cast<int>(cs.darts.size()));
+        const int* const begin = cs.darts.data() + first;
+        const int* const end = cs.darts.data() + cs.darts.size();
+        if (size != 48) v.eq6_hex += size;
+        for (const int* x = begin; x != end; ++x) {
+            if (corner[static_cast<std::size_t>(*x)] != -1) continue;
+            corner[static_cast<std::size_t>(*x)] = kStripSeen;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 0); }, a121, [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
+                [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
+            if (m != 8) v.eq5_strip += m;
+        }
+        for (const int* x = begin; x != end; ++x) {
+            if (face[static_cast<std::size_t>(*x)] >= 0) continue;
+            const int f = static_cast<int>(cs.fsize.size());
+            face[static_cast<std::size_t>(*x)] = f;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
+                [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { face[static_cast<std::size_t>(d)] = f; });
+            cs.fsize.push_back(m);
+            if (m != 8) v.eq3_quad += m;
+        }
+        for (const int* x = begin; x != end; ++x) {
+            if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
+            const int k = static_cast<int>(cs.ksize.size());
+            corner[static_cast<std::size_t>(*x)] = k;
+            const int m = walkAlternating(
+                *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
+                [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
+            cs.ksize.push_back(m);
+            if (m != 6) v.eq4_corner += m;
+        }
     }
     return cs;
 }
 
-void labelCellByCell(const GMap<3>& g, GMapValidation& v, HexOrbitLabels* out, int threads, CellSearch&& cs) {
-    const auto& L = g.links();
-    const std::size_t n = L.size();
-    std::vector<int> face(n, -1), corner(n, -1);
-    std::vector<int> cell = std::move(cs.cell), csize = std::move(cs.size), cdarts = std::move(cs.darts), coff = std::move(cs.off);
-    auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
-    auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
-    const std::size_t nc = csize.size();
-    // Per chunk of cells: its face and corner orbits numbered 0, 1, ... through the chunk
-    // (cell after cell) and their sizes, in cell order.
-    struct Part {
-        GMapValidation counts;
-        std::vector<int> fsize, ksize;     // sizes of the chunk's orbits, cell after cell
-    };
-    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, nc / 4096)));
-    std::vector<Part> parts(static_cast<std::size_t>(chunks));
-    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
-    constexpr int kStripSeen = -2;
-    parallelChunks(nc, chunks, [&](int k, std::size_t cb, std::size_t ce) {
-        Part& P = parts[static_cast<std::size_t>(k)];
-        for (std::size_t c = cb; c < ce; ++c) {
-            int* const begin = cdarts.data() + coff[c];
-            int* const end = cdarts.data() + coff[c + 1];
-            if (csize[c] != 48) P.counts.eq6_hex += csize[c];
-            for (const int* x = begin; x != end; ++x) {
-                if (corner[static_cast<std::size_t>(*x)] != -1) continue;
-                corner[static_cast<std::size_t>(*x)] = kStripSeen;
-                const int m = walkAlternating(
-                    *x, [&](int d) { return a(d, 0); }, a121,
-                    [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
-                    [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
-                if (m != 8) P.counts.eq5_strip += m;
-            }
-            for (const int* x = begin; x != end; ++x) {
-                if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-                const int f = static_cast<int>(P.fsize.size());
-                face[static_cast<std::size_t>(*x)] = f;
-                const int m = walkAlternating(
-                    *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
-                    [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; },
-                    [&](int d) { face[static_cast<std::size_t>(d)] = f; });
-                P.fsize.push_back(m);
-                if (m != 8) P.counts.eq3_quad += m;
-            }
-            for (const int* x = begin; x != end; ++x) {
-                if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-                const int q = static_cast<int>(P.ksize.size());
-                corner[static_cast<std::size_t>(*x)] = q;
-                const int m = walkAlternating(
-                    *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
-                    [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; },
-                    [&](int d) { corner[static_cast<std::size_t>(d)] = q; });
-                P.ksize.push_back(m);
-                if (m != 6) P.counts.eq4_corner += m;
-            }
-        }
-    });
-    // Global numbers: the chunk's number + orbits of all earlier chunks (the same numbers as
-    // counting cell by cell; the first chunk's are final).
-    std::vector<int> fbase(parts.size(), 0), kbase(parts.size(), 0), fsize, ksize;
-    {
-        for (std::size_t k = 0; k < parts.size(); ++k) {
-            const Part& P = parts[k];
-            fbase[k] = static_cast<int>(fsize.size());
-            kbase[k] = static_cast<int>(ksize.size());
-            fsize.insert(fsize.end(), P.fsize.begin(), P.fsize.end());
-            ksize.insert(ksize.end(), P.ksize.begin(), P.ksize.end());
-            v.eq3_quad += P.counts.eq3_quad;
-            v.eq4_corner += P.counts.eq4_corner;
-            v.eq5_strip += P.counts.eq5_strip;
-            v.eq6_hex += P.counts.eq6_hex;
-        }
-    }
-    parallelChunks(nc, chunks, [&](int k, std::size_t cb, std::size_t ce) {
-        const int fb = fbase[static_cast<std::size_t>(k)], kb = kbase[static_cast<std::size_t>(k)];
-        if (fb == 0 && kb == 0) return;
-        for (int q = coff[cb]; q < coff[ce]; ++q) {
-            const auto x = static_cast<std::size_t>(cdarts[static_cast<std::size_t>(q)]);
-            face[x] += fb;
-            corner[x] += kb;
-        }
-    });
-    if (out) {
-        out->cell = std::move(cell);
-        out->cell_size = std::move(csize);
-        out->face = std::move(face);
-        out->face_size = std::move(fsize);
-        out->corner = std::move(corner);
-        out->corner_size = std::move(ksize);
-        out->cell_darts = std::move(cdarts);
-        out->cell_offset = std::move(coff);
-    }
+/// Takes the labels of @p cs into @p out (if given) and its equation 3-6 counts into @p v.
+void useCellLabels(CellLabels&& cs, GMapValidation& v, HexOrbitLabels* out) {
+    v.eq3_quad += cs.counts.eq3_quad;
+    v.eq4_corner += cs.counts.eq4_corner;
+    v.eq5_strip += cs.counts.eq5_strip;
+    v.eq6_hex += cs.counts.eq6_hex;
+    if (!out) return;
+    out->cell = std::move(cs.cell);
+    out->cell_size = std::move(cs.size);
+    out->face = std::move(cs.face);
+    out->face_size = std::move(cs.fsize);
+    out->corner = std::move(cs.corner);
+    out->corner_size = std::move(cs.ksize);
+    out->cell_darts = std::move(cs.darts);
+    out->cell_offset = std::move(cs.off);
 }
 
 
@@ -370,11 +338,11 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
-    // With two or more threads the cell search (sequential) runs on one of them while the
-    // others do the per-dart checks; it is used only if the checks find an involutive map
-    // with every dart alive.
+    // With two or more threads the cell search and labelling (labelCells(), sequential)
+    // runs on one of them while the others do the per-dart checks; it is used only if the
+    // checks find an involutive map with every dart alive.
     const bool overlap = threads >= 2 && n >= 65536;
-    CellSearch cells;
+    CellLabels cells;
     const int checkThreads = overlap ? threads - 1 : std::max(1, threads);
     const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(checkThreads), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
@@ -404,7 +372,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     };
     if (overlap) {
         parallelChunks(2, 2, [&](int job, std::size_t, std::size_t) {
-            if (job == 0) cells = findCells(g);
+            if (job == 0) cells = labelCells(g);
             else parallelChunks(n, chunks, checks);
         });
     } else {
@@ -419,8 +387,8 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq2_face_connection += w.eq2_face_connection;
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
-        if (!overlap) cells = findCells(g);
-        labelCellByCell(g, v, labels, threads, std::move(cells));
+        if (!overlap) cells = labelCells(g);
+        useCellLabels(std::move(cells), v, labels);
         if (!v.valid()) collectExamples(g, v);
         return v;
     }

@@ -169,6 +169,25 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         std::vector<Vec3d> supportPts;  // their positions
         std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
+            // Usual case: no extras and every dart of the class at the very same position
+            // (operator==, as distinctPositions() compares). The rules below then give the
+            // first boundary dart's position if the class has one (the boundary rule with one
+            // distinct position), else the first dart's, and list no candidates.
+            if (off[l] < off[l + 1] && xoff[l] == xoff[l + 1]) {
+                const auto q0 = static_cast<std::size_t>(darts.point[static_cast<std::size_t>(idx[static_cast<std::size_t>(off[l])])]);
+                const Vec3d& p0 = darts.position[q0];
+                std::size_t firstBoundary = darts.boundary_hf[q0][0] >= 0 ? q0 : darts.position.size();
+                bool same = true;
+                for (int k = off[l] + 1; k < off[l + 1] && same; ++k) {
+                    const auto q = static_cast<std::size_t>(darts.point[static_cast<std::size_t>(idx[static_cast<std::size_t>(k)])]);
+                    same = darts.position[q] == p0;
+                    if (firstBoundary == darts.position.size() && darts.boundary_hf[q][0] >= 0) firstBoundary = q;
+                }
+                if (same) {
+                    out[l] = firstBoundary < darts.position.size() ? darts.position[firstBoundary] : p0;
+                    continue;
+                }
+            }
             all.clear();
             bnd.clear();
             planes.clear();
