@@ -130,6 +130,45 @@ TEST(DartExtraction, ImplicitCellsAreTheSameForAnyThreadCount) {
     }
 }
 
+TEST(DartExtraction, FrameIndexIsThePositionInAllFrames) {
+    const auto& all = allFrames();
+    for (int k = 0; k < 48; ++k) EXPECT_EQ(frameIndex(all[static_cast<std::size_t>(k)]), k);
+}
+
+TEST(DartExtraction, FindAnswersEveryFrameAtEveryPointByScanning) {
+    // DartSet::find() with dense indices takes a point's dart at its frameIndex() when the
+    // point has all 48 and stops its scan at the first larger key otherwise; a plain scan of
+    // the tet's darts must give the same answer for every frame at every point with darts,
+    // present or absent (points with 48 darts, with some of them, implicit cells around).
+    for (const bool implicit : {false, true}) {
+        SCOPED_TRACE(implicit ? "implicit cells" : "all darts stored");
+        const ParametrizedTetMesh pm = generateCube(2, 12);
+        const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+        const std::vector<FaceMask> anyFace(tets.size(), FaceMask(0x0F));
+        const DartSet ds = extractDarts(tets, 2, 1e9, implicit, implicit ? &anyFace : nullptr);
+        ASSERT_FALSE(ds.dense.empty());
+        long full = 0, partial = 0, wrong = 0;
+        for (std::size_t c = 0; c + 1 < ds.tet_begin.size(); ++c)
+            for (std::size_t b = ds.tet_begin[c]; b < ds.tet_begin[c + 1];) {
+                std::size_t e = b;
+                while (e < ds.tet_begin[c + 1] && samePoint(ds.darts[e].z, ds.darts[b].z)) ++e;
+                (e - b == 48 ? full : partial) += 1;
+                for (const auto& f : allFrames()) {
+                    long expected = -1;
+                    for (std::size_t k = b; k < e && expected < 0; ++k)  // the point's darts are contiguous
+                        if (sameFrame(ds.darts[k].d, f)) expected = static_cast<long>(k);
+                    wrong += ds.find(static_cast<int>(c), ds.darts[b].z, f) != expected;
+                }
+                b = e;
+            }
+        if (!implicit) {  // with implicit cells a point keeps fewer than 48
+            EXPECT_GT(full, 0);
+        }
+        EXPECT_GT(partial, 0);
+        EXPECT_EQ(wrong, 0);
+    }
+}
+
 TEST(DartExtraction, CapRefusesWithTheBudgetMessage) {
     for (const bool fold : {false, true}) {
         ParametrizedTetMesh pm = generateCube(2, 4);

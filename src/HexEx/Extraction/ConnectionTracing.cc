@@ -27,14 +27,17 @@ struct Desc {
 // the hottest spot of a trace (Rotation::apply(), GridTransform::apply(), dirVec() and
 // stepAlong() build their results per component).
 
-/// out = alpha_i*(s), the expected partner's description (@p out is not @p s).
-void setAlphaStar(int i, const Desc& s, Desc& out) {
-    const AxisDir d0 = s.d[0], d1 = s.d[1], d2 = s.d[2];
-    out.z = i == 0 ? stepAlong(s.z, d0) : s.z;
+/// out = alpha_i*((z, d)), the expected partner's description (@p out holds neither).
+void setAlphaStar(int i, const Vec3i& z, const std::array<AxisDir, 3>& d, Desc& out) {
+    const AxisDir d0 = d[0], d1 = d[1], d2 = d[2];
+    out.z = i == 0 ? stepAlong(z, d0) : z;
     out.d[0] = i == 0 ? dirNeg(d0) : i == 1 ? d1 : d0;
     out.d[1] = i == 1 ? d0 : i == 2 ? d2 : d1;
     out.d[2] = i == 2 ? d1 : i == 3 ? dirNeg(d2) : d2;
 }
+
+/// out = alpha_i*(s), the expected partner's description (@p out is not @p s).
+void setAlphaStar(int i, const Desc& s, Desc& out) { setAlphaStar(i, s.z, s.d, out); }
 
 /// s = g(s), in place.
 void transformDesc(const GridTransform& g, Desc& s) {
@@ -291,6 +294,16 @@ std::vector<TetDarts> tetDartRecords(const std::vector<TetSoS>& tets, const Dart
     return rec;
 }
 
+/// Starts loading the darts of a tet without a dense index that a trace has just entered:
+/// the binary search that follows (findDart(), pointRange()) would otherwise wait for its
+/// probes' cache lines one after another (at most 8 lines, 25 darts, are asked for).
+inline void prefetchTetDarts(const DartSet& set, const TetDarts& r) {
+    if (r.dense >= 0) return;
+    const auto lo = reinterpret_cast<std::uintptr_t>(set.darts.data() + r.begin) & ~std::uintptr_t{63};
+    const auto hi = std::min(reinterpret_cast<std::uintptr_t>(set.darts.data() + r.end), lo + 512);
+    for (std::uintptr_t a = lo; a < hi; a += 64) __builtin_prefetch(reinterpret_cast<const void*>(a));
+}
+
 /// DartSet::find() with the tet's record.
 inline long findDart(const DartSet& set, const TetDarts& r, const Vec3i& z, const std::array<AxisDir, 3>& d) {
     return set.findInTet(r.dense, r.begin, r.end, z, d);
@@ -317,7 +330,9 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
     int a = 0;
     desc[0].z = D.z;
     desc[0].d = D.d;
-    setAlphaStar(i, desc[0], desc[1]);
+    // From the dart itself, not from desc[0]: its frame was just stored in pieces, and
+    // reading it back across them stalls the store forwarding.
+    setAlphaStar(i, D.z, D.d, desc[1]);
     const Desc& want = desc[1];  // the target before the first step
     int entry = -1;
     // First look among the darts of the same tet at the same grid point: they are stored
@@ -400,6 +415,7 @@ long traceOne(const TetMesh& mesh, const Transitions& tr, const std::vector<TetS
         t = TetMesh::cell(opp).idx();
         entry = TetMesh::opposite_corner(opp);
         ++steps;
+        prefetchTetDarts(set, rec[t]);
         const int sv = rec[t].vol;
         if (sv != 0 && sv != s) {
             a ^= 1;
@@ -498,6 +514,7 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
         w.t = TetMesh::cell(opp).idx();
         w.entry = TetMesh::opposite_corner(opp);
         ++w.step;
+        prefetchTetDarts(set, rec[w.t]);
         const int sv = rec[w.t].vol;
         if (sv != 0 && sv != w.s) {
             std::swap(w.sz, w.tz);
@@ -518,15 +535,24 @@ void traceEdgeGroup(const TetMesh& mesh, const Transitions& tr, const std::vecto
                 // The point's darts are in key order, so those with d1 == w.td (the only ones
                 // a member can match) are one contiguous part of them: found once for all
                 // members; the first match there is the first in the whole range.
+                // A point with all 48 frames holds each once, in allFrames() order: a member's
+                // dart is at its frameIndex() (checked; a mismatch scans as the others do).
                 auto range = pointRange(set, R, w.tz);
-                while (range.first < range.second && set.darts[range.first].d[0] < w.td) ++range.first;
-                std::size_t sub = range.first;
-                while (sub < range.second && set.darts[sub].d[0] == w.td) ++sub;
-                range.second = sub;
+                const std::size_t full = range.second - range.first == 48 ? range.first : ~std::size_t{0};
+                if (full == ~std::size_t{0}) {
+                    while (range.first < range.second && set.darts[range.first].d[0] < w.td) ++range.first;
+                    std::size_t sub = range.first;
+                    while (sub < range.second && set.darts[sub].d[0] == w.td) ++sub;
+                    range.second = sub;
+                }
                 for (int k = 0; k < n; ++k) {
                     if (!(w.members >> k & 1)) continue;
                     const std::array<AxisDir, 3> want{w.td, tail[k][0], tail[k][1]};
                     long found = -1;  // as set.find(w.t, w.tz, want)
+                    if (full != ~std::size_t{0}) {
+                        const std::size_t x = full + static_cast<std::size_t>(frameIndex(want));
+                        if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
+                    }
                     for (std::size_t x = range.first; x < range.second && found < 0; ++x)
                         if (sameFrame(set.darts[x].d, want)) found = static_cast<long>(x);
                     if (found < 0) {
@@ -639,12 +665,19 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     const int workers = std::max(1, threads);
     const std::vector<TetDarts> rec = tetDartRecords(tets, darts, workers);
     std::vector<TraceStats> part(static_cast<std::size_t>(workers));
-    auto deferred = [&](std::size_t d, int i) {
+    // The rule as a table: bit i of deferBits[frameCode(d)] for a regular dart, all four
+    // bits flipped for an anti dart (one lookup per dart instead of the rule per link).
+    std::array<unsigned char, kFrameCodes> deferBits{};
+    for (int c = 0; c < kFrameCodes; ++c) {
+        const int f0 = c / 36, f1 = c / 6 % 6, f2 = c % 6;
+        deferBits[static_cast<std::size_t>(c)] = static_cast<unsigned char>(
+            (dirSign(static_cast<AxisDir>(f0)) < 0 ? 1 : 0) | (f0 > f1 ? 2 : 0) | (f1 > f2 ? 4 : 0) | (dirSign(static_cast<AxisDir>(f2)) < 0 ? 8 : 0));
+    }
+    auto deferMask = [&](std::size_t d) {
         const Dart& D = darts.darts[d];
-        const auto& f = D.d;
-        const bool upper = i == 0 ? dirSign(f[0]) < 0 : i == 1 ? f[0] > f[1] : i == 2 ? f[1] > f[2] : dirSign(f[2]) < 0;
-        return upper != (D.sign < 0);
+        return static_cast<unsigned>(deferBits[static_cast<std::size_t>(frameCode(D.d))]) ^ (D.sign < 0 ? 0xFu : 0u);
     };
+    auto deferred = [&](std::size_t d, int i) { return (deferMask(d) >> i & 1) != 0; };
     // The link back into a deferred partner: it takes the smallest dart that found it (as a
     // pass in dart order after pass 1 would write first); a value below kUnconnected there
     // is kPending or its own implicit-cell answer, which a link back replaces (pass 2 would
@@ -716,8 +749,9 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                 }
             }
             const auto& f = D[d].d;
+            const unsigned defMask = deferMask(d);
             for (int i = 0; i < 4; ++i) {
-                const bool def = deferred(d, i);
+                const bool def = (defMask >> i & 1) != 0;
                 if (def && i == 0) continue;  // stays pending until a link back or pass 2
                 if (i == 0 && shareEdgeTraces) {  // one walk for the darts of this run with this d1
                     if (d >= groupE) {

@@ -150,14 +150,35 @@ inline Vec3i cellLowerCorner(const Vec3i& z, const std::array<AxisDir, 3>& d) {
     return c;
 }
 
+/// Position of the frame @p d (three distinct axes) in allFrames(): d1 picks a block of 8,
+/// d2 one of the 4 directions off d1's axis, d3 one of the 2 on the remaining axis.
+inline int frameIndex(const std::array<AxisDir, 3>& d) {
+    const int d1 = d[0], d2 = d[1];
+    return d1 * 8 + (d2 - (dirAxis(d[1]) > dirAxis(d[0]) ? 2 : 0)) * 2 + (d[2] & 1);
+}
+
+/// Packed key of a frame, in the order of dartKeyLess().
+inline int frameKey(const std::array<AxisDir, 3>& d) { return (d[0] << 16) | (d[1] << 8) | d[2]; }
+
 inline long DartSet::findInTet(int slot, std::size_t begin, std::size_t end, const Vec3i& z,
                                const std::array<AxisDir, 3>& d) const {
     if (slot >= 0) {
         const DenseIndex& di = dense[static_cast<std::size_t>(slot)];
         const long l = di.local(z);
         if (l < 0) return -1;
-        for (std::size_t k = begin + di.offset[static_cast<std::size_t>(l)]; k < begin + di.offset[static_cast<std::size_t>(l) + 1]; ++k)
+        const std::size_t lo = begin + di.offset[static_cast<std::size_t>(l)];
+        const std::size_t hi = begin + di.offset[static_cast<std::size_t>(l) + 1];
+        // A point with all 48 frames holds each once, in allFrames() order (key order).
+        if (hi - lo == 48) {
+            const std::size_t k = lo + static_cast<std::size_t>(frameIndex(d));
             if (sameFrame(darts[k].d, d)) return static_cast<long>(k);
+        }
+        // Key order: the first dart with the frame, if any, comes before any larger key.
+        const int key = frameKey(d);
+        for (std::size_t k = lo; k < hi; ++k) {
+            const int kk = frameKey(darts[k].d);
+            if (kk >= key) return kk == key ? static_cast<long>(k) : -1;
+        }
         return -1;
     }
     const Dart* first = darts.data() + begin;
