@@ -12,7 +12,10 @@
 # Path ovm-native-split shows the writing as HexEx's part + OpenVolumeMesh's bottom-up
 # incidence rebuild (vertex lists, edge lists, face incidences with OpenVolumeMesh's ordering
 # of the halffaces around every edge); ovm-native-vf writes into a hex mesh without edge
-# incidences.
+# incidences; ovm-native-fe turns the face incidences on before the edge lists,
+# ovm-write-inc and ovm-write-ovm write with the incidences on from the start (see
+# AdapterBenchmark.cc). The cpu write column ends with the whole writing in units of the
+# builtin extraction's CPU.
 #
 #   BENCH=build/src/Benchmarks/adapter_benchmark REPEAT=3 CASES="cube20 cube40 cylinder6" \
 #   PATHS="builtin ovm-native lcc-native" scripts/adapter-overhead.sh
@@ -69,8 +72,14 @@ for (c, p), runs in rows.items():
     peak = statistics.median(float(r["rss_kb"]) / 1024 for r in runs)
     # ovm-native-split: HexEx's writing, then OpenVolumeMesh's incidence rebuild
     inc = f" + {fmt(med('cpu_incidences_s', runs))} OVM incidences" if float(runs[0].get("cpu_incidences_s", 0)) > 0 else ""
-    if inc and "cpu_inc_face_s" in runs[0]:  # vertex lists, edge lists, face incidences with the ordering around edges
+    if inc and "cpu_inc_face_s" in runs[0] and p.endswith("-fe"):  # face incidences first, the ordering with the edge lists
+        inc += f" (vertex {med('cpu_inc_vertex_s', runs)[0]:.2f}, face {med('cpu_inc_face_s', runs)[0]:.2f}, edge + ordering {med('cpu_inc_edge_s', runs)[0]:.2f})"
+    elif inc and "cpu_inc_face_s" in runs[0]:  # vertex lists, edge lists, face incidences with the ordering around edges
         inc += f" (vertex {med('cpu_inc_vertex_s', runs)[0]:.2f}, edge {med('cpu_inc_edge_s', runs)[0]:.2f}, face + ordering {med('cpu_inc_face_s', runs)[0]:.2f})"
+    # the whole writing (HexEx's part and OpenVolumeMesh's incidences) in units of the builtin extraction's CPU
+    if base and p != "builtin" and float(runs[0].get("cpu_write_s", 0)) > 0:
+        wr = statistics.median(float(r['cpu_write_s']) + float(r.get('cpu_incidences_s', 0)) for r in runs)
+        inc += f" = {wr / med('cpu_extract_s', base)[0]:.1f}x extraction"
     print(f"| {c} {p} | {fmt(med('cpu_copy_s', runs))} | {fmt(med('cpu_extract_s', runs))} | "
           f"{fmt(med('cpu_write_s', runs))}{inc} | {fmt(med('copy_s', runs))} | {fmt(med('total_s', runs))} | {peak:.0f} | "
           f"{runs[0]['input_mb']} | {over} | {total} | {wtotal} |")
