@@ -193,3 +193,87 @@ TEST(AssembledMeshCheck, BoundaryEdgesAndFansAsCheckHexMeshOnManyHexes) {
         EXPECT_EQ(c.nonmanifold_boundary_vertices, w.nonmanifold_boundary_vertices);
     }
 }
+
+namespace {
+/// An n^3 grid of unit hexes after @p lead hexes of a column elsewhere, with the twin-face
+/// bits the implicit cells get (bit f: the neighbour across face f is a grid hex too).
+struct TwinGrid {
+    HexMesh mesh;
+    std::vector<unsigned char> twins;  ///< per grid hex
+    std::size_t first = 0;             ///< index of the first grid hex
+};
+TwinGrid twinGrid(int n, int lead) {
+    TwinGrid g;
+    g.mesh = column(lead);
+    for (auto& p : g.mesh.vertices) p += Vec3d(-10, 0, 0);
+    const int base = static_cast<int>(g.mesh.vertices.size());
+    auto id = [&](int i, int j, int k) { return base + i + (n + 1) * (j + (n + 1) * k); };
+    for (int k = 0; k <= n; ++k)
+        for (int j = 0; j <= n; ++j)
+            for (int i = 0; i <= n; ++i) g.mesh.vertices.push_back(Vec3d(i, j, k));
+    g.first = g.mesh.hexes.size();
+    for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+            for (int i = 0; i < n; ++i) {
+                g.mesh.hexes.push_back({id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                                        id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+                // kHexFaces: 0 z = 0, 1 z = 1, 2 y = 0, 3 x = 1, 4 y = 1, 5 x = 0.
+                unsigned t = 0;
+                if (k > 0) t |= 1u << 0;
+                if (k + 1 < n) t |= 1u << 1;
+                if (j > 0) t |= 1u << 2;
+                if (i + 1 < n) t |= 1u << 3;
+                if (j + 1 < n) t |= 1u << 4;
+                if (i > 0) t |= 1u << 5;
+                g.twins.push_back(static_cast<unsigned char>(t));
+            }
+    return g;
+}
+void expectSameCheck(const AssembledMeshCheck& a, const AssembledMeshCheck& b) {
+    EXPECT_EQ(a.repeated_corner_hexes, b.repeated_corner_hexes);
+    EXPECT_EQ(a.quads, b.quads);
+    EXPECT_EQ(a.boundary_quads, b.boundary_quads);
+    EXPECT_EQ(a.quads_shared_by_more_than_two, b.quads_shared_by_more_than_two);
+    EXPECT_EQ(a.nonmanifold_boundary_edges, b.nonmanifold_boundary_edges);
+    EXPECT_EQ(a.nonmanifold_boundary_vertices, b.nonmanifold_boundary_vertices);
+}
+} // namespace
+
+TEST(AssembledMeshCheck, TwinFacesGiveTheSameCounts) {
+    // 2 column hexes + a 30^3 grid (27,002 hexes, the parallel path), twin pairs filed once.
+    const int n = 30;
+    TwinGrid g = twinGrid(n, 2);
+    const long quads = 11 + 3L * n * n * (n + 1), boundary = 10 + 6L * n * n;
+    for (const int threads : {1, 2}) {
+        const AssembledMeshCheck plain = checkAssembledHexes(g.mesh, threads);
+        const AssembledMeshCheck twin = checkAssembledHexes(g.mesh, threads, &g.twins, g.first);
+        EXPECT_EQ(twin.quads, quads);
+        EXPECT_EQ(twin.boundary_quads, boundary);
+        EXPECT_TRUE(twin.agrees(quads, boundary));
+        expectSameCheck(twin, plain);
+    }
+    // A third hex on an inner twin quad (x = 1 between grid hexes (0,0,0) and (1,0,0)): in
+    // three hexes, found through the twin pair's two occurrences.
+    const int nv = static_cast<int>(g.mesh.vertices.size());
+    for (int k = 0; k < 4; ++k) g.mesh.vertices.push_back(Vec3d(100, k % 2, k / 2));
+    const auto& h0 = g.mesh.hexes[g.first];
+    g.mesh.hexes.push_back({nv, nv + 1, nv + 3, nv + 2, h0[1], h0[2], h0[6], h0[5]});
+    const AssembledMeshCheck plain = checkAssembledHexes(g.mesh, 2);
+    const AssembledMeshCheck twin = checkAssembledHexes(g.mesh, 2, &g.twins, g.first);
+    EXPECT_EQ(twin.quads_shared_by_more_than_two, 1);
+    EXPECT_EQ(twin.quads, quads + 5);
+    expectSameCheck(twin, plain);
+}
+
+TEST(AssembledMeshCheck, TwinFacesOfAHexWithARepeatedCornerAreCheckedWithoutThem) {
+    // A grid hex with a repeated corner: not counted, so its twins' faces are single
+    // occurrences (boundary quads) as without the twin bits.
+    TwinGrid g = twinGrid(6, 1);
+    auto& h = g.mesh.hexes[g.first + 6 * 6 + 6 + 1];  // grid hex (1, 1, 1), inside
+    h[6] = h[0];
+    const AssembledMeshCheck plain = checkAssembledHexes(g.mesh, 1);
+    const AssembledMeshCheck twin = checkAssembledHexes(g.mesh, 1, &g.twins, g.first);
+    EXPECT_EQ(twin.repeated_corner_hexes, 1);
+    EXPECT_EQ(twin.boundary_quads, 6 + 6L * 6 * 6 + 6);
+    expectSameCheck(twin, plain);
+}

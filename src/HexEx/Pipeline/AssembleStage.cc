@@ -26,7 +26,10 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         out.warnings.push_back(std::to_string(out.stats.collapsed_cells) +
                                " non-hex cells collapsed completely (no face with 3 distinct vertices); they are counted but not written");
     if (out.validation.valid() && out.stats.non_hex_cells == 0 && out.mesh.polyhedra.empty()) {
-        const AssembledMeshCheck check = checkAssembledHexes(out.mesh, in.threads);
+        // The implicit cells are the last hexes; their twin faces are filed once.
+        const std::size_t nImplicit = in.implicit ? in.implicit->cells.size() : 0;
+        const AssembledMeshCheck check = checkAssembledHexes(out.mesh, in.threads, in.implicit ? &in.implicit->twin_faces : nullptr,
+                                                             out.mesh.hexes.size() - nImplicit);
         out.mesh_agrees = check.agrees(out.stats.quads, out.stats.boundary_quads);
         if (!out.mesh_agrees) out.warnings.push_back(check.warning(out.stats.quads, out.stats.boundary_quads));
     }

@@ -51,9 +51,9 @@ struct Slab {
 };
 
 /// Counts the implicit cells of @p sl (and their boundary faces), or with @p fill writes
-/// them to @p cells from position @p at.
+/// them to @p cells from position @p at, and their twin faces to @p twins.
 void visitSlab(const TetMesh& mesh, const DartSet& ds, Slab& sl, bool fill, std::size_t at,
-               std::vector<std::array<int, 8>>& cells) {
+               std::vector<std::array<int, 8>>& cells, std::vector<unsigned char>& twins) {
     const DartSet::DenseIndex& di = ds.dense[sl.dense];
     unsigned boundaryFaces = 0;
     for (int j = 0; j < 4; ++j)
@@ -66,6 +66,19 @@ void visitSlab(const TetMesh& mesh, const DartSet& ds, Slab& sl, bool fill, std:
         if (!(di.flags[l] & 2)) continue;
         if (fill) {
             const int c = static_cast<int>(di.occ_base) + static_cast<int>(l);
+            // Neighbouring cells in the box (a cell's corners are in the box, so l + X,
+            // l + Y, l + Z are too): faces 5/3 at x = 0/1, 2/4 at y = 0/1, 0/1 at z = 0/1.
+            const std::size_t lx = l - l0;
+            const bool lowY = lx / static_cast<std::size_t>(dz) == 0, lowZ = lx % static_cast<std::size_t>(dz) == 0;
+            auto cellAt = [&](std::size_t q) { return (di.flags[q] & 2) != 0; };
+            unsigned twin = 0;
+            if (sl.x > 0 && cellAt(l - static_cast<std::size_t>(X))) twin |= 1u << 5;
+            if (cellAt(l + static_cast<std::size_t>(X))) twin |= 1u << 3;
+            if (!lowY && cellAt(l - static_cast<std::size_t>(Y))) twin |= 1u << 2;
+            if (cellAt(l + static_cast<std::size_t>(Y))) twin |= 1u << 4;
+            if (!lowZ && cellAt(l - static_cast<std::size_t>(Z))) twin |= 1u << 0;
+            if (cellAt(l + static_cast<std::size_t>(Z))) twin |= 1u << 1;
+            twins[at] = static_cast<unsigned char>(twin);
             cells[at++] = {c, c + X, c + X + Y, c + Y, c + Z, c + X + Z, c + X + Y + Z, c + Y + Z};
             continue;
         }
@@ -143,7 +156,7 @@ void buildImplicitCells(const TetMesh& mesh, const Transitions& tr, const std::v
         if (!ds.dense[s].flags.empty())
             for (int x = 0; x < ds.dense[s].dims[0]; ++x) slabs.push_back({s, static_cast<std::size_t>(x)});
     parallelChunks(slabs.size(), threads, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t k = b; k < e; ++k) visitSlab(mesh, ds, slabs[k], false, 0, out.cells);
+        for (std::size_t k = b; k < e; ++k) visitSlab(mesh, ds, slabs[k], false, 0, out.cells, out.twin_faces);
     });
     std::vector<std::size_t> slabStart(slabs.size() + 1, 0);
     for (std::size_t k = 0; k < slabs.size(); ++k) {
@@ -151,8 +164,9 @@ void buildImplicitCells(const TetMesh& mesh, const Transitions& tr, const std::v
         out.boundary_quads += slabs[k].boundary_quads;
     }
     out.cells.resize(slabStart.back());
+    out.twin_faces.resize(slabStart.back());
     parallelChunks(slabs.size(), threads, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t k = b; k < e; ++k) visitSlab(mesh, ds, slabs[k], true, slabStart[k], out.cells);
+        for (std::size_t k = b; k < e; ++k) visitSlab(mesh, ds, slabs[k], true, slabStart[k], out.cells, out.twin_faces);
     });
     out.joined_occurrences = joinOccurrencesAcrossFaces(mesh, tr, ds, threads);
     const TetMesh* m = &mesh;

@@ -81,6 +81,22 @@ struct QuadPass {
     std::vector<long> boundary;      ///< the items of the boundary quads, by smallest vertex, then vertex set
 };
 
+/// Faces of twin pairs (checkAssembledHexes()): the face of the pair in the first set is
+/// filed as two occurrences of its quad, the one in the second set (its opposite face
+/// number: 0-1, 2-4, 5-3) is not filed.
+constexpr unsigned kTwinFiled = (1u << 1) | (1u << 3) | (1u << 4);
+constexpr unsigned kTwinSkipped = (1u << 0) | (1u << 2) | (1u << 5);
+
+/// Twin-face bits of the hexes (see checkAssembledHexes()); none if @p twins is null.
+struct TwinFaces {
+    const std::vector<unsigned char>* twins = nullptr;  ///< per hex from first on
+    std::size_t first = 0;                              ///< the first hex with bits
+    /// The twin bits of hex @p h.
+    unsigned of(std::size_t h) const {
+        return twins && h >= first && h - first < twins->size() ? (*twins)[h - first] : 0u;
+    }
+};
+
 /// The four sorted vertices of face @p f of hex @p c.
 inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
     const int* l = kHexFaces[f];
@@ -99,8 +115,11 @@ inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
 /// per chunk of hexes: no atomics) and vertices (each bucket sorted by vertex set and item).
 /// Per-chunk results are joined in part and chunk order: the result does not depend on the
 /// thread count.
+/// With @p tw, twin pairs are filed once with two occurrences; if a hex has a repeated
+/// corner it returns after the first pass (repeated_corner_hexes > 0, nothing else counted)
+/// so that the caller runs it again without @p tw.
 template <class Item>
-QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
+QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
     QuadPass r;
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
@@ -129,7 +148,9 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
                 continue;
             }
             good[h] = 1;
+            const unsigned skipped = tw.of(h) & kTwinSkipped;
             for (int f = 0; f < 6; ++f) {
+                if ((skipped >> f) & 1) continue;
                 const int* l = kHexFaces[f];
                 const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
                 ++cnt[static_cast<std::size_t>(v)];
@@ -137,6 +158,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
         }
     });
     for (const long n : repeated) r.repeated_corner_hexes += n;
+    if (tw.twins && r.repeated_corner_hexes > 0) return r;
     // Bucket starts, and each chunk's first slot in every bucket (counts turned into offsets).
     for (long v = 0; v < nv; ++v) {
         Item at = start[static_cast<std::size_t>(v)];
@@ -178,7 +200,9 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
             for (std::size_t h = h0; h < h1; ++h) {
                 if (!good[h]) continue;
                 const auto& c = H[h];
+                const unsigned skipped = tw.of(h) & kTwinSkipped;
                 for (int f = 0; f < 6; ++f) {
+                    if ((skipped >> f) & 1) continue;
                     const int* l = kHexFaces[f];
                     const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
                     if (v < lo || v >= hi) continue;
@@ -202,14 +226,20 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks) {
                 } else {
                     std::sort(b, e);
                 }
+                // Occurrences of the quad: its records, a filed twin face counting twice.
+                auto occurrences = [&](const QuadRecord<Item>& x) {
+                    const auto item = static_cast<std::size_t>(x.item);
+                    return 1 + ((tw.of(item / 6) & kTwinFiled) >> (item % 6) & 1);
+                };
                 for (QuadRecord<Item>* i = b; i < e;) {
                     QuadRecord<Item>* j = i + 1;
-                    while (j < e && j->sameQuad(*i)) ++j;
+                    std::size_t n = tw.twins ? occurrences(*i) : 1;
+                    for (; j < e && j->sameQuad(*i); ++j) n += tw.twins ? occurrences(*j) : 1;
                     ++part.quads;
-                    if (j - i == 1) {
+                    if (n == 1) {
                         ++part.boundary_quads;
                         part.boundary.push_back(static_cast<long>(i->item));
-                    } else if (j - i > 2) {
+                    } else if (n > 2) {
                         ++part.shared_by_more;
                     }
                     i = j;
@@ -252,7 +282,8 @@ std::string AssembledMeshCheck::warning(long dart_quads, long dart_boundary_quad
     return w;
 }
 
-AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
+AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads, const std::vector<unsigned char>* twin_faces,
+                                       std::size_t first_twin_hex) {
     AssembledMeshCheck r;
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
@@ -263,8 +294,13 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads) {
     }
     const int chunks = nh >= kParallelHexes ? std::max(1, threads) : 1;
     // Quad items: face f of hex h is item 6h+f; a 32-bit item index when it fits.
-    const QuadPass pass = 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks)
-                                                                 : distinctQuads<long>(mesh, chunks);
+    auto quadPass = [&](const TwinFaces& tw) {
+        return 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks, tw) : distinctQuads<long>(mesh, chunks, tw);
+    };
+    QuadPass pass = quadPass(TwinFaces{twin_faces, first_twin_hex});
+    // A hex with a repeated corner breaks the twin pairs' premise (both hexes counted):
+    // the whole pass again without them.
+    if (twin_faces && pass.repeated_corner_hexes > 0) pass = quadPass(TwinFaces{});
     r.repeated_corner_hexes = pass.repeated_corner_hexes;
     r.quads = pass.quads;
     r.boundary_quads = pass.boundary_quads;

@@ -8,7 +8,9 @@
 
 #include "../Mesh/HexMesh.hh"
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace HexEx {
 
@@ -32,6 +34,13 @@ struct AssembledMeshCheck {
 /// quads are bucketed by their smallest vertex, boundary edges and corners likewise. The
 /// hex, quad and per-vertex boundary passes run on @p threads threads (>= 1); the result
 /// does not depend on it.
-AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads = 1);
+/// Optional @p twin_faces (per hex from @p first_twin_hex on, e.g. the implicit cells):
+/// bit f set if face f (kHexFaces order) is, with the same four vertex indices, the
+/// opposite face (0-1, 2-4, 3-5) of another of these hexes whose bit for that face is set
+/// (ImplicitCells::twin_faces). Such a pair is filed once, as two occurrences of its quad
+/// (the same counts with fewer records); if a hex has a repeated corner the check runs
+/// again without them, so the result is the same as without @p twin_faces.
+AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads = 1,
+                                       const std::vector<unsigned char>* twin_faces = nullptr, std::size_t first_twin_hex = 0);
 
 } // namespace HexEx

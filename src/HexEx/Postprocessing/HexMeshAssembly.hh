@@ -48,6 +48,10 @@ struct ImplicitCells {
     long boundary_quads = 0;                      ///< faces of implicit cells on the boundary
     /// The implicit cells, each as its 8 corner occurrences in VTK order.
     std::vector<std::array<int, 8>> cells;
+    /// Per implicit cell: bit f set if its face f (kHexFaces order) is the opposite face of
+    /// the neighbouring implicit cell of the same tet across it (the same four occurrences,
+    /// so the same four vertices): checkAssembledHexes() files such pairs once.
+    std::vector<unsigned char> twin_faces;
     /// 3D position of an occurrence (used for vertices that no explicit dart touches).
     std::function<Vec3d(long)> position;
     /// Optional: the positions of @p n occurrences @p occ (ascending) into @p out, the same
