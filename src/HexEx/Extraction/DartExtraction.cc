@@ -159,14 +159,15 @@ void markBoxFlags(const TetSoS& T, FaceMask usable, DartSet::DenseIndex& di, boo
             }
         }
     if (!implicit) return;
-    auto at = [&](int x, int y, int zc) { return di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc]; };
+    // A cell is implicit if its 8 corners all have bit 2 (value 4): one AND of the 8 flag
+    // bytes at fixed offsets (x-major layout); setting bit 1 (value 2) leaves the bits read.
+    const std::size_t sy = static_cast<std::size_t>(dz), sx = static_cast<std::size_t>(dy) * sy;
     for (int x = 0; x + 1 < dx; ++x)
-        for (int y = 0; y + 1 < dy; ++y)
-            for (int zc = 0; zc + 1 < dz; ++zc) {
-                bool all = true;
-                for (int q = 0; q < 8 && all; ++q) all = (at(x + (q & 1), y + ((q >> 1) & 1), zc + (q >> 2)) & 4) != 0;
-                if (all) di.flags[(static_cast<std::size_t>(x) * dy + y) * dz + zc] |= 2;
-            }
+        for (int y = 0; y + 1 < dy; ++y) {
+            std::uint8_t* p = di.flags.data() + (static_cast<std::size_t>(x) * dy + y) * dz;
+            for (int zc = 0; zc + 1 < dz; ++zc, ++p)
+                if (p[0] & p[1] & p[sy] & p[sy + 1] & p[sx] & p[sx + 1] & p[sx + sy] & p[sx + sy + 1] & 4) *p |= 2;
+        }
 }
 } // namespace
 
@@ -323,9 +324,21 @@ HEXEX_DARTS_INLINE std::uint64_t pointFrames(const TetSoS& T, BoxFaceSigns& S, c
         if (!(fl & 1)) return 0;
         for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T.vol;
         interior = (fl >> 4) == 0;
-        for (unsigned o = 0; o < 8 && di->implicit_marks; ++o) {
-            const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1), zc - static_cast<int>(o >> 2)));
-            if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) allowed &= ~octantFrames[o];
+        if (di->implicit_marks) {
+            if (x > di->lo[0] && y > di->lo[1] && zc > di->lo[2]) {
+                // All 8 cells around z have their lower corner in the box: their flags lie at
+                // fixed offsets below l (x-major: x strides dims[1] * dims[2], y dims[2]).
+                const std::size_t sy = static_cast<std::size_t>(di->dims[2]);
+                const std::size_t sx = static_cast<std::size_t>(di->dims[1]) * sy;
+                const std::uint8_t* f = di->flags.data() + l;
+                for (unsigned o = 0; o < 8; ++o)
+                    if (*(f - ((o & 1) ? sx : 0) - ((o & 2) ? sy : 0) - ((o & 4) ? 1 : 0)) & 2) allowed &= ~octantFrames[o];
+            } else {
+                for (unsigned o = 0; o < 8; ++o) {
+                    const long lc = di->local(Vec3i(x - static_cast<int>(o & 1), y - static_cast<int>((o >> 1) & 1), zc - static_cast<int>(o >> 2)));
+                    if (lc >= 0 && (di->flags[static_cast<std::size_t>(lc)] & 2)) allowed &= ~octantFrames[o];
+                }
+            }
         }
         if (allowed == 0) return 0;  // every cell around z is implicit
     } else if (!S.sides(Vec3i(x, y, zc), oz, interior)) {
