@@ -122,6 +122,12 @@ CellLabels labelCells(const GMap<3>& g) {
     cs.face.assign(n, -1);
     cs.corner.assign(n, -1);
     cs.darts.reserve(n);
+    // Exact sizes for a hex map (48 darts per cell, 8 per face, 6 per corner): no growth
+    // beyond them, which would keep up to twice the memory through the assembly.
+    cs.size.reserve(n / 48 + 1);
+    cs.off.reserve(n / 48 + 2);
+    cs.fsize.reserve(n / 8 + 1);
+    cs.ksize.reserve(n / 6 + 1);
     cs.off.push_back(0);
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
