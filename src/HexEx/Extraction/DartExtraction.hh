@@ -151,7 +151,8 @@ inline Vec3i cellLowerCorner(const Vec3i& z, const std::array<AxisDir, 3>& d) {
 }
 
 /// Position of the frame @p d (three distinct axes) in allFrames(): d1 picks a block of 8,
-/// d2 one of the 4 directions off d1's axis, d3 one of the 2 on the remaining axis.
+/// d2 one of the 4 directions off d1's axis, d3 one of the 2 on the remaining axis. For a
+/// frame that repeats an axis the value means nothing and may lie outside [0, 48).
 inline int frameIndex(const std::array<AxisDir, 3>& d) {
     const int d1 = d[0], d2 = d[1];
     return d1 * 8 + (d2 - (dirAxis(d[1]) > dirAxis(d[0]) ? 2 : 0)) * 2 + (d[2] & 1);
@@ -168,9 +169,11 @@ inline long DartSet::findInTet(int slot, std::size_t begin, std::size_t end, con
         if (l < 0) return -1;
         const std::size_t lo = begin + di.offset[static_cast<std::size_t>(l)];
         const std::size_t hi = begin + di.offset[static_cast<std::size_t>(l) + 1];
-        // A point with all 48 frames holds each once, in allFrames() order (key order).
-        if (hi - lo == 48) {
-            const std::size_t k = lo + static_cast<std::size_t>(frameIndex(d));
+        // A point with all 48 frames holds each once, in allFrames() order (key order). The
+        // index is in range for every proper frame; anything else falls back to the scan.
+        const int fi = frameIndex(d);
+        if (hi - lo == 48 && fi >= 0 && fi < 48) {
+            const std::size_t k = lo + static_cast<std::size_t>(fi);
             if (sameFrame(darts[k].d, d)) return static_cast<long>(k);
         }
         // Key order: the first dart with the frame, if any, comes before any larger key.
