@@ -665,19 +665,20 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
     const int workers = std::max(1, threads);
     const std::vector<TetDarts> rec = tetDartRecords(tets, darts, workers);
     std::vector<TraceStats> part(static_cast<std::size_t>(workers));
-    // The rule as a table: bit i of deferBits[frameCode(d)] for a regular dart, all four
-    // bits flipped for an anti dart (one lookup per dart instead of the rule per link).
-    std::array<unsigned char, kFrameCodes> deferBits{};
-    for (int c = 0; c < kFrameCodes; ++c) {
-        const int f0 = c / 36, f1 = c / 6 % 6, f2 = c % 6;
-        deferBits[static_cast<std::size_t>(c)] = static_cast<unsigned char>(
-            (dirSign(static_cast<AxisDir>(f0)) < 0 ? 1 : 0) | (f0 > f1 ? 2 : 0) | (f1 > f2 ? 4 : 0) | (dirSign(static_cast<AxisDir>(f2)) < 0 ? 8 : 0));
-    }
+    // The rule for all four links of a dart at once (bit i: deferred for alpha_i; an odd
+    // direction code points in the negative axis direction).
     auto deferMask = [&](std::size_t d) {
         const Dart& D = darts.darts[d];
-        return static_cast<unsigned>(deferBits[static_cast<std::size_t>(frameCode(D.d))]) ^ (D.sign < 0 ? 0xFu : 0u);
+        const unsigned f0 = D.d[0], f1 = D.d[1], f2 = D.d[2];
+        const unsigned m = (f0 & 1u) | (f0 > f1 ? 2u : 0u) | (f1 > f2 ? 4u : 0u) | ((f2 & 1u) << 3);
+        return D.sign < 0 ? m ^ 0xFu : m;
     };
-    auto deferred = [&](std::size_t d, int i) { return (deferMask(d) >> i & 1) != 0; };
+    auto deferred = [&](std::size_t d, int i) {
+        const Dart& D = darts.darts[d];
+        const auto& f = D.d;
+        const bool upper = i == 0 ? dirSign(f[0]) < 0 : i == 1 ? f[0] > f[1] : i == 2 ? f[1] > f[2] : dirSign(f[2]) < 0;
+        return upper != (D.sign < 0);
+    };
     // The link back into a deferred partner: it takes the smallest dart that found it (as a
     // pass in dart order after pass 1 would write first); a value below kUnconnected there
     // is kPending or its own implicit-cell answer, which a link back replaces (pass 2 would
