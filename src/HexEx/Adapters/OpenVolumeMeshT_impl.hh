@@ -119,16 +119,11 @@ std::unique_ptr<std::array<int, 3>[]> ovmFaceLoopTable(const Mesh& mesh, int thr
             if (f + kAhead < e)
                 __builtin_prefetch(mesh.face(OpenVolumeMesh::FaceHandle(static_cast<int>(f + kAhead))).halfedges().data());
 #endif
-            const std::vector<OpenVolumeMesh::HalfEdgeHandle>& hes =
-                mesh.face(OpenVolumeMesh::FaceHandle(static_cast<int>(f))).halfedges();
-            if (hes.size() != 3) {
+            OpenVolumeMesh::VertexHandle loop[3];
+            if (ovmFaceLoop(mesh, OpenVolumeMesh::FaceHandle(static_cast<int>(f)), loop))
+                table[f] = {loop[0].idx(), loop[1].idx(), loop[2].idx()};
+            else
                 table[f] = {-1, -1, -1};
-                continue;
-            }
-            for (std::size_t i = 0; i < 3; ++i) {  // halfedge 2e + 1 is edge e reversed
-                const auto& edge = mesh.edge(hes[i].edge_handle());
-                table[f][i] = ((hes[i].idx() & 1) ? edge.to_vertex() : edge.from_vertex()).idx();
-            }
         }
     });
     return table;
