@@ -45,19 +45,6 @@ const RotationTables& tables() {
 
 } // namespace
 
-int frameHandedness(AxisDir a, AxisDir b, AxisDir c) {
-    if (dirAxis(a) == dirAxis(b) || dirAxis(b) == dirAxis(c) || dirAxis(a) == dirAxis(c)) return 0;
-    return dirCross(a, b) == c ? 1 : -1;
-}
-
-AxisDir dirCross(AxisDir a, AxisDir b) {
-    const int ia = dirAxis(a), ib = dirAxis(b);
-    const int ic = 3 - ia - ib;
-    const int cyclic = ((ia + 1) % 3 == ib) ? 1 : -1;
-    return makeDir(ic, cyclic * dirSign(a) * dirSign(b));
-}
-
-
 Rotation Rotation::operator*(const Rotation& o) const { return Rotation(tables().mul[idx_][o.idx_]); }
 Rotation Rotation::inverse() const { return Rotation(tables().inv[idx_]); }
 int Rotation::angleClass() const { return tables().angle[idx_]; }

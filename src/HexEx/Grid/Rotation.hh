@@ -33,10 +33,19 @@ inline Vec3i stepAlong(const Vec3i& z, AxisDir d) {
 }
 /// Direction code from axis and sign.
 inline AxisDir makeDir(int axis, int sign) { return static_cast<AxisDir>(2 * axis + (sign < 0 ? 1 : 0)); }
+/// The direction a x b (a, b on different axes). Inline, as frameHandedness(): both run
+/// per dart in the placement and the tracing.
+inline AxisDir dirCross(AxisDir a, AxisDir b) {
+    const int ia = dirAxis(a), ib = dirAxis(b);
+    const int ic = 3 - ia - ib;
+    const int cyclic = ((ia + 1) % 3 == ib) ? 1 : -1;
+    return makeDir(ic, cyclic * dirSign(a) * dirSign(b));
+}
 /// Handedness of the frame (a, b, c): +1 if a x b = c, -1 if a x b = -c, 0 if axes repeat.
-int frameHandedness(AxisDir a, AxisDir b, AxisDir c);
-/// The direction a x b (a, b on different axes).
-AxisDir dirCross(AxisDir a, AxisDir b);
+inline int frameHandedness(AxisDir a, AxisDir b, AxisDir c) {
+    if (dirAxis(a) == dirAxis(b) || dirAxis(b) == dirAxis(c) || dirAxis(a) == dirAxis(c)) return 0;
+    return dirCross(a, b) == c ? 1 : -1;
+}
 
 namespace detail {
 /// Image direction of +x, +y, +z for each of the 24 rotations (index 0 = identity),

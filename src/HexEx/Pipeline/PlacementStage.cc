@@ -23,18 +23,6 @@ DartGeometry placementStage(const PlacementInput& in) {
         const Dart& D = ds.darts[d];
         return P.tet != D.tet || !samePoint(P.z, D.z);
     };
-    // Frame handedness by table: the 6 x 6 x 6 direction codes, filled once from
-    // frameHandedness() (the same values without a call per dart).
-    signed char handTable[6][6][6];
-    for (int a = 0; a < 6; ++a)
-        for (int b = 0; b < 6; ++b)
-            for (int c = 0; c < 6; ++c)
-                handTable[a][b][c] = static_cast<signed char>(
-                    frameHandedness(static_cast<AxisDir>(a), static_cast<AxisDir>(b), static_cast<AxisDir>(c)));
-    auto handedness = [&](const std::array<AxisDir, 3>& f) {
-        if (f[0] < 6 && f[1] < 6 && f[2] < 6) return handTable[f[0]][f[1]][f[2]];
-        return static_cast<signed char>(frameHandedness(f[0], f[1], f[2]));
-    };
     std::vector<int> runsInChunk(static_cast<std::size_t>(threads) + 1, 0);
     parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
         int n = 0;
@@ -52,7 +40,7 @@ DartGeometry placementStage(const PlacementInput& in) {
             if (!alive[d]) continue;
             const Dart& D = ds.darts[d];
             const auto dk = static_cast<std::size_t>(newIndex[d]);
-            geo.handedness[dk] = handedness(D.d);
+            geo.handedness[dk] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
             if (runStart(d)) {
                 ++run;
                 auto& bhf = geo.placement.boundary_hf[static_cast<std::size_t>(run)];
