@@ -20,6 +20,15 @@ HexMesh column(int n) {
     return m;
 }
 
+/// Every count of two checks is equal.
+void expectSameCheck(const AssembledMeshCheck& a, const AssembledMeshCheck& b) {
+    EXPECT_EQ(a.repeated_corner_hexes, b.repeated_corner_hexes);
+    EXPECT_EQ(a.quads, b.quads);
+    EXPECT_EQ(a.boundary_quads, b.boundary_quads);
+    EXPECT_EQ(a.quads_shared_by_more_than_two, b.quads_shared_by_more_than_two);
+    EXPECT_EQ(a.nonmanifold_boundary_edges, b.nonmanifold_boundary_edges);
+    EXPECT_EQ(a.nonmanifold_boundary_vertices, b.nonmanifold_boundary_vertices);
+}
 } // namespace
 
 TEST(AssembledMeshCheck, AValidColumnAgreesWithItsQuadCounts) {
@@ -97,13 +106,7 @@ TEST(AssembledMeshCheck, SameCountsOnAnyThreadCount) {
     EXPECT_EQ(one.quads_shared_by_more_than_two, 1);
     EXPECT_EQ(one.quads, 11 * (columns - 1) + 6 + 5);  // 11 per column, the bad hex's column has one hex, plus the extra hex's 5 own quads
     for (const int threads : {2, 3}) {
-        const AssembledMeshCheck r = checkAssembledHexes(m, threads);
-        EXPECT_EQ(r.repeated_corner_hexes, one.repeated_corner_hexes);
-        EXPECT_EQ(r.quads, one.quads);
-        EXPECT_EQ(r.boundary_quads, one.boundary_quads);
-        EXPECT_EQ(r.quads_shared_by_more_than_two, one.quads_shared_by_more_than_two);
-        EXPECT_EQ(r.nonmanifold_boundary_edges, one.nonmanifold_boundary_edges);
-        EXPECT_EQ(r.nonmanifold_boundary_vertices, one.nonmanifold_boundary_vertices);
+        expectSameCheck(checkAssembledHexes(m, threads), one);
     }
 }
 
@@ -228,14 +231,6 @@ TwinGrid twinGrid(int n, int lead) {
                 g.twins.push_back(static_cast<unsigned char>(t));
             }
     return g;
-}
-void expectSameCheck(const AssembledMeshCheck& a, const AssembledMeshCheck& b) {
-    EXPECT_EQ(a.repeated_corner_hexes, b.repeated_corner_hexes);
-    EXPECT_EQ(a.quads, b.quads);
-    EXPECT_EQ(a.boundary_quads, b.boundary_quads);
-    EXPECT_EQ(a.quads_shared_by_more_than_two, b.quads_shared_by_more_than_two);
-    EXPECT_EQ(a.nonmanifold_boundary_edges, b.nonmanifold_boundary_edges);
-    EXPECT_EQ(a.nonmanifold_boundary_vertices, b.nonmanifold_boundary_vertices);
 }
 } // namespace
 

@@ -172,7 +172,8 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
             // Usual case: no extras and every dart of the class at the very same position
             // (operator==, as distinctPositions() compares). The rules below then give the
             // first boundary dart's position if the class has one (the boundary rule with one
-            // distinct position), else the first dart's, and list no candidates.
+            // distinct position), else the first dart's, and list no candidates. The boundary
+            // dart is still looked for: +0.0 == -0.0, so equal positions may differ in bytes.
             if (off[l] < off[l + 1] && xoff[l] == xoff[l + 1]) {
                 const auto q0 = static_cast<std::size_t>(darts.point[static_cast<std::size_t>(idx[static_cast<std::size_t>(off[l])])]);
                 const Vec3d& p0 = darts.position[q0];
