@@ -45,6 +45,8 @@ std::uint64_t mix(std::uint64_t x) {
 template <class T>
 class BlockList {
 public:
+    /// Number of entries.
+    std::size_t size() const { return blocks_.empty() ? 0 : (blocks_.size() - 1) * kBlock + blocks_.back().size(); }
     /// Appends @p v.
     void push_back(const T& v) {
         if (blocks_.empty() || blocks_.back().size() == kBlock) {
@@ -243,11 +245,14 @@ private:
     }
 
     /// Alive darts whose links were changed (the cells a run can have broken are theirs), in
-    /// order of their first change (the count of broken cells does not depend on it).
-    std::vector<int> changedDarts() const {
+    /// order of their first change (the count of broken cells does not depend on it). The
+    /// list of saved darts only grows: it holds the darts changed by this run and by every
+    /// run before it. With @p first_entries, only the darts of its first that many entries.
+    std::vector<int> changedDarts(std::size_t first_entries = static_cast<std::size_t>(-1)) const {
         std::vector<int> c;
+        std::size_t k = 0;
         saved_.forEach([&](const Saved& e) {
-            if (alive_[idx(e.first)]) c.push_back(e.first);
+            if (k++ < first_entries && alive_[idx(e.first)]) c.push_back(e.first);
         });
         return c;
     }
@@ -262,9 +267,10 @@ private:
         return c;
     }
 
-    /// Broken cells among the cells of the alive darts in @p c (their darts appended to @p bad if given).
-    long brokenCells(const std::vector<int>& c, std::vector<int>* bad = nullptr) {
-        return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone, bad);
+    /// Broken cells among the cells of the alive darts in @p c (their darts appended to @p bad
+    /// if given); with @p stop_after > 0 at most that many are counted.
+    long brokenCells(const std::vector<int>& c, std::vector<int>* bad = nullptr, long stop_after = 0) {
+        return countDefectiveHexCells(alpha_, alive_, c, flag_, kInCell, kCellDone, bad, stop_after);
     }
 
     /// True if every broken cell among those of @p c is a hex once the alpha_3 links of the
@@ -493,9 +499,22 @@ void Annihilator::run(const std::vector<int>* order) {
 }
 
 void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
-    const long best0 = brokenCells(changedDarts());
+    // Whether the first pass left a broken cell decides whether the retries run at all; how
+    // many it left matters only where a retry that leaves broken cells (and is not kept at
+    // once, below) is compared with it. So the check stops at the first broken cell, and the
+    // exact count is taken only when such a comparison needs it, by running the first pass
+    // again (restoreAll() puts back every dart it touched: the same run, the same links).
+    // The count of a retry that leaves none (0) or merges vertices (kMergedRank + m, above
+    // any count of cells) compares the same with any count of at least 1.
+    const bool lazy = opt.orders >= 1 && opt.patience >= 1 && !opt.exact_first_count;
+    // The darts the first pass changed are the first entries of the saved list; a later run
+    // appends the darts it changes first, and its own count covers every saved dart. So the
+    // first pass, run again, is counted over its own entries only, as it was the first time.
+    const std::size_t firstPassEntries = saved_.size();
+    long best0 = brokenCells(changedDarts(), nullptr, lazy ? 1 : 0);
     st.broken_cells_before = st.broken_cells_after = best0;
     if (best0 == 0) return;
+    bool best0Exact = !lazy;
     // Variant k: 1 phase by phase (runPhased()), 2 descending, k >= 3 a hashed order.
     auto runVariant = [&](int k) {
         restoreAll();
@@ -508,8 +527,16 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             run(&order);
         }
     };
-    long best = best0;
+    long best = best0;  // while !best0Exact and bestOrder == 0: a lower bound (1) of the first pass's count
     int bestOrder = 0, lastRun = 0;
+    auto exactFirstPass = [&]() {
+        runVariant(0);  // changes the same darts as the first time: no entry is appended
+        lastRun = 0;
+        best0 = brokenCells(changedDarts(firstPassEntries));
+        best0Exact = true;
+        st.broken_cells_before = best0;
+        if (bestOrder == 0) best = best0;
+    };
     for (int k = 1; k <= opt.orders && best > 0 && k - bestOrder <= opt.patience; ++k) {
         ++st.retry_runs;
         runVariant(k);
@@ -526,10 +553,8 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             st.merged_vertex_runs += merged > 0 ? 1 : 0;
             if (merged > 0) now = kMergedRank + merged;
         }
-        if (now < best) {
-            best = now;
-            bestOrder = k;
-        }
+        // (The two ways out below do not read best or bestOrder, so the comparison with the
+        // best so far comes after them.)
         if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(broken)) {
             // Only quads are crossed or partial, every cell is a hex inside: the face repair
             // and relinking finish this run; another order would cost a whole run each.
@@ -545,8 +570,16 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
             st.broken_cells_after = now;
             return;
         }
+        // The next variant starts with restoreAll(), so this run's state is not needed after
+        // the comparison: the exact count of the first pass may replace it here.
+        if (now > 0 && now < kMergedRank && bestOrder == 0 && !best0Exact) exactFirstPass();
+        if (now < best) {
+            best = now;
+            bestOrder = k;
+        }
     }
-    if (lastRun != bestOrder) runVariant(bestOrder);
+    if (bestOrder == 0 && !best0Exact) exactFirstPass();  // kept, and its count is reported
+    else if (lastRun != bestOrder) runVariant(bestOrder);
     st.reordered = bestOrder;
     st.broken_cells_after = best >= kMergedRank ? 0 : best;
 }

@@ -16,7 +16,10 @@ namespace HexEx {
 struct AnnihilationStats {
     long pairs = 0;           ///< annihilated regular/anti pairs
     long remaining_anti = 0;  ///< anti darts left at the fixed point
-    long broken_cells_before = 0; ///< broken hex cells next to changed darts after the first pass (with retries only)
+    /// Broken hex cells next to changed darts after the first pass (with retries only): 0 if
+    /// none; otherwise the exact count where a retry had to be compared with it, else 1 (the
+    /// check stops at the first broken cell when a retry is kept without that comparison).
+    long broken_cells_before = 0;
     long broken_cells_after = 0;  ///< the same for the order kept
     long retry_runs = 0;          ///< runs in other orders
     bool repaired = false;        ///< AnnihilationRetry::repair left no broken cell after the first retry
@@ -54,6 +57,10 @@ struct AnnihilationRetry {
     /// the darts of those cells (reconnectBrokenCells()) and returns true if no broken cell
     /// is left; then no further order is tried and that result is kept.
     std::function<bool(const std::vector<int>& changed)> repair;
+    /// Count every broken cell the first pass leaves before the retries (as before issue 35's
+    /// eighth round) instead of stopping at the first and counting them all only where a
+    /// retry is compared with that count: the same result, more work (for the tests).
+    bool exact_first_count = false;
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the

@@ -109,7 +109,7 @@ bool cellIsHex(const std::vector<std::array<int, 4>>& alpha, const std::vector<c
 
 long countDefectiveHexCells(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive,
                             const std::vector<int>& seeds, std::vector<std::uint8_t>& mark, std::uint8_t in_cell,
-                            std::uint8_t done, std::vector<int>* bad_darts) {
+                            std::uint8_t done, std::vector<int>* bad_darts, long stop_after) {
     long bad = 0;
     std::vector<int> cell, doneList;
     auto M = [&](int d) -> std::uint8_t& { return mark[static_cast<std::size_t>(d)]; };
@@ -144,6 +144,7 @@ long countDefectiveHexCells(const std::vector<std::array<int, 4>>& alpha, const 
         if (!ok) {
             ++bad;
             if (bad_darts) bad_darts->insert(bad_darts->end(), cell.begin(), cell.end());
+            if (bad == stop_after) break;  // (never for stop_after <= 0)
         }
     }
     for (int d : doneList) M(d) = static_cast<std::uint8_t>(M(d) & ~done);

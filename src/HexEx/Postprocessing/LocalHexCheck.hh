@@ -21,9 +21,11 @@ namespace HexEx {
 /// not an involution, breaks equation 2, or joins the cell to itself. Each cell is counted
 /// once. @p mark is scratch space, one byte per dart, whose bits @p in_cell and @p done must
 /// be clear on entry; they are clear again on return. If @p bad_darts is given, the darts of
-/// every defective cell are appended to it.
+/// every defective cell are appended to it. With @p stop_after > 0 the count stops as soon
+/// as it reaches @p stop_after (the cells are visited in the order of @p seeds, so the result
+/// is min(count, stop_after)).
 long countDefectiveHexCells(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive,
                             const std::vector<int>& seeds, std::vector<std::uint8_t>& mark, std::uint8_t in_cell,
-                            std::uint8_t done, std::vector<int>* bad_darts = nullptr);
+                            std::uint8_t done, std::vector<int>* bad_darts = nullptr, long stop_after = 0);
 
 } // namespace HexEx
