@@ -163,6 +163,19 @@ TEST(GMap, CellByCellLabelsIndependentOfThreads) {
         ++broken;
     }
     ASSERT_GT(broken, 1000);
+    // Runs of three cells joined into one of 144 darts (alpha_1 swapped between a corner of
+    // one and of the next): most of its darts lie outside the chunk of its smallest dart.
+    int joined = 0;
+    for (int c = 3; c + 2 < cells; c += 50) {
+        for (int k = 0; k < 2; ++k) {
+            const DartHandle x = D(c + k, 5), y = D(c + k + 1, 29);
+            const DartHandle ax = g.alpha(x, 1), ay = g.alpha(y, 1);
+            g.sew(x, ay, 1);
+            g.sew(y, ax, 1);
+        }
+        ++joined;
+    }
+    ASSERT_GT(joined, 100);
     HexOrbitLabels ref;
     const GMapValidation v1 = validateHexGMap(g, &ref, 1);
     ASSERT_FALSE(ref.cell_offset.empty());
@@ -179,6 +192,7 @@ TEST(GMap, CellByCellLabelsIndependentOfThreads) {
     EXPECT_TRUE(samePartition(ref.face, labelOrbits(g, 0b0011)));
     EXPECT_TRUE(samePartition(ref.corner, labelOrbits(g, 0b0110)));
     EXPECT_EQ(ref.cell, labelOrbits(g, 0b0111));
+    EXPECT_EQ(std::count(ref.cell_size.begin(), ref.cell_size.end(), 144), joined);
     for (int threads : {2, 3}) {
         SCOPED_TRACE("threads = " + std::to_string(threads));
         HexOrbitLabels l;
@@ -190,6 +204,8 @@ TEST(GMap, CellByCellLabelsIndependentOfThreads) {
         EXPECT_EQ(l.face_size, ref.face_size);
         EXPECT_EQ(l.corner_size, ref.corner_size);
         EXPECT_EQ(l.cell_darts, ref.cell_darts);
+        EXPECT_EQ(l.cell_offset, ref.cell_offset);
+        EXPECT_EQ(l.cell_size, ref.cell_size);
     }
 }
 

@@ -4,6 +4,7 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <sstream>
 
@@ -99,9 +100,9 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
 /// breadth-first search from its smallest dart (cells numbered in dart order, each cell's
 /// darts in search order), and while its darts are in the cache its strip, face and corner
 /// orbits (they never leave the cell) are walked, faces and corners numbered cell after
-/// cell. Terminates on any map whose links are dart indices (every walk stops at a marked
-/// dart), so it may run before the involution checks are known; its labels are used only
-/// if they find an involutive map with every dart alive.
+/// cell. Runs only after the checks found an involutive map with every dart alive (the
+/// chunks' ownership of cells rests on it: a cell is the same component from each of its
+/// darts).
 struct CellLabels {
     GMapValidation counts;     ///< equation 3-6 counts
     std::vector<int> cell;     ///< per dart: its cell
@@ -114,50 +115,105 @@ struct CellLabels {
     std::vector<int> ksize;    ///< per corner orbit: number of darts
 };
 
-CellLabels labelCells(const GMap<3>& g) {
+/// A set of dart indices for one cell's search (open addressing, at most half full),
+/// emptied in the time of its size: the search of one chunk of cells marks the darts
+/// outside the chunk there, not in the shared label arrays (the cell may not be its own).
+class CellDartSet {
+public:
+    CellDartSet() : slot_(128, -1) {}
+    /// Adds @p d; false if it was there.
+    bool insert(int d) {
+        if (2 * (used_.size() + 1) > slot_.size()) grow();
+        std::size_t h = hash(d);
+        while (slot_[h] != -1) {
+            if (slot_[h] == d) return false;
+            h = (h + 1) & (slot_.size() - 1);
+        }
+        slot_[h] = d;
+        used_.push_back(h);
+        return true;
+    }
+    /// Removes every dart.
+    void clear() {
+        for (const std::size_t h : used_) slot_[h] = -1;
+        used_.clear();
+    }
+
+private:
+    std::size_t hash(int d) const { return (static_cast<std::uint32_t>(d) * 2654435761u) & (slot_.size() - 1); }
+    void grow() {
+        std::vector<int> keys;
+        keys.reserve(used_.size());
+        for (const std::size_t h : used_) keys.push_back(slot_[h]);
+        slot_.assign(2 * slot_.size(), -1);
+        used_.clear();
+        for (const int d : keys) insert(d);
+    }
+    std::vector<int> slot_;
+    std::vector<std::size_t> used_;
+};
+
+/// One chunk's part of labelCells(): the cells whose smallest dart lies in the chunk, with
+/// chunk-local cell, face and corner numbers.
+struct CellChunk {
+    GMapValidation counts;     ///< equation 3-6 counts of its cells
+    std::vector<int> size;     ///< per cell: number of darts
+    std::vector<int> darts;    ///< the darts, cell after cell
+    std::vector<int> off;      ///< cell c holds darts[off[c] .. off[c + 1]) (local positions)
+    std::vector<int> fsize;    ///< per face orbit: number of darts
+    std::vector<int> ksize;    ///< per corner orbit: number of darts
+};
+
+/// Finds and labels the cells of @p g whose smallest dart is in [b, e) (for an involutive
+/// map: each cell is a connected component under alpha_0, alpha_1, alpha_2). Every dart s
+/// of the range not seen yet starts a breadth-first search (darts of the range marked in
+/// the chunk's own bytes, the others in a set per search); its cell belongs to the chunk if no dart is below b, i.e. s is its smallest dart,
+/// and only then are the cell's darts, strips, faces and corners labelled (chunk-local
+/// numbers, in the order of the sequential search). So a cell is labelled by exactly one
+/// chunk, and the chunks write disjoint darts.
+void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out) {
     const auto& L = g.links();
-    const std::size_t n = L.size();
-    CellLabels cs;
-    cs.cell.assign(n, -1);
-    cs.face.assign(n, -1);
-    cs.corner.assign(n, -1);
-    cs.darts.reserve(n);
-    // Exact sizes for a hex map (48 darts per cell, 8 per face, 6 per corner): no growth
-    // beyond them, which would keep up to twice the memory through the assembly.
-    cs.size.reserve(n / 48 + 1);
-    cs.off.reserve(n / 48 + 2);
-    cs.fsize.reserve(n / 8 + 1);
-    cs.ksize.reserve(n / 6 + 1);
-    cs.off.push_back(0);
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
     std::vector<int>& face = cs.face;
     std::vector<int>& corner = cs.corner;
     // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
     constexpr int kStripSeen = -2;
-    GMapValidation& v = cs.counts;
-    for (std::size_t s = 0; s < n; ++s) {
-        if (cs.cell[s] >= 0) continue;
-        const int c = static_cast<int>(cs.size.size());
-        const std::size_t first = cs.darts.size();
-        cs.cell[s] = c;
-        cs.darts.push_back(static_cast<int>(s));
-        for (std::size_t q = first; q < cs.darts.size(); ++q) {
-            const auto& r = L[static_cast<std::size_t>(cs.darts[q])];
+    GMapValidation& v = out.counts;
+    std::vector<char> seen(e - b, 0);
+    CellDartSet inCell;
+    std::vector<int> search;
+    out.off.push_back(static_cast<int>(out.darts.size()));
+    for (std::size_t s = b; s < e; ++s) {
+        if (seen[s - b]) continue;
+        search.assign(1, static_cast<int>(s));
+        seen[s - b] = 1;
+        inCell.clear();
+        bool own = true;
+        for (std::size_t q = 0; q < search.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(search[q])];
             for (int i = 0; i < 3; ++i) {
-                int& l = cs.cell[static_cast<std::size_t>(r[i])];
-                if (l < 0) {
-                    l = c;
-                    __builtin_prefetch(&L[static_cast<std::size_t>(r[i])]);
-                    cs.darts.push_back(r[i]);
+                const auto x = static_cast<std::size_t>(r[i]);
+                if (x - b < e - b) {  // in the chunk: its own mark
+                    if (seen[x - b]) continue;
+                    seen[x - b] = 1;
+                } else if (!inCell.insert(r[i])) {
+                    continue;
                 }
+                __builtin_prefetch(&L[x]);
+                search.push_back(r[i]);
+                if (x < b) own = false;
             }
         }
-        const int size = static_cast<int>(cs.darts.size() - first);
-        cs.size.push_back(size);
-        cs.off.push_back(static_cast<int>(cs.darts.size()));
-        const int* const begin = cs.darts.data() + first;
-        const int* const end = cs.darts.data() + cs.darts.size();
+        if (!own) continue;
+        const int c = static_cast<int>(out.size.size());
+        for (const int x : search) cs.cell[static_cast<std::size_t>(x)] = c;
+        out.darts.insert(out.darts.end(), search.begin(), search.end());
+        const int size = static_cast<int>(search.size());
+        out.size.push_back(size);
+        out.off.push_back(static_cast<int>(out.darts.size()));
+        const int* const begin = search.data();
+        const int* const end = search.data() + search.size();
         if (size != 48) v.eq6_hex += size;
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] != -1) continue;
@@ -169,25 +225,94 @@ CellLabels labelCells(const GMap<3>& g) {
         }
         for (const int* x = begin; x != end; ++x) {
             if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int f = static_cast<int>(cs.fsize.size());
+            const int f = static_cast<int>(out.fsize.size());
             face[static_cast<std::size_t>(*x)] = f;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
                 [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { face[static_cast<std::size_t>(d)] = f; });
-            cs.fsize.push_back(m);
+            out.fsize.push_back(m);
             if (m != 8) v.eq3_quad += m;
         }
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int k = static_cast<int>(cs.ksize.size());
+            const int k = static_cast<int>(out.ksize.size());
             corner[static_cast<std::size_t>(*x)] = k;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
                 [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
-            cs.ksize.push_back(m);
+            out.ksize.push_back(m);
             if (m != 6) v.eq4_corner += m;
         }
     }
+}
+
+/// Cells, faces and corners of an involutive map (every link a dart index, alpha_i an
+/// involution): cells numbered in order of their smallest dart, each cell's darts in
+/// breadth-first order from it, faces and corners numbered cell after cell. The cells are
+/// found and labelled in parallel chunks of the darts (labelCellChunk(): each cell by the
+/// chunk of its smallest dart), then the later chunks' numbers are moved past the earlier
+/// ones': the same labels for any thread count.
+CellLabels labelCells(const GMap<3>& g, int threads) {
+    const std::size_t n = g.links().size();
+    CellLabels cs;
+    cs.cell.assign(n, -1);
+    cs.face.assign(n, -1);
+    cs.corner.assign(n, -1);
+    const int chunks = n >= 65536 ? std::max(1, threads) : 1;
+    std::vector<CellChunk> part(static_cast<std::size_t>(chunks));
+    // Chunk 0 fills the result's arrays, reserved at their hex-map sizes (48 darts per cell,
+    // 8 per face, 6 per corner): no growth beyond them, which would keep up to twice the
+    // memory through the assembly.
+    part[0].darts.reserve(n);
+    part[0].size.reserve(n / 48 + 1);
+    part[0].off.reserve(n / 48 + 2);
+    part[0].fsize.reserve(n / 8 + 1);
+    part[0].ksize.reserve(n / 6 + 1);
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        CellChunk& P = part[static_cast<std::size_t>(k)];
+        if (k > 0) {
+            P.darts.reserve(e - b);
+            P.size.reserve((e - b) / 48 + 1);
+            P.off.reserve((e - b) / 48 + 2);
+            P.fsize.reserve((e - b) / 8 + 1);
+            P.ksize.reserve((e - b) / 6 + 1);
+        }
+        labelCellChunk(g, b, e, cs, P);
+    });
+    CellChunk& first = part[0];
+    std::size_t nDarts = first.darts.size();
+    for (std::size_t k = 1; k < part.size(); ++k) {
+        const CellChunk& P = part[k];
+        const int cellBase = static_cast<int>(first.size.size()), faceBase = static_cast<int>(first.fsize.size());
+        const int cornerBase = static_cast<int>(first.ksize.size()), dartBase = static_cast<int>(nDarts);
+        first.size.insert(first.size.end(), P.size.begin(), P.size.end());
+        for (std::size_t c = 1; c < P.off.size(); ++c) first.off.push_back(dartBase + P.off[c]);
+        first.fsize.insert(first.fsize.end(), P.fsize.begin(), P.fsize.end());
+        first.ksize.insert(first.ksize.end(), P.ksize.begin(), P.ksize.end());
+        first.darts.resize(nDarts + P.darts.size());
+        // The chunk's darts: appended, their numbers moved past the earlier chunks'.
+        parallelChunks(P.darts.size(), chunks, [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t i = b; i < e; ++i) {
+                const auto x = static_cast<std::size_t>(P.darts[i]);
+                first.darts[nDarts + i] = static_cast<int>(x);
+                cs.cell[x] += cellBase;
+                cs.face[x] += faceBase;
+                cs.corner[x] += cornerBase;
+            }
+        });
+        nDarts += P.darts.size();
+        first.counts.eq3_quad += P.counts.eq3_quad;
+        first.counts.eq4_corner += P.counts.eq4_corner;
+        first.counts.eq5_strip += P.counts.eq5_strip;
+        first.counts.eq6_hex += P.counts.eq6_hex;
+        part[k] = CellChunk();
+    }
+    cs.counts = first.counts;
+    cs.size = std::move(first.size);
+    cs.darts = std::move(first.darts);
+    cs.off = std::move(first.off);
+    cs.fsize = std::move(first.fsize);
+    cs.ksize = std::move(first.ksize);
     return cs;
 }
 
@@ -343,14 +468,10 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
-    // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
-    // With two or more threads the cell search and labelling (labelCells(), sequential)
-    // runs on one of them while the others do the per-dart checks; it is used only if the
-    // checks find an involutive map with every dart alive.
-    const bool overlap = threads >= 2 && n >= 65536;
-    CellLabels cells;
-    const int checkThreads = overlap ? threads - 1 : std::max(1, threads);
-    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(checkThreads), std::max<std::size_t>(1, n / 65536)));
+    // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums);
+    // then, for an involutive map with every dart alive, the cells in parallel chunks
+    // (labelCells()).
+    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
     auto checks = [&](int k, std::size_t b, std::size_t e) {
         GMapValidation& w = part[static_cast<std::size_t>(k)];
@@ -376,14 +497,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
             }
         }
     };
-    if (overlap) {
-        parallelChunks(2, 2, [&](int job, std::size_t, std::size_t) {
-            if (job == 0) cells = labelCells(g);
-            else parallelChunks(n, chunks, checks);
-        });
-    } else {
-        parallelChunks(n, chunks, checks);
-    }
+    parallelChunks(n, chunks, checks);
     for (const auto& w : part) {
         v.darts += w.darts;
         v.not_involution += w.not_involution;
@@ -393,7 +507,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq2_face_connection += w.eq2_face_connection;
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
-        if (!overlap) cells = labelCells(g);
+        CellLabels cells = labelCells(g, threads);
         useCellLabels(std::move(cells), v, labels);
         if (!v.valid()) collectExamples(g, v);
         return v;

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 namespace HexEx {
 
@@ -75,6 +76,52 @@ double triangleDistance(const Vec3d& x, const Vec3d& a, const Vec3d& b, const Ve
     return (x - (a + ab * (vb * den) + ac * (vc * den))).norm();
 }
 
+/// Groups the indices d with label[d] >= 0 by label (counting sort: ascending within a
+/// label): label l holds idx[off[l] .. off[l + 1]). The counts and the filling run in
+/// parallel chunks of @p label, each with its own count per label that becomes its first
+/// slot per label (chunk after chunk within a label): the same groups for any chunk count.
+/// idx is not zeroed first (every slot is written).
+void groupByClass(const std::vector<int>& label, std::size_t nc, int threads, std::vector<int>& off, std::unique_ptr<int[]>& idx) {
+    const std::size_t n = label.size();
+    const int chunks = n >= 65536 ? std::max(1, std::min(threads, 4)) : 1;
+    std::vector<std::vector<int>> next(static_cast<std::size_t>(chunks));  // per chunk: count, then next slot, per label
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        std::vector<int>& c = next[static_cast<std::size_t>(k)];
+        c.assign(nc, 0);
+        for (std::size_t d = b; d < e; ++d)
+            if (label[d] >= 0) ++c[static_cast<std::size_t>(label[d])];
+    });
+    // Offsets: per range of labels its total, then the ranges' starts, then the slots.
+    const int ranges = nc >= 65536 ? chunks : 1;
+    std::vector<long> rangeStart(static_cast<std::size_t>(ranges) + 1, 0);
+    parallelChunks(nc, ranges, [&](int r, std::size_t b, std::size_t e) {
+        long t = 0;
+        for (std::size_t l = b; l < e; ++l)
+            for (const std::vector<int>& c : next) t += c[l];
+        rangeStart[static_cast<std::size_t>(r) + 1] = t;
+    });
+    for (std::size_t r = 0; r < static_cast<std::size_t>(ranges); ++r) rangeStart[r + 1] += rangeStart[r];
+    off.resize(nc + 1);
+    off[nc] = static_cast<int>(rangeStart.back());
+    parallelChunks(nc, ranges, [&](int r, std::size_t b, std::size_t e) {
+        int at = static_cast<int>(rangeStart[static_cast<std::size_t>(r)]);
+        for (std::size_t l = b; l < e; ++l) {
+            off[l] = at;
+            for (std::vector<int>& c : next) {
+                const int m = c[l];
+                c[l] = at;
+                at += m;
+            }
+        }
+    });
+    idx.reset(new int[static_cast<std::size_t>(off[nc])]);
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+        int* const slot = next[static_cast<std::size_t>(k)].data();
+        for (std::size_t d = b; d < e; ++d)
+            if (label[d] >= 0) idx[static_cast<std::size_t>(slot[label[d]]++)] = static_cast<int>(d);
+    });
+}
+
 /// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
@@ -88,16 +135,9 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
                                          const DartPlacement& darts, int threads, VertexCandidates* candidates) {
     // Group darts by class (counting sort keeps darts ascending within a class).
     const auto nc = static_cast<std::size_t>(n_classes);
-    std::vector<int> off(nc + 1, 0);
-    for (int l : label)
-        if (l >= 0) ++off[static_cast<std::size_t>(l) + 1];
-    for (std::size_t l = 0; l < nc; ++l) off[l + 1] += off[l];
-    std::vector<int> idx(static_cast<std::size_t>(off.back()));
-    {
-        std::vector<int> fill(off.begin(), off.end() - 1);
-        for (std::size_t d = 0; d < label.size(); ++d)
-            if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
-    }
+    std::vector<int> off;
+    std::unique_ptr<int[]> idx;
+    groupByClass(label, nc, threads, off, idx);
     // Extra placed points (removed regular darts) per class, in order.
     std::vector<int> xoff(nc + 1, 0), xidx(darts.extra_dart.size());
     std::vector<char> xflip(darts.extra_dart.size(), 0);
