@@ -421,7 +421,7 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     const std::size_t n = tets.size();
     const int chunks = std::max(1, threads);
     std::vector<std::vector<DartSet::DenseIndex>> denseParts(static_cast<std::size_t>(chunks));
-    constexpr double kDenseMinPoints = 64;  // smaller tets: binary search is as fast
+    constexpr double kDenseMinPoints = kDenseIndexMinPoints;  // smaller tets: binary search is as fast
     std::vector<std::size_t> count(n, 0);  // darts per tet
     const std::array<std::uint64_t, 8> octantFrames = octantFrameMasks();
     auto capError = [&] {

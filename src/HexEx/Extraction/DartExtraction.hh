@@ -128,6 +128,10 @@ struct DartSet {
 /// The 48 axis frames (d1, d2, d3) in lexicographic order.
 const std::array<std::array<AxisDir, 3>, 48>& allFrames();
 
+/// Tets whose integer grid box (gridBox()) has at least this many points get a dense index
+/// (DartSet::DenseIndex); smaller ones are searched by binary search.
+constexpr double kDenseIndexMinPoints = 64;
+
 /// Integer bounding box [lo, hi] of a tet's parameter image and its number of grid points.
 struct GridBox {
     int lo[3] = {0, 0, 0};  ///< smallest grid point
