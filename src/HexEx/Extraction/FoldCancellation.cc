@@ -3,6 +3,7 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <map>
 
@@ -21,6 +22,25 @@ std::vector<int> identityChartComponents(const TetMesh& mesh, const Transitions&
     std::vector<int> comp(n);
     for (std::size_t c = 0; c < n; ++c) comp[c] = uf.find(static_cast<int>(c));  // the smallest tet (unite() keeps it)
     return comp;
+}
+
+bool mayCancelFoldPoints(const std::vector<TetSoS>& tets) {
+    for (const TetSoS& T : tets) {
+        if (T.vol >= 0) continue;
+        if (!T.p) return true;
+        double points = 1;
+        for (int a = 0; a < 3; ++a) {
+            double lo = T.p[0][a], hi = T.p[0][a];
+            for (int i = 1; i < 4; ++i) {
+                lo = std::min(lo, T.p[i][a]);
+                hi = std::max(hi, T.p[i][a]);
+            }
+            if (!(std::fabs(lo) <= 1e9 && std::fabs(hi) <= 1e9)) return true;  // (also NaN) gridBox() throws: let it
+            points *= std::max(0.0, std::floor(hi) - std::ceil(lo) + 1);  // gridBox()'s box, exactly (|u| <= 1e9)
+        }
+        if (points >= kDenseIndexMinPoints) return true;
+    }
+    return false;
 }
 
 namespace {

@@ -28,6 +28,11 @@ namespace HexEx {
 /// transition share one (the smallest tet index of the component).
 std::vector<int> identityChartComponents(const TetMesh& mesh, const Transitions& transitions);
 
+/// Whether cancelFoldPoints() can find anything: some flipped tet gets a dense index (its grid
+/// box has at least kDenseIndexMinPoints points). Tets with non-finite or absurd parameters
+/// count as yes (the extraction reports them). Without, the chart components are not needed.
+bool mayCancelFoldPoints(const std::vector<TetSoS>& tets);
+
 /// Finds the cancelled points (see the file comment) among the dense indices @p dense
 /// (their offsets counted, one per box point), marks them in DenseIndex::cancelled of
 /// every tet with darts there, sets those darts to none in the offsets and in @p count

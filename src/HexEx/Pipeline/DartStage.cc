@@ -20,7 +20,12 @@ DartStageOutput extractDartStage(const DartStageInput& in) {
     const std::size_t maxDarts = in.budget ? in.budget->max_darts : static_cast<std::size_t>(-1);
     std::vector<int> components;
     const bool folds = std::any_of(in.tets->begin(), in.tets->end(), [](const TetSoS& T) { return T.vol < 0; });
-    if (in.cheap_folds && in.transitions && folds) components = identityChartComponents(*in.mesh, *in.transitions);
+    // The components serve only the cancellation, which looks only at flipped tets with a
+    // dense index: maps whose flipped tets are all small (maps built from hex meshes) skip
+    // them. The extraction is the same: it cancels nothing there either, and its dart cap
+    // gives the same verdict before or after a cancellation that removes nothing.
+    if (in.cheap_folds && in.transitions && folds && mayCancelFoldPoints(*in.tets))
+        components = identityChartComponents(*in.mesh, *in.transitions);
     try {
         out.darts = extractDarts(*in.tets, in.threads, 1e9, in.implicit_cells, in.implicit_cells ? &usableFaces : nullptr,
                                  in.abs_volume, maxDarts, components.empty() ? nullptr : &components);
