@@ -110,6 +110,23 @@ TEST(DartExtraction, LargeTetsWithDenseIndicesEqualTheDirectEnumeration) {
     EXPECT_GT(expectDirectDarts(pm), 0);
 }
 
+TEST(DartExtraction, FoldedMapWithSmallAndLargeTetsEqualsTheDirectEnumeration) {
+    // Flipped tets make the extraction count first and write second; the writing pass
+    // expands the points recorded for the small tets and enumerates the dense ones again, so
+    // both kinds alternate within one chunk here.
+    ParametrizedTetMesh pm = generateCube(3, 10);  // cells of 10/3 units: boxes of 27 to 64 points
+    const double c = 10.0 / 3.0;
+    for (auto& corners : pm.params)
+        for (auto& p : corners)
+            if (std::fabs(p[0] - c) < 1e-9 && std::fabs(p[1] - c) < 1e-9 && std::fabs(p[2] - c) < 1e-9)
+                p[2] = 7.25;  // an interior vertex moved through the cells above it
+    const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);
+    const DartSet ds = extractDarts(tets, 1);
+    EXPECT_GT(ds.dense.size(), 0u);
+    EXPECT_LT(ds.dense.size(), tets.size() / 2);
+    EXPECT_GT(expectDirectDarts(pm), 0);
+}
+
 TEST(DartExtraction, ImplicitCellsAreTheSameForAnyThreadCount) {
     const ParametrizedTetMesh pm = generateCube(2, 12);  // TetSoS points into its parameters
     const std::vector<TetSoS> tets = buildTetSoS(pm.params, 1);

@@ -518,15 +518,28 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         // counting pass allocates nothing per dart, and a fold that cancels must not be
         // refused for the darts it would have had.
         const bool capAfterCancel = chart_component != nullptr;
+        // The points with darts of the small tets (no dense index: fewer than
+        // kDenseIndexMinPoints box points), one word each in tet and box order: the frames
+        // (bits 0..47) and the point's index in the tet's box (bits 48..63). The writing pass
+        // expands them instead of testing every box point of the tet again (it cost a third
+        // of the stage on folded maps); both passes give chunk k the same tets.
+        std::vector<std::vector<std::uint64_t>> smallPoints(static_cast<std::size_t>(chunks));
         parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
             for (std::size_t c = b; c < e; ++c) {
                 if (tets[c].vol == 0) continue;
                 GridBox box;
                 DartSet::DenseIndex* di = prepareTet(k, c, box);
+                auto& points = smallPoints[static_cast<std::size_t>(k)];
+                auto keep = [&](const Vec3i& z, std::uint64_t frames) {
+                    if (di) return;  // dense indices have their offsets
+                    const int dy = box.hi[1] - box.lo[1] + 1, dz = box.hi[2] - box.lo[2] + 1;
+                    const auto l = static_cast<std::uint64_t>(((z[0] - box.lo[0]) * dy + (z[1] - box.lo[1])) * dz + (z[2] - box.lo[2]));
+                    points.push_back(frames | l << 48);
+                };
                 if (capAfterCancel)
-                    count[c] = visitTetDarts(tets[c], box, di, octantFrames, [](std::uint32_t) {}, [](const Vec3i&, std::uint64_t) {});
+                    count[c] = visitTetDarts(tets[c], box, di, octantFrames, [](std::uint32_t) {}, keep);
                 else
-                    counted(c, visitTetDarts(tets[c], box, di, octantFrames, capCheck, [](const Vec3i&, std::uint64_t) {}));
+                    counted(c, visitTetDarts(tets[c], box, di, octantFrames, capCheck, keep));
             }
         });
         if (chart_component) {
@@ -543,12 +556,28 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
         parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
             std::size_t nextDense = 0;  // the chunk's dense indices, in tet order
             auto& dense = denseParts[static_cast<std::size_t>(k)];
+            const std::vector<std::uint64_t>& points = smallPoints[static_cast<std::size_t>(k)];
+            std::size_t nextPoint = 0;  // the chunk's small-tet points, in tet order
             for (std::size_t c = b; c < e; ++c) {
                 const TetSoS& T = tets[c];
                 if (T.vol == 0) continue;
                 const DartSet::DenseIndex* di =
                     nextDense < dense.size() && dense[nextDense].tet == static_cast<int>(c) ? &dense[nextDense++] : nullptr;
-                writeTetDarts(T, static_cast<int>(c), gridBox(T, c), di, octantFrames, s.darts.data() + s.tet_begin[c]);
+                const GridBox box = gridBox(T, c);
+                if (di) {
+                    writeTetDarts(T, static_cast<int>(c), box, di, octantFrames, s.darts.data() + s.tet_begin[c]);
+                    continue;
+                }
+                // The tet's recorded points, until its count is written (each has a dart).
+                const int dy = box.hi[1] - box.lo[1] + 1, dz = box.hi[2] - box.lo[2] + 1;
+                Dart* out = s.darts.data() + s.tet_begin[c];
+                Dart* const end = s.darts.data() + s.tet_begin[c + 1];
+                while (out != end) {
+                    const std::uint64_t r = points[nextPoint++];
+                    const int l = static_cast<int>(r >> 48);
+                    const Vec3i z(box.lo[0] + l / (dy * dz), box.lo[1] + (l / dz) % dy, box.lo[2] + l % dz);
+                    out = writeFrames(out, static_cast<int>(c), z, static_cast<signed char>(T.vol), r & kAllFrames);
+                }
             }
         });
     }
