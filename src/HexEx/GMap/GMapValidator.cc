@@ -167,10 +167,12 @@ struct CellChunk {
 /// Finds and labels the cells of @p g whose smallest dart is in [b, e) (for an involutive
 /// map: each cell is a connected component under alpha_0, alpha_1, alpha_2). Every dart s
 /// of the range not seen yet starts a breadth-first search (darts of the range marked in
-/// the chunk's own bytes, the others in a set per search); its cell belongs to the chunk if no dart is below b, i.e. s is its smallest dart,
-/// and only then are the cell's darts, strips, faces and corners labelled (chunk-local
-/// numbers, in the order of the sequential search). So a cell is labelled by exactly one
-/// chunk, and the chunks write disjoint darts.
+/// the chunk's own bytes, the others in a set per search); its cell belongs to the chunk if
+/// no dart is below b, i.e. s is its smallest dart, and only then are the cell's darts,
+/// strips, faces and corners labelled (chunk-local numbers, in the order of the sequential
+/// search). So a cell is labelled by exactly one chunk, and the chunks write disjoint darts.
+/// With @p Whole (one chunk of all darts) the cell labels are the search's marks.
+template <bool Whole>
 void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out) {
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -180,40 +182,50 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
     // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
     constexpr int kStripSeen = -2;
     GMapValidation& v = out.counts;
-    std::vector<char> seen(e - b, 0);
+    // One chunk (Whole: all darts): the cell labels are the marks, as in a sequential search.
+    constexpr bool whole = Whole;
+    std::vector<char> seen(whole ? 0 : e - b, 0);
     CellDartSet inCell;
-    std::vector<int> search;
     out.off.push_back(static_cast<int>(out.darts.size()));
     for (std::size_t s = b; s < e; ++s) {
-        if (seen[s - b]) continue;
-        search.assign(1, static_cast<int>(s));
-        seen[s - b] = 1;
+        if (whole ? cs.cell[s] >= 0 : seen[s - b] != 0) continue;
+        const int c = static_cast<int>(out.size.size());
+        const std::size_t first = out.darts.size();
+        out.darts.push_back(static_cast<int>(s));
+        if (whole) cs.cell[s] = c;
+        else seen[s - b] = 1;
         inCell.clear();
         bool own = true;
-        for (std::size_t q = 0; q < search.size(); ++q) {
-            const auto& r = L[static_cast<std::size_t>(search[q])];
+        for (std::size_t q = first; q < out.darts.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(out.darts[q])];
             for (int i = 0; i < 3; ++i) {
                 const auto x = static_cast<std::size_t>(r[i]);
-                if (x - b < e - b) {  // in the chunk: its own mark
+                if (whole) {
+                    int& l = cs.cell[x];
+                    if (l >= 0) continue;
+                    l = c;
+                } else if (x - b < e - b) {  // in the chunk: its own mark
                     if (seen[x - b]) continue;
                     seen[x - b] = 1;
-                } else if (!inCell.insert(r[i])) {
-                    continue;
+                } else {
+                    if (!inCell.insert(r[i])) continue;
+                    if (x < b) own = false;
                 }
                 __builtin_prefetch(&L[x]);
-                search.push_back(r[i]);
-                if (x < b) own = false;
+                out.darts.push_back(r[i]);
             }
         }
-        if (!own) continue;
-        const int c = static_cast<int>(out.size.size());
-        for (const int x : search) cs.cell[static_cast<std::size_t>(x)] = c;
-        out.darts.insert(out.darts.end(), search.begin(), search.end());
-        const int size = static_cast<int>(search.size());
+        if (!own) {
+            out.darts.resize(first);
+            continue;
+        }
+        const int* const begin = out.darts.data() + first;
+        const int* const end = out.darts.data() + out.darts.size();
+        if (!whole)
+            for (const int* x = begin; x != end; ++x) cs.cell[static_cast<std::size_t>(*x)] = c;
+        const int size = static_cast<int>(end - begin);
         out.size.push_back(size);
         out.off.push_back(static_cast<int>(out.darts.size()));
-        const int* const begin = search.data();
-        const int* const end = search.data() + search.size();
         if (size != 48) v.eq6_hex += size;
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] != -1) continue;
@@ -277,7 +289,8 @@ CellLabels labelCells(const GMap<3>& g, int threads) {
             P.fsize.reserve((e - b) / 8 + 1);
             P.ksize.reserve((e - b) / 6 + 1);
         }
-        labelCellChunk(g, b, e, cs, P);
+        if (chunks == 1) labelCellChunk<true>(g, b, e, cs, P);
+        else labelCellChunk<false>(g, b, e, cs, P);
     });
     CellChunk& first = part[0];
     std::size_t nDarts = first.darts.size();

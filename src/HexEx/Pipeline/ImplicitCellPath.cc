@@ -53,7 +53,7 @@ struct Slab {
 /// Counts the implicit cells of @p sl (and their boundary faces), or with @p fill writes
 /// them to @p cells from position @p at, and their twin faces to @p twins.
 void visitSlab(const TetMesh& mesh, const DartSet& ds, Slab& sl, bool fill, std::size_t at,
-               std::vector<std::array<int, 8>>& cells, std::vector<unsigned char>& twins) {
+               FilledVector<std::array<int, 8>>& cells, std::vector<unsigned char>& twins) {
     const DartSet::DenseIndex& di = ds.dense[sl.dense];
     unsigned boundaryFaces = 0;
     for (int j = 0; j < 4; ++j)
@@ -111,22 +111,24 @@ std::vector<FaceMask> implicitCellFaces(const TetMesh& mesh, const std::vector<T
     return usable;
 }
 
-std::vector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
-                                           const std::vector<int>& newIndex, int n_alive, int threads) {
-    std::vector<int> occ(static_cast<std::size_t>(n_alive), -1);
+FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
+                                            const std::vector<int>& newIndex, int n_alive, int threads) {
+    // Every surviving dart has one new index: every entry is written (no zeroing pass).
+    FilledVector<int> occ(static_cast<std::size_t>(n_alive));
     parallelChunks(alpha.size(), threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
             const long o = implicitPartnerOccurrence(alpha[d][3]);
-            if (o >= 0) occ[static_cast<std::size_t>(newIndex[d])] = static_cast<int>(o);
+            occ[static_cast<std::size_t>(newIndex[d])] = o >= 0 ? static_cast<int>(o) : -1;
         }
     });
     return occ;
 }
 
-std::vector<int> implicitDartOccurrences(const DartSet& ds, const std::vector<char>& alive, const std::vector<int>& newIndex,
-                                         int n_alive, int threads) {
-    std::vector<int> occ(static_cast<std::size_t>(n_alive), -1);
+FilledVector<int> implicitDartOccurrences(const DartSet& ds, const std::vector<char>& alive, const std::vector<int>& newIndex,
+                                          int n_alive, int threads) {
+    // Every surviving dart has one new index: every entry is written (no zeroing pass).
+    FilledVector<int> occ(static_cast<std::size_t>(n_alive));
     // Darts are sorted by (tet, grid point): look the occurrence up once per run.
     parallelChunks(ds.darts.size(), threads, [&](int, std::size_t b, std::size_t e) {
         int o = -1;

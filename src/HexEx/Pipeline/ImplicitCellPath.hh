@@ -25,11 +25,11 @@ std::vector<FaceMask> implicitCellFaces(const TetMesh& mesh, const std::vector<T
 /// Per surviving dart (new index): the occurrence id of its implicit alpha_3 partner, or
 /// -1. Reads the traced links @p alpha before they are compacted; @p new_index maps old
 /// dart indices to new ones (-1 for removed darts).
-std::vector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
+FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
                                            const std::vector<int>& new_index, int n_alive, int threads);
 
 /// Per surviving dart (new index): the occurrence id of its own grid point, or -1.
-std::vector<int> implicitDartOccurrences(const DartSet& darts, const std::vector<char>& alive,
+FilledVector<int> implicitDartOccurrences(const DartSet& darts, const std::vector<char>& alive,
                                          const std::vector<int>& new_index, int n_alive, int threads);
 
 /// Fills the implicit cells of @p darts into @p out: n_occurrences, cells (8 corner

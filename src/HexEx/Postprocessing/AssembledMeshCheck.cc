@@ -5,6 +5,7 @@
 
 #include "AssembledMeshCheck.hh"
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Parallel.hh"
 #include "../Mesh/HexMeshCheck.hh"
 
@@ -184,7 +185,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
     for (int p = 0; p < nParts; ++p)
         largest = std::max(largest, static_cast<std::size_t>(start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p) + 1])] -
                                                              start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p)])]));
-    std::vector<QuadRecord<Item>> rec(largest);
+    // Every record read is written first: sized without zeroing.
+    std::vector<QuadRecord<Item>, DefaultInitAllocator<QuadRecord<Item>>> rec(largest);
     // Per chunk of vertices: counts and the boundary quads in vertex order, concatenated in
     // chunk order (and part order).
     struct ChunkQuads {

@@ -7,6 +7,10 @@
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+#include <cstdint>
 #include <iterator>
 
 namespace HexEx {
@@ -23,6 +27,26 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
     for (std::size_t d = 0; d < label.size(); ++d)
         if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
 }
+
+/// The occurrences that are elements of the vertex classes' union-find, as a bit set with
+/// the rank of each word's first element: element numbers in occurrence order.
+struct OccurrenceRanks {
+    /// 64 occurrences: bit o % 64 set if occurrence o is an element, and the number of
+    /// elements before the word (together: one cache access per rank).
+    struct Word {
+        std::uint64_t element;  ///< the elements' bits
+        std::int64_t first;     ///< elements before the word
+    };
+    std::vector<Word> word;            ///< per 64 occurrences
+    std::vector<std::uint64_t> used;   ///< per word: the used (labelled) occurrences' bits
+    long n = 0;                        ///< number of elements
+    long n_used = 0;                   ///< number of used occurrences
+    /// Element number of occurrence @p o (which must be an element).
+    int rank(int o) const {
+        const Word& w = word[static_cast<std::size_t>(o) >> 6];
+        return static_cast<int>(w.first) + __builtin_popcountll(w.element & ((std::uint64_t(1) << (o & 63)) - 1));
+    }
+};
 } // namespace
 
 
@@ -44,7 +68,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     // Implicit cells: per occurrence the union-find slot that ends up holding its label
     // (encoded as -2 - label), so the occurrences need no label array of their own.
     std::vector<int> occSlot;
-    int nk = 0;  // corner orbits: occurrence o has the slot nk + o
+    int nk = 0;  // corner orbits: occurrence o has the slot nk + occ.rank(o)
+    OccurrenceRanks occ;
     // Implicit cells: classes without darts (numbered nvDarts, nvDarts + 1, ...), each with
     // its first occurrence (ascending).
     std::vector<long> dartless;
@@ -65,21 +90,93 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // Union-find over corner orbits (<alpha_1, alpha_2>, from the validator: 6 darts
         // each) and occurrences: corners joined over alpha_3 and with the occurrences their
         // darts sit on or link to. The same classes as over darts, with 6x fewer elements.
-        // The unions run in parallel chunks of darts (the classes do not depend on the order).
+        // Only the occurrences that are used (corners of implicit cells, or sat on or linked
+        // to by a dart: they get a label) or joined across a face are elements, numbered by
+        // their rank among those (most grid points of a tet's box lie outside its image, or
+        // are neither): 1.88M of the 10.35M occurrences of the cylinder v6.
         const std::vector<int>& corner = labels.corner;
         nk = static_cast<int>(labels.corner_size.size());
-        ConcurrentUnionFind uf(static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc));
-        std::vector<char> used(static_cast<std::size_t>(nocc), 0);
-        auto use = [&](int o) { __atomic_store_n(&used[static_cast<std::size_t>(o)], char(1), __ATOMIC_RELAXED); };
-        const std::vector<int>& dartOcc = implicit->dart_occurrence;
-        const std::vector<int>& flabel = labels.face;
+        const FilledVector<int>& dartOcc = implicit->dart_occurrence;
+        const FilledVector<int>& a3Occ = implicit->alpha3_occurrence;
+        const auto& jo = implicit->joined_occurrences;
+        const auto nOcc = static_cast<std::size_t>(nocc);
+        const int ufChunks = nd + nOcc >= 16384 ? std::max(1, threads) : 1;
+        {
+            // Per occurrence: bit 0 used, bit 1 joined (parallel marks; all writers of a pass
+            // store the same bit).
+            std::vector<char> mark(nOcc, 0);
+            auto use = [&](int o) { __atomic_store_n(&mark[static_cast<std::size_t>(o)], char(1), __ATOMIC_RELAXED); };
+            parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
+                int lastOcc = -1;  // the darts of one grid point of a tet are consecutive
+                for (std::size_t d = d0; d < d1; ++d) {
+                    if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
+                    const int o = dartOcc[d];
+                    if (o >= 0 && o != lastOcc) {
+                        lastOcc = o;
+                        use(o);
+                    }
+                    if (a3Occ[d] >= 0) use(a3Occ[d]);
+                }
+            });
+            parallelChunks(implicit->cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i)
+                    for (int o : implicit->cells[i]) use(o);
+            });
+            parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i) {
+                    __atomic_fetch_or(&mark[static_cast<std::size_t>(jo[i].first)], char(2), __ATOMIC_RELAXED);
+                    __atomic_fetch_or(&mark[static_cast<std::size_t>(jo[i].second)], char(2), __ATOMIC_RELAXED);
+                }
+            });
+            // The marks as two bit sets, 64 occurrences a word, with each word's first rank.
+            const std::size_t nWords = (nOcc + 63) / 64;
+            occ.word.resize(nWords);
+            occ.used.resize(nWords);
+            std::vector<long> inChunk(static_cast<std::size_t>(ufChunks) + 1, 0), usedInChunk(static_cast<std::size_t>(ufChunks), 0);
+            parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
+                long n = 0;
+                for (std::size_t w = w0; w < w1; ++w) {
+                    std::uint64_t el = 0, us = 0;
+                    const std::size_t o0 = 64 * w, o1 = std::min(o0 + 64, nOcc);
+#if defined(__SSE2__)
+                    if (o1 - o0 == 64) {
+                        for (int q = 0; q < 4; ++q) {
+                            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(mark.data() + o0 + 16 * static_cast<std::size_t>(q)));
+                            const auto nonzero = static_cast<unsigned>(~_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_setzero_si128()))) & 0xffffu;
+                            const auto bit0 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 7)));  // each byte's bit 0
+                            el |= static_cast<std::uint64_t>(nonzero) << (16 * q);
+                            us |= static_cast<std::uint64_t>(bit0) << (16 * q);
+                        }
+                    } else
+#endif
+                        for (std::size_t o = o0; o < o1; ++o) {
+                            el |= static_cast<std::uint64_t>(mark[o] != 0) << (o - o0);
+                            us |= static_cast<std::uint64_t>(mark[o] & 1) << (o - o0);
+                        }
+                    occ.word[w] = {el, n};
+                    occ.used[w] = us;
+                    n += __builtin_popcountll(el);
+                    usedInChunk[static_cast<std::size_t>(k)] += __builtin_popcountll(us);
+                }
+                inChunk[static_cast<std::size_t>(k) + 1] = n;
+            });
+            for (std::size_t k = 0; k < static_cast<std::size_t>(ufChunks); ++k) inChunk[k + 1] += inChunk[k];
+            parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
+                for (std::size_t w = w0; w < w1; ++w) occ.word[w].first += inChunk[static_cast<std::size_t>(k)];
+            });
+            occ.n = inChunk.back();
+            for (const long u : usedInChunk) occ.n_used += u;
+        }
+        const auto nElements = static_cast<std::size_t>(nk) + static_cast<std::size_t>(occ.n);
+        ConcurrentUnionFind uf(nElements);
+        auto element = [&](int o) { return nk + occ.rank(o); };
         bq.assign(labels.face_size.size(), 0);
-        const int ufChunks = nd + static_cast<std::size_t>(nocc) >= 16384 ? std::max(1, threads) : 1;
+        // The unions run in parallel chunks of darts (the classes do not depend on the order).
         parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
             // The darts of one grid point of a tet (consecutive) share their occurrence: each
             // of their corners is joined with it once (the last few corners joined with the
             // current occurrence are remembered).
-            int lastOcc = -1;
+            int lastOcc = -1, lastElement = -1;
             int joined[8];
             int nJoined = 0;
             for (std::size_t d = d0; d < d1; ++d) {
@@ -93,38 +190,28 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 if (o >= 0) {
                     if (o != lastOcc) {
                         lastOcc = o;
+                        lastElement = element(o);
                         nJoined = 0;
-                        use(o);
                     }
                     if (std::find(joined, joined + nJoined, k) == joined + nJoined) {
-                        uf.unite(k, nk + o);
+                        uf.unite(k, lastElement);
                         if (nJoined < 8) joined[nJoined++] = k;
                     }
                 }
-                const int o3 = implicit->alpha3_occurrence[d];
+                const int o3 = a3Occ[d];
                 if (o3 >= 0) {
-                    uf.unite(k, nk + o3);
-                    use(o3);
+                    uf.unite(k, element(o3));
                 } else if (d3 == static_cast<int>(d)) {
-                    __atomic_store_n(&bq[static_cast<std::size_t>(flabel[d])], char(1), __ATOMIC_RELAXED);
+                    __atomic_store_n(&bq[static_cast<std::size_t>(labels.face[d])], char(1), __ATOMIC_RELAXED);
                 }
             }
         });
-        const auto& jo = implicit->joined_occurrences;
         parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t i = b; i < e; ++i) uf.unite(nk + jo[i].first, nk + jo[i].second);
+            for (std::size_t i = b; i < e; ++i) uf.unite(element(jo[i].first), element(jo[i].second));
         });
-        parallelChunks(implicit->cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t i = b; i < e; ++i)
-                for (int o : implicit->cells[i]) use(o);
-        });
-        // Flatten (parent = root) the elements that get a label: the corners and the used
-        // occurrences (most box points of a large tet lie outside its image and are never used).
-        const std::size_t nElements = static_cast<std::size_t>(nk) + static_cast<std::size_t>(nocc);
-        auto labelled = [&](std::size_t x) { return x < static_cast<std::size_t>(nk) || used[x - static_cast<std::size_t>(nk)] != 0; };
+        // Flatten (parent = root) every element.
         parallelChunks(nElements, ufChunks, [&](int, std::size_t b, std::size_t e) {
-            for (std::size_t x = b; x < e; ++x)
-                if (labelled(x)) uf.store(static_cast<int>(x), uf.rootOf(static_cast<int>(x)));
+            for (std::size_t x = b; x < e; ++x) uf.store(static_cast<int>(x), uf.rootOf(static_cast<int>(x)));
         });
         // Labels by first appearance (alive darts in order, then used occurrences in order);
         // the root's slot in parent is reused for its label (encoded as -2 - label).
@@ -143,24 +230,21 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // Classes first labelled here have no darts; they are numbered in order from nvDarts.
         // After its label is taken, a used occurrence's own slot gets the label too (nothing
         // is looked up through a non-root slot: the labelled elements point to their roots).
-        // The first occurrence of each dartless class is marked (used = 2), then collected.
         nvDarts = nv;
-        constexpr char kFirstOfDartless = 2;
-        long nDartless = 0;
-        for (long o = 0; o < nocc; ++o) {
-            char& u = used[static_cast<std::size_t>(o)];
-            if (!u) continue;
-            const int x = nk + static_cast<int>(o);
-            const int l = labelOf(x);
-            parent[static_cast<std::size_t>(x)] = -2 - l;
-            if (l == nvDarts + nDartless) {  // a class first labelled here: it has no darts
-                ++nDartless;
-                u = kFirstOfDartless;
+        // The first occurrence of each dartless class is collected (ascending) when its label
+        // is taken; at most one per used occurrence is reserved.
+        dartless.reserve(static_cast<std::size_t>(occ.n_used));
+        const std::size_t nWords = occ.word.size();
+        for (std::size_t w = 0; w < nWords; ++w) {
+            int x = nk + static_cast<int>(occ.word[w].first);
+            for (std::uint64_t m = occ.word[w].element; m != 0; m &= m - 1, ++x) {
+                const int i = __builtin_ctzll(m);
+                if (!((occ.used[w] >> i) & 1)) continue;
+                const int l = labelOf(x);
+                parent[static_cast<std::size_t>(x)] = -2 - l;
+                if (l == nvDarts + static_cast<int>(dartless.size())) dartless.push_back(static_cast<long>(64 * w) + i);
             }
         }
-        dartless.reserve(static_cast<std::size_t>(nDartless));
-        for (long o = 0; o < nocc; ++o)
-            if (used[static_cast<std::size_t>(o)] == kFirstOfDartless) dartless.push_back(o);
         occSlot = std::move(parent);
     }
     if (stats.violations) describeViolations(g, vlabel, *stats.violations);
@@ -297,11 +381,26 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     if (implicit) {
         const std::size_t base = out.hexes.size();
         out.hexes.resize(base + implicit->cells.size());
+        // The corners' element numbers (ranks): the bottom four (0-3) are the previous cell's
+        // top four (4-7) when the cells are consecutive along z, and a top corner that is the
+        // occurrence after the corner below it has the next rank (elements o and o + 1:
+        // rank(o + 1) = rank(o) + 1); only the others are counted in the bit set.
         parallelChunks(implicit->cells.size(), threads, [&](int, std::size_t b, std::size_t e) {
+            std::array<int, 8> prevOcc, prevRank{};
+            prevOcc.fill(-1);
             for (std::size_t i = b; i < e; ++i) {
                 const auto& c = implicit->cells[i];
                 std::array<int, 8>& h = out.hexes[base + i];
-                for (int k = 0; k < 8; ++k) h[static_cast<std::size_t>(k)] = -2 - occSlot[static_cast<std::size_t>(nk) + static_cast<std::size_t>(c[static_cast<std::size_t>(k)])];
+                std::array<int, 8> r;
+                if (c[0] == prevOcc[4] && c[1] == prevOcc[5] && c[2] == prevOcc[6] && c[3] == prevOcc[7]) {
+                    for (std::size_t k = 0; k < 4; ++k) r[k] = prevRank[k + 4];
+                } else {
+                    for (std::size_t k = 0; k < 4; ++k) r[k] = occ.rank(c[k]);
+                }
+                for (std::size_t k = 4; k < 8; ++k) r[k] = c[k] == c[k - 4] + 1 ? r[k - 4] + 1 : occ.rank(c[k]);
+                for (std::size_t k = 0; k < 8; ++k) h[k] = -2 - occSlot[static_cast<std::size_t>(nk) + static_cast<std::size_t>(r[k])];
+                prevOcc = c;
+                prevRank = r;
             }
         });
         long cellFaces = 6 * static_cast<long>(out.hexes.size());
