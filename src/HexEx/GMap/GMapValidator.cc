@@ -4,6 +4,7 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <sstream>
@@ -133,6 +134,8 @@ public:
         used_.push_back(h);
         return true;
     }
+    /// True if it holds no dart.
+    bool empty() const { return used_.empty(); }
     /// Removes every dart.
     void clear() {
         for (const std::size_t h : used_) slot_[h] = -1;
@@ -162,18 +165,25 @@ struct CellChunk {
     std::vector<int> off;      ///< cell c holds darts[off[c] .. off[c + 1]) (local positions)
     std::vector<int> fsize;    ///< per face orbit: number of darts
     std::vector<int> ksize;    ///< per corner orbit: number of darts
+    /// Darts of its cells outside the chunk, with their cell: written when the chunks are
+    /// joined.
+    std::vector<std::pair<int, int>> deferred;
+    /// The chunk's first cell, face and corner numbers as assumed before the earlier chunks
+    /// are done (those of a hex map whose cells do not cross the chunk boundaries).
+    std::array<int, 3> base = {0, 0, 0};
 };
 
 /// Finds and labels the cells of @p g whose smallest dart is in [b, e) (for an involutive
 /// map: each cell is a connected component under alpha_0, alpha_1, alpha_2). Every dart s
-/// of the range not seen yet starts a breadth-first search (darts of the range marked in
-/// the chunk's own bytes, the others in a set per search); its cell belongs to the chunk if
-/// no dart is below b, i.e. s is its smallest dart, and only then are the cell's darts,
+/// of the range not seen yet starts a breadth-first search; its cell belongs to the chunk
+/// if no dart is below b, i.e. s is its smallest dart, and only then are the cell's darts,
 /// strips, faces and corners labelled (chunk-local numbers, in the order of the sequential
-/// search). So a cell is labelled by exactly one chunk, and the chunks write disjoint darts.
-/// With @p Whole (one chunk of all darts) the cell labels are the search's marks.
-template <bool Whole>
+/// search). So a cell is labelled by exactly one chunk, and during the parallel pass each
+/// chunk writes the face and corner labels of its own cells' darts and the cell labels of
+/// the darts in its range only. @p AllDarts: [b, e) holds every dart.
+template <bool AllDarts>
 void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out) {
+    const int cellBase = out.base[0], faceBase = out.base[1], cornerBase = out.base[2];
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
@@ -182,47 +192,57 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
     // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
     constexpr int kStripSeen = -2;
     GMapValidation& v = out.counts;
-    // One chunk (Whole: all darts): the cell labels are the marks, as in a sequential search.
-    constexpr bool whole = Whole;
-    std::vector<char> seen(whole ? 0 : e - b, 0);
-    CellDartSet inCell;
+    // The chunk's darts are marked in the cell labels (only this chunk writes them until
+    // the chunks are joined): kSearched while a search runs (the first chunk, which owns
+    // every cell it searches, writes the cell number at once), kOtherChunk for the darts of
+    // a cell that belongs to an earlier chunk. Darts outside the chunk are marked in a set
+    // per search, and the labels of such darts of the chunk's own cells are written only
+    // when the chunks are joined (out.deferred).
+    constexpr int kSearched = -2, kOtherChunk = -3;
+    std::vector<int>& cell = cs.cell;
+    CellDartSet outside;
     out.off.push_back(static_cast<int>(out.darts.size()));
     for (std::size_t s = b; s < e; ++s) {
-        if (whole ? cs.cell[s] >= 0 : seen[s - b] != 0) continue;
-        const int c = static_cast<int>(out.size.size());
+        if (cell[s] != -1) continue;
+        const int c = cellBase + static_cast<int>(out.size.size());
+        const int mark = b == 0 ? c : kSearched;
         const std::size_t first = out.darts.size();
         out.darts.push_back(static_cast<int>(s));
-        if (whole) cs.cell[s] = c;
-        else seen[s - b] = 1;
-        inCell.clear();
+        cell[s] = mark;
+        outside.clear();
         bool own = true;
         for (std::size_t q = first; q < out.darts.size(); ++q) {
             const auto& r = L[static_cast<std::size_t>(out.darts[q])];
             for (int i = 0; i < 3; ++i) {
                 const auto x = static_cast<std::size_t>(r[i]);
-                if (whole) {
-                    int& l = cs.cell[x];
-                    if (l >= 0) continue;
-                    l = c;
-                } else if (x - b < e - b) {  // in the chunk: its own mark
-                    if (seen[x - b]) continue;
-                    seen[x - b] = 1;
+                if (AllDarts || x - b < e - b) {  // in the chunk
+                    int& l = cell[x];
+                    if (l != -1) continue;
+                    l = mark;
                 } else {
-                    if (!inCell.insert(r[i])) continue;
+                    if (!outside.insert(r[i])) continue;
                     if (x < b) own = false;
                 }
                 __builtin_prefetch(&L[x]);
                 out.darts.push_back(r[i]);
             }
         }
-        if (!own) {
-            out.darts.resize(first);
-            continue;
+        if (!own || mark != c) {
+            for (std::size_t q = first; q < out.darts.size(); ++q) {
+                const auto x = static_cast<std::size_t>(out.darts[q]);
+                if (x - b < e - b) cell[x] = own ? c : kOtherChunk;
+                else if (own) out.deferred.emplace_back(static_cast<int>(x), c);
+            }
+            if (!own) {
+                out.darts.resize(first);
+                continue;
+            }
+        } else if (!outside.empty()) {
+            for (std::size_t q = first; q < out.darts.size(); ++q)
+                if (static_cast<std::size_t>(out.darts[q]) >= e) out.deferred.emplace_back(out.darts[q], c);
         }
         const int* const begin = out.darts.data() + first;
         const int* const end = out.darts.data() + out.darts.size();
-        if (!whole)
-            for (const int* x = begin; x != end; ++x) cs.cell[static_cast<std::size_t>(*x)] = c;
         const int size = static_cast<int>(end - begin);
         out.size.push_back(size);
         out.off.push_back(static_cast<int>(out.darts.size()));
@@ -237,7 +257,7 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
         }
         for (const int* x = begin; x != end; ++x) {
             if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int f = static_cast<int>(out.fsize.size());
+            const int f = faceBase + static_cast<int>(out.fsize.size());
             face[static_cast<std::size_t>(*x)] = f;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
@@ -247,7 +267,7 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
         }
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int k = static_cast<int>(out.ksize.size());
+            const int k = cornerBase + static_cast<int>(out.ksize.size());
             corner[static_cast<std::size_t>(*x)] = k;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
@@ -283,6 +303,7 @@ CellLabels labelCells(const GMap<3>& g, int threads) {
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         CellChunk& P = part[static_cast<std::size_t>(k)];
         if (k > 0) {
+            P.base = {static_cast<int>(b / 48), static_cast<int>(b / 8), static_cast<int>(b / 6)};
             P.darts.reserve(e - b);
             P.size.reserve((e - b) / 48 + 1);
             P.off.reserve((e - b) / 48 + 2);
@@ -292,25 +313,35 @@ CellLabels labelCells(const GMap<3>& g, int threads) {
         if (chunks == 1) labelCellChunk<true>(g, b, e, cs, P);
         else labelCellChunk<false>(g, b, e, cs, P);
     });
+    for (const CellChunk& P : part)
+        for (const auto& [x, c] : P.deferred) cs.cell[static_cast<std::size_t>(x)] = c;
     CellChunk& first = part[0];
     std::size_t nDarts = first.darts.size();
     for (std::size_t k = 1; k < part.size(); ++k) {
         const CellChunk& P = part[k];
-        const int cellBase = static_cast<int>(first.size.size()), faceBase = static_cast<int>(first.fsize.size());
-        const int cornerBase = static_cast<int>(first.ksize.size()), dartBase = static_cast<int>(nDarts);
+        // The differences between the true first numbers and the assumed ones (none when the
+        // earlier chunks' cells were exactly their darts' hexes).
+        const int cellShift = static_cast<int>(first.size.size()) - P.base[0];
+        const int faceShift = static_cast<int>(first.fsize.size()) - P.base[1];
+        const int cornerShift = static_cast<int>(first.ksize.size()) - P.base[2];
+        const int dartBase = static_cast<int>(nDarts);
         first.size.insert(first.size.end(), P.size.begin(), P.size.end());
         for (std::size_t c = 1; c < P.off.size(); ++c) first.off.push_back(dartBase + P.off[c]);
         first.fsize.insert(first.fsize.end(), P.fsize.begin(), P.fsize.end());
         first.ksize.insert(first.ksize.end(), P.ksize.begin(), P.ksize.end());
         first.darts.resize(nDarts + P.darts.size());
-        // The chunk's darts: appended, their numbers moved past the earlier chunks'.
+        // The chunk's darts appended (and, if an assumed first number was wrong, their
+        // numbers moved to the true ones).
+        const bool shift = cellShift != 0 || faceShift != 0 || cornerShift != 0;
         parallelChunks(P.darts.size(), chunks, [&](int, std::size_t b, std::size_t e) {
+            std::copy(P.darts.begin() + static_cast<std::ptrdiff_t>(b), P.darts.begin() + static_cast<std::ptrdiff_t>(e),
+                      first.darts.begin() + static_cast<std::ptrdiff_t>(nDarts + b));
+            if (!shift) return;
             for (std::size_t i = b; i < e; ++i) {
                 const auto x = static_cast<std::size_t>(P.darts[i]);
-                first.darts[nDarts + i] = static_cast<int>(x);
-                cs.cell[x] += cellBase;
-                cs.face[x] += faceBase;
-                cs.corner[x] += cornerBase;
+                cs.cell[x] += cellShift;
+                cs.face[x] += faceShift;
+                cs.corner[x] += cornerShift;
             }
         });
         nDarts += P.darts.size();
