@@ -161,8 +161,11 @@ private:
 struct CellChunk {
     GMapValidation counts;     ///< equation 3-6 counts of its cells
     std::vector<int> size;     ///< per cell: number of darts
-    std::vector<int> darts;    ///< the darts, cell after cell
-    std::vector<int> off;      ///< cell c holds darts[off[c] .. off[c + 1]) (local positions)
+    /// The darts, cell after cell (only a middle chunk of three or more keeps them here:
+    /// the first and the last chunk write them into the result, see labelCells()).
+    std::vector<int> darts;
+    std::size_t n_darts = 0;   ///< darts of its cells
+    std::vector<int> off;      ///< cell c holds the chunk's darts [off[c] .. off[c + 1]) (local positions)
     std::vector<int> fsize;    ///< per face orbit: number of darts
     std::vector<int> ksize;    ///< per corner orbit: number of darts
     /// Darts of its cells outside the chunk, with their cell: written when the chunks are
@@ -173,6 +176,23 @@ struct CellChunk {
     std::array<int, 3> base = {0, 0, 0};
 };
 
+/// The growing list of one search's darts in a fixed array (the first chunk searches in the
+/// result's dart list itself).
+struct DartArrayList {
+    int* array;         ///< the array
+    std::size_t n = 0;  ///< entries in use
+    /// Appends @p x.
+    void push_back(int x) { array[n++] = x; }
+    /// Entries in use.
+    std::size_t size() const { return n; }
+    /// Entry @p i.
+    int operator[](std::size_t i) const { return array[i]; }
+    /// The entries.
+    const int* data() const { return array; }
+    /// Keeps the first @p m entries.
+    void resize(std::size_t m) { n = m; }
+};
+
 /// Finds and labels the cells of @p g whose smallest dart is in [b, e) (for an involutive
 /// map: each cell is a connected component under alpha_0, alpha_1, alpha_2). Every dart s
 /// of the range not seen yet starts a breadth-first search; its cell belongs to the chunk
@@ -181,8 +201,8 @@ struct CellChunk {
 /// search). So a cell is labelled by exactly one chunk, and during the parallel pass each
 /// chunk writes the face and corner labels of its own cells' darts and the cell labels of
 /// the darts in its range only. @p AllDarts: [b, e) holds every dart.
-template <bool AllDarts>
-void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out) {
+template <bool AllDarts, class List>
+void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out, List& list, int* back) {
     const int cellBase = out.base[0], faceBase = out.base[1], cornerBase = out.base[2];
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
@@ -201,18 +221,19 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
     constexpr int kSearched = -2, kOtherChunk = -3;
     std::vector<int>& cell = cs.cell;
     CellDartSet outside;
-    out.off.push_back(static_cast<int>(out.darts.size()));
+    out.off.push_back(0);
     for (std::size_t s = b; s < e; ++s) {
         if (cell[s] != -1) continue;
         const int c = cellBase + static_cast<int>(out.size.size());
         const int mark = b == 0 ? c : kSearched;
-        const std::size_t first = out.darts.size();
-        out.darts.push_back(static_cast<int>(s));
+        if (b != 0) list.resize(0);  // a scratch list per search
+        const std::size_t first = list.size();
+        list.push_back(static_cast<int>(s));
         cell[s] = mark;
         outside.clear();
         bool own = true;
-        for (std::size_t q = first; q < out.darts.size(); ++q) {
-            const auto& r = L[static_cast<std::size_t>(out.darts[q])];
+        for (std::size_t q = first; q < list.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(list[q])];
             for (int i = 0; i < 3; ++i) {
                 const auto x = static_cast<std::size_t>(r[i]);
                 if (AllDarts || x - b < e - b) {  // in the chunk
@@ -224,28 +245,38 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
                     if (x < b) own = false;
                 }
                 __builtin_prefetch(&L[x]);
-                out.darts.push_back(r[i]);
+                list.push_back(r[i]);
             }
         }
         if (!own || mark != c) {
-            for (std::size_t q = first; q < out.darts.size(); ++q) {
-                const auto x = static_cast<std::size_t>(out.darts[q]);
+            for (std::size_t q = first; q < list.size(); ++q) {
+                const auto x = static_cast<std::size_t>(list[q]);
                 if (x - b < e - b) cell[x] = own ? c : kOtherChunk;
                 else if (own) out.deferred.emplace_back(static_cast<int>(x), c);
             }
             if (!own) {
-                out.darts.resize(first);
+                list.resize(first);
                 continue;
             }
         } else if (!outside.empty()) {
-            for (std::size_t q = first; q < out.darts.size(); ++q)
-                if (static_cast<std::size_t>(out.darts[q]) >= e) out.deferred.emplace_back(out.darts[q], c);
+            for (std::size_t q = first; q < list.size(); ++q)
+                if (static_cast<std::size_t>(list[q]) >= e) out.deferred.emplace_back(list[q], c);
         }
-        const int* const begin = out.darts.data() + first;
-        const int* const end = out.darts.data() + out.darts.size();
+        const int* const begin = list.data() + first;
+        const int* const end = list.data() + list.size();
         const int size = static_cast<int>(end - begin);
+        // The cell's darts into the chunk's list: in place (first chunk), backwards from the
+        // end of the result's list (last chunk) or appended (a middle chunk).
+        if (back) {
+            for (const int* x = begin; x != end; ++x) *(back - static_cast<std::ptrdiff_t>(out.n_darts++)) = *x;
+        } else if (b != 0) {
+            out.darts.insert(out.darts.end(), begin, end);
+            out.n_darts += static_cast<std::size_t>(size);
+        } else {
+            out.n_darts += static_cast<std::size_t>(size);
+        }
         out.size.push_back(size);
-        out.off.push_back(static_cast<int>(out.darts.size()));
+        out.off.push_back(static_cast<int>(out.n_darts));
         if (size != 48) v.eq6_hex += size;
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] != -1) continue;
@@ -282,43 +313,51 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
 /// involution): cells numbered in order of their smallest dart, each cell's darts in
 /// breadth-first order from it, faces and corners numbered cell after cell. The cells are
 /// found and labelled in parallel chunks of the darts (labelCellChunk(): each cell by the
-/// chunk of its smallest dart), then the later chunks' numbers are moved past the earlier
-/// ones': the same labels for any thread count.
+/// chunk of its smallest dart), then joined: the same labels for any thread count. Every
+/// dart is in one cell, so the chunks' dart lists fill the result's list exactly: the first
+/// chunk searches in it from the front, the last one writes its cells' darts backwards
+/// from the end (reversed at the join), a middle one (three or more threads) keeps its own
+/// list; so the lists take no memory beyond the result's with two threads.
 CellLabels labelCells(const GMap<3>& g, int threads) {
     const std::size_t n = g.links().size();
     CellLabels cs;
     cs.cell.assign(n, -1);
     cs.face.assign(n, -1);
     cs.corner.assign(n, -1);
+    cs.darts.resize(n);
     const int chunks = n >= 65536 ? std::max(1, threads) : 1;
     std::vector<CellChunk> part(static_cast<std::size_t>(chunks));
-    // Chunk 0 fills the result's arrays, reserved at their hex-map sizes (48 darts per cell,
-    // 8 per face, 6 per corner): no growth beyond them, which would keep up to twice the
-    // memory through the assembly.
-    part[0].darts.reserve(n);
+    // The first chunk's arrays become the result's, reserved at their hex-map sizes (48
+    // darts per cell, 8 per face, 6 per corner): no growth beyond them, which would keep up
+    // to twice the memory through the assembly.
     part[0].size.reserve(n / 48 + 1);
     part[0].off.reserve(n / 48 + 2);
     part[0].fsize.reserve(n / 8 + 1);
     part[0].ksize.reserve(n / 6 + 1);
     parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
         CellChunk& P = part[static_cast<std::size_t>(k)];
-        if (k > 0) {
-            P.base = {static_cast<int>(b / 48), static_cast<int>(b / 8), static_cast<int>(b / 6)};
-            P.darts.reserve(e - b);
-            P.size.reserve((e - b) / 48 + 1);
-            P.off.reserve((e - b) / 48 + 2);
-            P.fsize.reserve((e - b) / 8 + 1);
-            P.ksize.reserve((e - b) / 6 + 1);
+        if (k == 0) {
+            DartArrayList front{cs.darts.data()};
+            if (chunks == 1) labelCellChunk<true>(g, b, e, cs, P, front, nullptr);
+            else labelCellChunk<false>(g, b, e, cs, P, front, nullptr);
+            return;
         }
-        if (chunks == 1) labelCellChunk<true>(g, b, e, cs, P);
-        else labelCellChunk<false>(g, b, e, cs, P);
+        P.base = {static_cast<int>(b / 48), static_cast<int>(b / 8), static_cast<int>(b / 6)};
+        P.size.reserve((e - b) / 48 + 1);
+        P.off.reserve((e - b) / 48 + 2);
+        P.fsize.reserve((e - b) / 8 + 1);
+        P.ksize.reserve((e - b) / 6 + 1);
+        const bool last = k == chunks - 1;
+        if (!last) P.darts.reserve(e - b);
+        std::vector<int> scratch;
+        labelCellChunk<false>(g, b, e, cs, P, scratch, last ? cs.darts.data() + (n - 1) : nullptr);
     });
     for (const CellChunk& P : part)
         for (const auto& [x, c] : P.deferred) cs.cell[static_cast<std::size_t>(x)] = c;
     CellChunk& first = part[0];
-    std::size_t nDarts = first.darts.size();
+    std::size_t nDarts = first.n_darts;
     for (std::size_t k = 1; k < part.size(); ++k) {
-        const CellChunk& P = part[k];
+        CellChunk& P = part[k];
         // The differences between the true first numbers and the assumed ones (none when the
         // earlier chunks' cells were exactly their darts' hexes).
         const int cellShift = static_cast<int>(first.size.size()) - P.base[0];
@@ -329,31 +368,28 @@ CellLabels labelCells(const GMap<3>& g, int threads) {
         for (std::size_t c = 1; c < P.off.size(); ++c) first.off.push_back(dartBase + P.off[c]);
         first.fsize.insert(first.fsize.end(), P.fsize.begin(), P.fsize.end());
         first.ksize.insert(first.ksize.end(), P.ksize.begin(), P.ksize.end());
-        first.darts.resize(nDarts + P.darts.size());
-        // The chunk's darts appended (and, if an assumed first number was wrong, their
-        // numbers moved to the true ones).
-        const bool shift = cellShift != 0 || faceShift != 0 || cornerShift != 0;
-        parallelChunks(P.darts.size(), chunks, [&](int, std::size_t b, std::size_t e) {
-            std::copy(P.darts.begin() + static_cast<std::ptrdiff_t>(b), P.darts.begin() + static_cast<std::ptrdiff_t>(e),
-                      first.darts.begin() + static_cast<std::ptrdiff_t>(nDarts + b));
-            if (!shift) return;
-            for (std::size_t i = b; i < e; ++i) {
-                const auto x = static_cast<std::size_t>(P.darts[i]);
-                cs.cell[x] += cellShift;
-                cs.face[x] += faceShift;
-                cs.corner[x] += cornerShift;
-            }
-        });
-        nDarts += P.darts.size();
+        int* const at = cs.darts.data() + nDarts;
+        if (k + 1 == part.size()) std::reverse(at, at + P.n_darts);  // written backwards from the end
+        else std::copy(P.darts.begin(), P.darts.end(), at);
+        nDarts += P.n_darts;
+        // If an assumed first number was wrong, the chunk's numbers are moved to the true ones.
+        if (cellShift != 0 || faceShift != 0 || cornerShift != 0)
+            parallelChunks(P.n_darts, chunks, [&](int, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i) {
+                    const auto x = static_cast<std::size_t>(at[i]);
+                    cs.cell[x] += cellShift;
+                    cs.face[x] += faceShift;
+                    cs.corner[x] += cornerShift;
+                }
+            });
         first.counts.eq3_quad += P.counts.eq3_quad;
         first.counts.eq4_corner += P.counts.eq4_corner;
         first.counts.eq5_strip += P.counts.eq5_strip;
         first.counts.eq6_hex += P.counts.eq6_hex;
-        part[k] = CellChunk();
+        P = CellChunk();
     }
     cs.counts = first.counts;
     cs.size = std::move(first.size);
-    cs.darts = std::move(first.darts);
     cs.off = std::move(first.off);
     cs.fsize = std::move(first.fsize);
     cs.ksize = std::move(first.ksize);
