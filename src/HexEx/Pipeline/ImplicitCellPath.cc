@@ -127,6 +127,8 @@ FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha,
 
 FilledVector<int> implicitDartOccurrences(const DartSet& ds, const std::vector<char>& alive, const std::vector<int>& newIndex,
                                           int n_alive, int threads) {
+    // Without occurrences (no dense box) every entry would be -1: none.
+    if (ds.n_occurrences == 0) return {};
     // Every surviving dart has one new index: every entry is written (no zeroing pass).
     FilledVector<int> occ(static_cast<std::size_t>(n_alive));
     // Darts are sorted by (tet, grid point): look the occurrence up once per run.

@@ -28,7 +28,8 @@ std::vector<FaceMask> implicitCellFaces(const TetMesh& mesh, const std::vector<T
 FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
                                            const std::vector<int>& new_index, int n_alive, int threads);
 
-/// Per surviving dart (new index): the occurrence id of its own grid point, or -1.
+/// Per surviving dart (new index): the occurrence id of its own grid point, or -1; empty
+/// if @p darts has no occurrences.
 FilledVector<int> implicitDartOccurrences(const DartSet& darts, const std::vector<char>& alive,
                                          const std::vector<int>& new_index, int n_alive, int threads);
 

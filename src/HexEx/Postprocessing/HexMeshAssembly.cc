@@ -96,7 +96,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // are neither): 1.88M of the 10.35M occurrences of the cylinder v6.
         const std::vector<int>& corner = labels.corner;
         nk = static_cast<int>(labels.corner_size.size());
-        const FilledVector<int>& dartOcc = implicit->dart_occurrence;
+        const FilledVector<int>& dartOccs = implicit->dart_occurrence;
+        auto dartOcc = [&](std::size_t d) { return dartOccs.empty() ? -1 : dartOccs[d]; };
         const FilledVector<int>& a3Occ = implicit->alpha3_occurrence;
         const auto& jo = implicit->joined_occurrences;
         const auto nOcc = static_cast<std::size_t>(nocc);
@@ -110,7 +111,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 int lastOcc = -1;  // the darts of one grid point of a tet are consecutive
                 for (std::size_t d = d0; d < d1; ++d) {
                     if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
-                    const int o = dartOcc[d];
+                    const int o = dartOcc(d);
                     if (o >= 0 && o != lastOcc) {
                         lastOcc = o;
                         use(o);
@@ -184,9 +185,9 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 const int k = corner[d];
                 const int d3 = a(static_cast<int>(d), 3);
                 // Partners on the same occurrence are joined through it anyway.
-                if (d3 != static_cast<int>(d) && (dartOcc[d] < 0 || dartOcc[d] != dartOcc[static_cast<std::size_t>(d3)]))
+                const int o = dartOcc(d);
+                if (d3 != static_cast<int>(d) && (o < 0 || o != dartOcc(static_cast<std::size_t>(d3))))
                     uf.unite(k, corner[static_cast<std::size_t>(d3)]);
-                const int o = dartOcc[d];
                 if (o >= 0) {
                     if (o != lastOcc) {
                         lastOcc = o;

@@ -40,7 +40,7 @@ struct DartGeometry {
 /// meet them. Their corners are "occurrences": grid points in the closed image of one tet.
 struct ImplicitCells {
     long n_occurrences = 0;                       ///< number of occurrence ids
-    FilledVector<int> dart_occurrence;            ///< per dart: occurrence of its own grid point, or -1
+    FilledVector<int> dart_occurrence;            ///< per dart: occurrence of its own grid point, or -1 (empty: none has one)
     FilledVector<int> alpha3_occurrence;          ///< per dart: occurrence of its implicit alpha_3 partner, or -1
     /// Pairs of occurrences that are the same grid point seen from the two tets of a shared
     /// face (one vertex).
