@@ -4,43 +4,62 @@
 
 namespace HexEx {
 
-Vec3d gridPointPosition(const TetMesh& mesh, const std::vector<TetSoS>& tets, const DartSet& ds, int t, const Vec3i& zi,
-                        std::array<int, 3>* boundaryHf) {
-    const TetSoS& T = tets[static_cast<std::size_t>(t)];
+TetPointPositions::TetPointPositions(const TetMesh& mesh, const std::vector<TetSoS>& tets, const DartSet& ds, int t)
+    : mesh_(&mesh), T_(&tets[static_cast<std::size_t>(t)]), t_(t) {
+    const int slot = ds.dense_slot[static_cast<std::size_t>(t)];
+    if (slot >= 0 && !ds.dense[static_cast<std::size_t>(slot)].flags.empty()) dense_ = &ds.dense[static_cast<std::size_t>(slot)];
+    e1_ = T_->p[1] - T_->p[0];
+    e2_ = T_->p[2] - T_->p[0];
+    e3_ = T_->p[3] - T_->p[0];
+    c12_ = e1_ % e2_;
+    V_ = c12_ | e3_;
     const auto& cv = mesh.cell_vertices(CellHandle(t));
+    for (int j = 0; j < 4; ++j) x_[static_cast<std::size_t>(j)] = mesh.position(cv[j]);
+}
+
+Vec3d TetPointPositions::operator()(const Vec3i& zi, std::array<int, 3>* boundaryHf) const {
     const Vec3d z = toVec3d(zi);
     // Exact zeros: from the implicit-cell flags where the tet has them, else predicates.
     std::array<int, 4> oz;
-    const int slot = ds.dense_slot[static_cast<std::size_t>(t)];
-    const DartSet::DenseIndex* di = slot >= 0 ? &ds.dense[static_cast<std::size_t>(slot)] : nullptr;
-    const long l = di && !di->flags.empty() ? di->local(zi) : -1;
-    if (l >= 0 && (di->flags[static_cast<std::size_t>(l)] & 1)) {
-        for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((di->flags[static_cast<std::size_t>(l)] >> (4 + j)) & 1) ? 0 : T.vol;
+    const long l = dense_ ? dense_->local(zi) : -1;
+    if (l >= 0 && (dense_->flags[static_cast<std::size_t>(l)] & 1)) {
+        const unsigned fl = dense_->flags[static_cast<std::size_t>(l)];
+        for (int j = 0; j < 4; ++j) oz[static_cast<std::size_t>(j)] = ((fl >> (4 + j)) & 1) ? 0 : T_->vol;
     } else {
-        oz = T.sides(z);
+        oz = T_->sides(z);
     }
-    const Vec3d e1 = T.p[1] - T.p[0], e2 = T.p[2] - T.p[0], e3 = T.p[3] - T.p[0];
-    const double V = (e1 % e2) | e3;
+    // Barycentric numerator of corner j: the volume with corner j replaced by z, i.e.
+    // ((q1 - q0) x (q2 - q0)) . (q3 - q0) with q_j = z.
+    const Vec3d d0 = z - T_->p[0];
     double lam[4];
     double sum = 0;
     for (int j = 0; j < 4; ++j) {
-        if (oz[j] == 0) {
+        if (oz[static_cast<std::size_t>(j)] == 0) {
             lam[j] = 0;
             continue;
         }
-        Vec3d q[4] = {T.p[0], T.p[1], T.p[2], T.p[3]};
-        q[j] = z;
-        lam[j] = std::max(0.0, (((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / V);
+        double num;
+        if (j == 0) num = ((T_->p[1] - z) % (T_->p[2] - z)) | (T_->p[3] - z);
+        else if (j == 1) num = (d0 % e2_) | e3_;
+        else if (j == 2) num = (e1_ % d0) | e3_;
+        else num = c12_ | d0;
+        lam[j] = std::max(0.0, num / V_);
         sum += lam[j];
     }
     Vec3d pos(0, 0, 0);
     int nb = 0;
     for (int j = 0; j < 4; ++j) {
-        pos += mesh.position(cv[j]) * (sum > 0 ? lam[j] / sum : 0.25);
-        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t), j);
-        if (boundaryHf && oz[j] == 0 && mesh.is_boundary(hf) && nb < 3) (*boundaryHf)[nb++] = hf.idx();
+        pos += x_[static_cast<std::size_t>(j)] * (sum > 0 ? lam[j] / sum : 0.25);
+        if (!boundaryHf || oz[static_cast<std::size_t>(j)] != 0 || nb >= 3) continue;
+        const HalfFaceHandle hf = TetMesh::halfface(CellHandle(t_), j);
+        if (mesh_->is_boundary(hf)) (*boundaryHf)[static_cast<std::size_t>(nb++)] = hf.idx();
     }
     return pos;
+}
+
+Vec3d gridPointPosition(const TetMesh& mesh, const std::vector<TetSoS>& tets, const DartSet& ds, int t, const Vec3i& zi,
+                        std::array<int, 3>* boundaryHf) {
+    return TetPointPositions(mesh, tets, ds, t)(zi, boundaryHf);
 }
 
 } // namespace HexEx

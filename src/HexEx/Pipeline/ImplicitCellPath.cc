@@ -189,16 +189,23 @@ void buildImplicitCells(const TetMesh& mesh, const Transitions& tr, const std::v
         const std::vector<DartSet::DenseIndex>& dense = dp->dense;
         auto it = std::upper_bound(dense.begin(), dense.end(), occ[0],
                                    [](long o, const DartSet::DenseIndex& di) { return o < di.occ_base; }) - 1;
+        // The tet's terms are taken once per run of occurrences in one tet (TetPointPositions).
+        TetPointPositions at(*m, *ts, *dp, it->tet);
         for (std::size_t i = 0; i < n; ++i) {
-            while (it + 1 != dense.end() && (it + 1)->occ_base <= occ[i]) ++it;
+            bool moved = false;
+            while (it + 1 != dense.end() && (it + 1)->occ_base <= occ[i]) {
+                ++it;
+                moved = true;
+            }
             const DartSet::DenseIndex& di = *it;
+            if (moved) at = TetPointPositions(*m, *ts, *dp, di.tet);
             long l = occ[i] - di.occ_base;
             Vec3i z;
             z[2] = di.lo[2] + static_cast<int>(l % di.dims[2]);
             l /= di.dims[2];
             z[1] = di.lo[1] + static_cast<int>(l % di.dims[1]);
             z[0] = di.lo[0] + static_cast<int>(l / di.dims[1]);
-            pos[i] = gridPointPosition(*m, *ts, *dp, di.tet, z, nullptr);
+            pos[i] = at(z);
         }
     };
 }
