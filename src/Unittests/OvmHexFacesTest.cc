@@ -77,7 +77,13 @@ testing::AssertionResult fast(const HexMesh& m, int threads, OvmFaces& out) {
 void expectSame(const OvmFaces& a, const OvmFaces& b) {
     EXPECT_EQ(a.halffaces, b.halffaces);
     EXPECT_EQ(a.edges, b.edges);
-    EXPECT_EQ(a.faceHalfedges.offsets, b.faceHalfedges.offsets);
+    // ovmHexFaces() stores the faces' halfedges as lists of 4 (stride form), buildOvmFaces()
+    // with offsets: the same lists.
+    ASSERT_EQ(a.faceHalfedges.size(), b.faceHalfedges.size());
+    for (std::size_t f = 0; f < a.faceHalfedges.size(); ++f)
+        ASSERT_EQ(std::vector<int>(a.faceHalfedges.begin(f), a.faceHalfedges.end(f)),
+                  std::vector<int>(b.faceHalfedges.begin(f), b.faceHalfedges.end(f)))
+            << "face " << f;
     EXPECT_EQ(a.faceHalfedges.values, b.faceHalfedges.values);
 }
 
@@ -125,6 +131,50 @@ TEST(OvmHexFaces, RefusesARepeatedVertex) {
     OvmFaces f;
     EXPECT_FALSE(ovmHexFaces(m, 1, f));
     EXPECT_EQ(ovmFlatFromHexMesh(m, 1).edges, reference(m).edges);
+}
+
+TEST(OvmHexFaces, RefusesEveryPairOfRepeatedCorners) {
+    // All 28 corner pairs (corner distances 1-7 around the VTK order) of the last hex.
+    const HexMesh block = hexBlock(2, 2, 1, 3);
+    for (std::size_t i = 0; i < 8; ++i)
+        for (std::size_t j = i + 1; j < 8; ++j) {
+            HexMesh m = block;
+            m.hexes.back()[j] = m.hexes.back()[i];
+            OvmFaces f;
+            EXPECT_FALSE(ovmHexFaces(m, 1, f)) << "corners " << i << " and " << j;
+        }
+    OvmFaces f;
+    EXPECT_TRUE(ovmHexFaces(block, 1, f));
+}
+
+TEST(OvmHexFaces, RefusesQuadsOfOneVertexSetInAnotherCycle) {
+    // The upper hex's bottom has the lower hex's top vertices, but two adjacent corners
+    // swapped: the same vertex set in another cycle (a side of one is a diagonal of the other).
+    HexMesh m = hexBlock(1, 1, 2, 0);
+    ASSERT_EQ(m.hexes[1][0], m.hexes[0][4]);  // the upper hex sits on the lower one's top
+    std::swap(m.hexes[1][1], m.hexes[1][2]);
+    OvmFaces f;
+    EXPECT_FALSE(ovmHexFaces(m, 1, f));
+    const OvmFlatMesh flat = ovmFlatFromHexMesh(m, 1);  // through buildOvmFaces()
+    const OvmFaces r = reference(m);
+    EXPECT_EQ(flat.edges, r.edges);
+    EXPECT_EQ(flat.faces.values, r.faceHalfedges.values);
+}
+
+TEST(OvmHexFaces, FacesAndCellsAreListsOfFourAndSix) {
+    // The stride form of IntLists: no offsets, every list of the same length.
+    const HexMesh m = hexBlock(3, 2, 2, 5);
+    OvmFaces f;
+    ASSERT_TRUE(fast(m, 2, f));
+    EXPECT_EQ(f.faceHalfedges.stride, 4u);
+    EXPECT_EQ(f.faceHalfedges.size(), 52u);
+    EXPECT_EQ(f.faceHalfedges.length(51), 4u);
+    EXPECT_EQ(f.faceHalfedges.end(51), f.faceHalfedges.values.data() + 4 * 52);
+    IntLists cells;
+    cells.resizeUniform(3, 6);
+    EXPECT_EQ(cells.size(), 3u);
+    EXPECT_EQ(cells.begin(2), cells.values.data() + 12);
+    EXPECT_EQ(cells.length(0), 6u);
 }
 
 TEST(OvmHexFaces, RefusesAQuadOfThreeHexes) {

@@ -20,20 +20,29 @@ namespace HexEx {
 template <class T>
 using DefaultInitVector = std::vector<T, DefaultInitAllocator<T>>;
 
-/// Integer lists stored back to back: list i is values[offsets[i]] .. values[offsets[i + 1] - 1].
+/// Integer lists stored back to back: list i is values[offsets[i]] .. values[offsets[i + 1] - 1],
+/// or, if stride > 0 (lists of one length, such as the quads of an all-hex mesh), values[stride
+/// i] .. values[stride (i + 1) - 1] with offsets unused (no offset array to fill and to read).
 struct IntLists {
-    DefaultInitVector<std::size_t> offsets{0};  ///< start of every list, then the end of the last
+    DefaultInitVector<std::size_t> offsets{0};  ///< start of every list, then the end of the last (stride 0)
     DefaultInitVector<int> values;              ///< the lists' entries
+    std::size_t stride = 0;                     ///< length of every list, or 0: lengths from offsets
 
     /// Number of lists.
-    std::size_t size() const { return offsets.size() - 1; }
+    std::size_t size() const { return stride ? values.size() / stride : offsets.size() - 1; }
     /// First entry of list @p i.
-    const int* begin(std::size_t i) const { return values.data() + offsets[i]; }
+    const int* begin(std::size_t i) const { return values.data() + (stride ? stride * i : offsets[i]); }
     /// One past the last entry of list @p i.
-    const int* end(std::size_t i) const { return values.data() + offsets[i + 1]; }
+    const int* end(std::size_t i) const { return values.data() + (stride ? stride * (i + 1) : offsets[i + 1]); }
     /// Length of list @p i.
-    std::size_t length(std::size_t i) const { return offsets[i + 1] - offsets[i]; }
-    /// Appends the list [@p first, @p last).
+    std::size_t length(std::size_t i) const { return stride ? stride : offsets[i + 1] - offsets[i]; }
+    /// Makes these @p lists lists of @p length entries each (stride form; entries not initialized).
+    void resizeUniform(std::size_t lists, std::size_t length) {
+        offsets = DefaultInitVector<std::size_t>{0};
+        stride = length;
+        values.resize(lists * length);
+    }
+    /// Appends the list [@p first, @p last) (offset form: stride must be 0).
     template <class It>
     void add(It first, It last) {
         for (; first != last; ++first) values.push_back(*first);

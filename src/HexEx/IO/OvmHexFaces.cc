@@ -216,15 +216,15 @@ int positionIn(int i, int e) {
 int firstPosition(int e) { return positionIn(kT.edgeFaces[e][0], e); }
 
 /// Per hex, during the numbering (see ovmHexFaces()): bits 0-11 the edges it owns by rank,
-/// bits 12-23 whether each one's first occurrence starts at its smaller vertex, bits 24-29
-/// its first loops, bits 32-63 first its first face number, later its first edge number.
+/// bits 24-29 its first loops, bits 32-63 first its first face number, later its first edge
+/// number.
 constexpr int kFirstLoopShift = 24;
 
 } // namespace
 
 bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     const std::size_t nHex = mesh.hexes.size(), nLoops = 6 * nHex, nv = mesh.vertices.size();
-    // Halffaces fit in int, owner references (16 h + rank) in 31 bits.
+    // Halffaces fit in int, owner references with their orientation (2 (16 h + rank) + 1) in 32 bits.
     if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12) || nHex > (std::size_t(1) << 27)) return false;
     const int chunks = chunksFor(nHex, threads), vChunks = chunksFor(nv, threads);
     const auto loopVertex = [&](std::size_t l, int j) {
@@ -233,11 +233,14 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     std::vector<char> ok(static_cast<std::size_t>(std::max(chunks, vChunks)), 1);
     const auto allOk = [&] { return std::all_of(ok.begin(), ok.end(), [](char x) { return x != 0; }); };
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
-        for (std::size_t h = h0; h < h1; ++h)
-            for (int i = 0; i < 8; ++i)
-                for (int j = 0; j < i; ++j)
-                    if (mesh.hexes[h][static_cast<std::size_t>(i)] == mesh.hexes[h][static_cast<std::size_t>(j)])
-                        ok[static_cast<std::size_t>(c)] = 0;
+        // Every pair of the 8 corners is k and k + r (mod 8) for some r in 1-4: no branches.
+        bool repeated = false;
+        for (std::size_t h = h0; h < h1; ++h) {
+            const auto& x = mesh.hexes[h];
+            for (std::size_t r = 1; r <= 4; ++r)
+                for (std::size_t k = 0; k < 8; ++k) repeated |= x[k] == x[(k + r) & 7];
+        }
+        if (repeated) ok[static_cast<std::size_t>(c)] = 0;
     });
     if (!allOk()) return false;
     // A local edge's first occurrence in a hex is position j of quad i (4 i + j); the hex's
@@ -245,13 +248,17 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
     int rankOf[12], rankPos[12];  // local edge -> rank; rank -> 4 i + j
     bool startsAtFirstEnd[12];    // the first occurrence runs from kEdges[e][0] to kEdges[e][1]
     int slotOf[12][2];            // position of local edge e in quad kT.edgeFaces[e][k]
+    bool runsFromFirstEnd[12][2]; // quad kT.edgeFaces[e][k] runs along e from kEdges[e][0]
     for (int e = 0; e < 12; ++e) {
         const int pos = 4 * kT.edgeFaces[e][0] + firstPosition(e);
         rankOf[e] = 0;
         for (int f = 0; f < 12; ++f) rankOf[e] += 4 * kT.edgeFaces[f][0] + firstPosition(f) < pos ? 1 : 0;
         rankPos[rankOf[e]] = pos;
         startsAtFirstEnd[e] = kOvmHexFaces[pos / 4][pos % 4] == kEdges[e][0];
-        for (int k = 0; k < 2; ++k) slotOf[e][k] = positionIn(kT.edgeFaces[e][k], e);
+        for (int k = 0; k < 2; ++k) {
+            slotOf[e][k] = positionIn(kT.edgeFaces[e][k], e);
+            runsFromFirstEnd[e][k] = kOvmHexFaces[kT.edgeFaces[e][k]][slotOf[e][k]] == kEdges[e][0];
+        }
     }
 
     // The buckets of the quads (by their smallest vertex) and of the hex edges (by their
@@ -351,7 +358,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                 if (mask >> i & 1u) hf[6 * h + i] = static_cast<int>(2 * f++);
         }
     });
-    parallelChunks(nHex, chunks, [&](int, std::size_t h0, std::size_t h1) {
+    parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         for (std::size_t h = h0; h < h1; ++h) {
             const std::uint32_t mask = firstLoops(info[h]);
             for (std::size_t i = 0; i < 6; ++i) {
@@ -363,19 +370,26 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                 int k = 0;
                 while (k < 4 && loopVertex(s, k) != v0) ++k;
                 hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
+                // The same cycle as s, either way round (then the vertex opposite l's first one
+                // is the same): the quads' sides are edges of both hexes.
+                if (loopVertex(s, k + 2) != loopVertex(l, 2)) ok[static_cast<std::size_t>(c)] = 0;
             }
         }
     });
+    if (!allOk()) return false;
 
     // Edges: every hex edge filed by its smaller vertex as (larger vertex, 2 (12 h + local
     // edge) + 1 if kEdges' first end is the smaller vertex); sorted, an edge's uses lie together
     // and its first is the smallest hex with it, the owner, whose smaller quad through it is the
-    // edge's first occurrence. The owner gets the edge's bit in its info (rank r: bit r, and
-    // bit 12 + r if the first occurrence starts at the smaller vertex); every use writes the
-    // owner reference (16 owner hex + rank) into the halfedge slots of its quads that are first
-    // loops (the face's halfedge list, in place), where the last pass turns it into the halfedge.
+    // edge's first occurrence (a first loop: its neighbour, a larger hex, has the edge too, as
+    // the quads' cycles agree).
+    // The owner gets the edge's bit in its info (rank r: bit r); every use writes the owner
+    // reference with the halfedge's orientation (2 (16 owner hex + rank) + 1 if the quad runs
+    // along the edge against its first occurrence) into the halfedge slots of its quads that
+    // are first loops (the face's halfedge list, in place), where the last pass turns it into
+    // the halfedge.
     IntLists& fh = out.faceHalfedges;
-    fh.values.resize(4 * nFaces);
+    fh.resizeUniform(nFaces, 4);
     {
         const auto edgeRec = [&](std::size_t h, int e) {
             const auto& hx = mesh.hexes[h];
@@ -405,21 +419,24 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                     const bool firstSmaller = (*x & 1u) != 0;
                     const std::uint32_t oh = id / 12, eo = id % 12, r = static_cast<std::uint32_t>(rankOf[eo]);
                     const bool startsSmaller = startsAtFirstEnd[eo] == firstSmaller;
-                    __atomic_fetch_or(&info[oh], (std::uint64_t(1) << r) | (std::uint64_t(startsSmaller ? 1 : 0) << (12 + r)),
-                                      __ATOMIC_RELAXED);
-                    const int ref = static_cast<int>(16u * oh + r);
+                    __atomic_fetch_or(&info[oh], std::uint64_t(1) << r, __ATOMIC_RELAXED);
+                    const std::uint32_t ref = 2u * (16u * oh + r);
                     const std::uint64_t u = *x >> 32;
                     for (; x < e && *x >> 32 == u; ++x) {
                         const std::uint32_t use = static_cast<std::uint32_t>(*x) >> 1, h = use / 12, le = use % 12;
+                        const bool useFirstSmaller = (*x & 1u) != 0;
                         // Bits 24-63 of info are not changed while the edges are filed.
                         const std::uint64_t hi = __atomic_load_n(&info[h], __ATOMIC_RELAXED);
                         const std::uint32_t mask = firstLoops(hi);
                         const std::size_t f = static_cast<std::size_t>(hi >> 32);
                         for (int k = 0; k < 2; ++k) {
                             const int i = kT.edgeFaces[le][k];
+                            // The quad runs along the edge from its smaller vertex, or not.
+                            const bool fromSmaller = runsFromFirstEnd[le][k] == useFirstSmaller;
                             if (mask >> i & 1u)
                                 slots[4 * (f + static_cast<std::size_t>(bitCount(mask & ((1u << i) - 1u)))) +
-                                      static_cast<std::size_t>(slotOf[le][k])] = ref;
+                                      static_cast<std::size_t>(slotOf[le][k])] =
+                                    static_cast<int>(ref + (fromSmaller == startsSmaller ? 0u : 1u));
                         }
                     }
                 }
@@ -450,10 +467,6 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         }
     });
     out.edges.resize(nEdges);
-    fh.offsets.resize(nFaces + 1);
-    parallelChunks(nFaces + 1, chunksFor(nFaces, threads), [&](int, std::size_t f0, std::size_t f1) {
-        for (std::size_t f = f0; f < f1; ++f) fh.offsets[f] = 4 * f;
-    });
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t f = faceBase[static_cast<std::size_t>(c)];
         for (std::size_t h = h0; h < h1; ++h) {
@@ -467,17 +480,14 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
             const std::uint32_t mask = firstLoops(own);
             for (int i = 0; i < 6; ++i) {
                 if (!(mask >> i & 1u)) continue;
-                const std::size_t l = 6 * h + static_cast<std::size_t>(i);
                 int* values = &fh.values[4 * f++];
                 for (int j = 0; j < 4; ++j) {
-                    const std::uint32_t ref = static_cast<std::uint32_t>(values[j]);
-                    const std::uint64_t x = info[ref / 16];
-                    const std::uint32_t r = ref % 16;
+                    const std::uint32_t ref = static_cast<std::uint32_t>(values[j]);  // 2 (16 owner + rank) + orientation
+                    const std::uint64_t x = info[ref / 32];
+                    const std::uint32_t r = ref / 2 % 16;
                     const std::size_t e = static_cast<std::size_t>(x >> 32) +
                                           static_cast<std::size_t>(bitCount(ownedMask(x) & ((1u << r) - 1u)));
-                    const bool startsSmaller = (x >> (12 + r) & 1u) != 0;
-                    const bool fromSmaller = loopVertex(l, j) < loopVertex(l, j + 1);
-                    values[j] = static_cast<int>(2 * e) + (fromSmaller == startsSmaller ? 0 : 1);
+                    values[j] = static_cast<int>(2 * e + (ref & 1u));
                 }
             }
         }

@@ -136,16 +136,15 @@ OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads) {
     const std::size_t nHex = mesh.hexes.size();
     const int chunks = nHex >= 20000 ? std::max(1, threads) : 1;
     if (mesh.polyhedra.empty()) {
-        m.cells.offsets.resize(nHex + 1);
         parallelChunks(nHex, chunks, [&](int, std::size_t c0, std::size_t c1) {
             for (std::size_t c = c0; c < c1; ++c) {
-                m.cells.offsets[c + 1] = 6 * (c + 1);
                 int* h = faces.halffaces.data() + 6 * c;
                 const int loop[6] = {h[0], h[1], h[2], h[3], h[4], h[5]};
                 for (std::size_t i = 0; i < 6; ++i) h[i] = loop[kOvmHexOrder[i]];
             }
         });
         m.cells.values = std::move(faces.halffaces);
+        m.cells.stride = 6;  // six halffaces per cell, no offsets
         return m;
     }
     m.cells.reserve(mesh.hexes.size() + mesh.polyhedra.size(), faces.halffaces.size());
