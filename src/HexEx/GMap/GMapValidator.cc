@@ -4,8 +4,6 @@
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
-#include <array>
-#include <cstdint>
 #include <functional>
 #include <sstream>
 
@@ -101,9 +99,9 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
 /// breadth-first search from its smallest dart (cells numbered in dart order, each cell's
 /// darts in search order), and while its darts are in the cache its strip, face and corner
 /// orbits (they never leave the cell) are walked, faces and corners numbered cell after
-/// cell. Runs only after the checks found an involutive map with every dart alive (the
-/// chunks' ownership of cells rests on it: a cell is the same component from each of its
-/// darts).
+/// cell. Terminates on any map whose links are dart indices (every walk stops at a marked
+/// dart), so it may run before the involution checks are known; its labels are used only
+/// if they find an involutive map with every dart alive.
 struct CellLabels {
     GMapValidation counts;     ///< equation 3-6 counts
     std::vector<int> cell;     ///< per dart: its cell
@@ -116,167 +114,50 @@ struct CellLabels {
     std::vector<int> ksize;    ///< per corner orbit: number of darts
 };
 
-/// A set of dart indices for one cell's search (open addressing, at most half full),
-/// emptied in the time of its size: the search of one chunk of cells marks the darts
-/// outside the chunk there, not in the shared label arrays (the cell may not be its own).
-class CellDartSet {
-public:
-    CellDartSet() : slot_(128, -1) {}
-    /// Adds @p d; false if it was there.
-    bool insert(int d) {
-        if (2 * (used_.size() + 1) > slot_.size()) grow();
-        std::size_t h = hash(d);
-        while (slot_[h] != -1) {
-            if (slot_[h] == d) return false;
-            h = (h + 1) & (slot_.size() - 1);
-        }
-        slot_[h] = d;
-        used_.push_back(h);
-        return true;
-    }
-    /// True if it holds no dart.
-    bool empty() const { return used_.empty(); }
-    /// Removes every dart.
-    void clear() {
-        for (const std::size_t h : used_) slot_[h] = -1;
-        used_.clear();
-    }
-
-private:
-    std::size_t hash(int d) const { return (static_cast<std::uint32_t>(d) * 2654435761u) & (slot_.size() - 1); }
-    void grow() {
-        std::vector<int> keys;
-        keys.reserve(used_.size());
-        for (const std::size_t h : used_) keys.push_back(slot_[h]);
-        slot_.assign(2 * slot_.size(), -1);
-        used_.clear();
-        for (const int d : keys) insert(d);
-    }
-    std::vector<int> slot_;
-    std::vector<std::size_t> used_;
-};
-
-/// One chunk's part of labelCells(): the cells whose smallest dart lies in the chunk, with
-/// chunk-local cell, face and corner numbers.
-struct CellChunk {
-    GMapValidation counts;     ///< equation 3-6 counts of its cells
-    std::vector<int> size;     ///< per cell: number of darts
-    /// The darts, cell after cell (only a middle chunk of three or more keeps them here:
-    /// the first and the last chunk write them into the result, see labelCells()).
-    std::vector<int> darts;
-    std::size_t n_darts = 0;   ///< darts of its cells
-    std::vector<int> off;      ///< cell c holds the chunk's darts [off[c] .. off[c + 1]) (local positions)
-    std::vector<int> fsize;    ///< per face orbit: number of darts
-    std::vector<int> ksize;    ///< per corner orbit: number of darts
-    /// Darts of its cells outside the chunk, with their cell: written when the chunks are
-    /// joined.
-    std::vector<std::pair<int, int>> deferred;
-    /// The chunk's first cell, face and corner numbers as assumed before the earlier chunks
-    /// are done (those of a hex map whose cells do not cross the chunk boundaries).
-    std::array<int, 3> base = {0, 0, 0};
-};
-
-/// The growing list of one search's darts in a fixed array (the first chunk searches in the
-/// result's dart list itself).
-struct DartArrayList {
-    int* array;         ///< the array
-    std::size_t n = 0;  ///< entries in use
-    /// Appends @p x.
-    void push_back(int x) { array[n++] = x; }
-    /// Entries in use.
-    std::size_t size() const { return n; }
-    /// Entry @p i.
-    int operator[](std::size_t i) const { return array[i]; }
-    /// The entries.
-    const int* data() const { return array; }
-    /// Keeps the first @p m entries.
-    void resize(std::size_t m) { n = m; }
-};
-
-/// Finds and labels the cells of @p g whose smallest dart is in [b, e) (for an involutive
-/// map: each cell is a connected component under alpha_0, alpha_1, alpha_2). Every dart s
-/// of the range not seen yet starts a breadth-first search; its cell belongs to the chunk
-/// if no dart is below b, i.e. s is its smallest dart, and only then are the cell's darts,
-/// strips, faces and corners labelled (chunk-local numbers, in the order of the sequential
-/// search). So a cell is labelled by exactly one chunk, and during the parallel pass each
-/// chunk writes the face and corner labels of its own cells' darts and the cell labels of
-/// the darts in its range only. @p AllDarts: [b, e) holds every dart.
-template <bool AllDarts, class List>
-void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& cs, CellChunk& out, List& list, int* back) {
-    const int cellBase = out.base[0], faceBase = out.base[1], cornerBase = out.base[2];
+CellLabels labelCells(const GMap<3>& g) {
     const auto& L = g.links();
+    const std::size_t n = L.size();
+    CellLabels cs;
+    cs.cell.assign(n, -1);
+    cs.face.assign(n, -1);
+    cs.corner.assign(n, -1);
+    cs.darts.reserve(n);
+    // Exact sizes for a hex map (48 darts per cell, 8 per face, 6 per corner): no growth
+    // beyond them, which would keep up to twice the memory through the assembly.
+    cs.size.reserve(n / 48 + 1);
+    cs.off.reserve(n / 48 + 2);
+    cs.fsize.reserve(n / 8 + 1);
+    cs.ksize.reserve(n / 6 + 1);
+    cs.off.push_back(0);
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
     std::vector<int>& face = cs.face;
     std::vector<int>& corner = cs.corner;
     // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
     constexpr int kStripSeen = -2;
-    GMapValidation& v = out.counts;
-    // The chunk's darts are marked in the cell labels (only this chunk writes them until
-    // the chunks are joined): kSearched while a search runs (the first chunk, which owns
-    // every cell it searches, writes the cell number at once), kOtherChunk for the darts of
-    // a cell that belongs to an earlier chunk. Darts outside the chunk are marked in a set
-    // per search, and the labels of such darts of the chunk's own cells are written only
-    // when the chunks are joined (out.deferred).
-    constexpr int kSearched = -2, kOtherChunk = -3;
-    std::vector<int>& cell = cs.cell;
-    CellDartSet outside;
-    out.off.push_back(0);
-    for (std::size_t s = b; s < e; ++s) {
-        if (cell[s] != -1) continue;
-        const int c = cellBase + static_cast<int>(out.size.size());
-        const int mark = b == 0 ? c : kSearched;
-        if (b != 0) list.resize(0);  // a scratch list per search
-        const std::size_t first = list.size();
-        list.push_back(static_cast<int>(s));
-        cell[s] = mark;
-        outside.clear();
-        bool own = true;
-        for (std::size_t q = first; q < list.size(); ++q) {
-            const auto& r = L[static_cast<std::size_t>(list[q])];
+    GMapValidation& v = cs.counts;
+    for (std::size_t s = 0; s < n; ++s) {
+        if (cs.cell[s] >= 0) continue;
+        const int c = static_cast<int>(cs.size.size());
+        const std::size_t first = cs.darts.size();
+        cs.cell[s] = c;
+        cs.darts.push_back(static_cast<int>(s));
+        for (std::size_t q = first; q < cs.darts.size(); ++q) {
+            const auto& r = L[static_cast<std::size_t>(cs.darts[q])];
             for (int i = 0; i < 3; ++i) {
-                const auto x = static_cast<std::size_t>(r[i]);
-                if (AllDarts || x - b < e - b) {  // in the chunk
-                    int& l = cell[x];
-                    if (l != -1) continue;
-                    l = mark;
-                } else {
-                    if (!outside.insert(r[i])) continue;
-                    if (x < b) own = false;
+                int& l = cs.cell[static_cast<std::size_t>(r[i])];
+                if (l < 0) {
+                    l = c;
+                    __builtin_prefetch(&L[static_cast<std::size_t>(r[i])]);
+                    cs.darts.push_back(r[i]);
                 }
-                __builtin_prefetch(&L[x]);
-                list.push_back(r[i]);
             }
         }
-        if (!own || mark != c) {
-            for (std::size_t q = first; q < list.size(); ++q) {
-                const auto x = static_cast<std::size_t>(list[q]);
-                if (x - b < e - b) cell[x] = own ? c : kOtherChunk;
-                else if (own) out.deferred.emplace_back(static_cast<int>(x), c);
-            }
-            if (!own) {
-                list.resize(first);
-                continue;
-            }
-        } else if (!outside.empty()) {
-            for (std::size_t q = first; q < list.size(); ++q)
-                if (static_cast<std::size_t>(list[q]) >= e) out.deferred.emplace_back(list[q], c);
-        }
-        const int* const begin = list.data() + first;
-        const int* const end = list.data() + list.size();
-        const int size = static_cast<int>(end - begin);
-        // The cell's darts into the chunk's list: in place (first chunk), backwards from the
-        // end of the result's list (last chunk) or appended (a middle chunk).
-        if (back) {
-            for (const int* x = begin; x != end; ++x) *(back - static_cast<std::ptrdiff_t>(out.n_darts++)) = *x;
-        } else if (b != 0) {
-            out.darts.insert(out.darts.end(), begin, end);
-            out.n_darts += static_cast<std::size_t>(size);
-        } else {
-            out.n_darts += static_cast<std::size_t>(size);
-        }
-        out.size.push_back(size);
-        out.off.push_back(static_cast<int>(out.n_darts));
+        const int size = static_cast<int>(cs.darts.size() - first);
+        cs.size.push_back(size);
+        cs.off.push_back(static_cast<int>(cs.darts.size()));
+        const int* const begin = cs.darts.data() + first;
+        const int* const end = cs.darts.data() + cs.darts.size();
         if (size != 48) v.eq6_hex += size;
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] != -1) continue;
@@ -288,111 +169,25 @@ void labelCellChunk(const GMap<3>& g, std::size_t b, std::size_t e, CellLabels& 
         }
         for (const int* x = begin; x != end; ++x) {
             if (face[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int f = faceBase + static_cast<int>(out.fsize.size());
+            const int f = static_cast<int>(cs.fsize.size());
             face[static_cast<std::size_t>(*x)] = f;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 0); }, [&](int d) { return a(d, 1); },
                 [&](int d) { return face[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { face[static_cast<std::size_t>(d)] = f; });
-            out.fsize.push_back(m);
+            cs.fsize.push_back(m);
             if (m != 8) v.eq3_quad += m;
         }
         for (const int* x = begin; x != end; ++x) {
             if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int k = cornerBase + static_cast<int>(out.ksize.size());
+            const int k = static_cast<int>(cs.ksize.size());
             corner[static_cast<std::size_t>(*x)] = k;
             const int m = walkAlternating(
                 *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
                 [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
-            out.ksize.push_back(m);
+            cs.ksize.push_back(m);
             if (m != 6) v.eq4_corner += m;
         }
     }
-}
-
-/// Cells, faces and corners of an involutive map (every link a dart index, alpha_i an
-/// involution): cells numbered in order of their smallest dart, each cell's darts in
-/// breadth-first order from it, faces and corners numbered cell after cell. The cells are
-/// found and labelled in parallel chunks of the darts (labelCellChunk(): each cell by the
-/// chunk of its smallest dart), then joined: the same labels for any thread count. Every
-/// dart is in one cell, so the chunks' dart lists fill the result's list exactly: the first
-/// chunk searches in it from the front, the last one writes its cells' darts backwards
-/// from the end (reversed at the join), a middle one (three or more threads) keeps its own
-/// list; so the lists take no memory beyond the result's with two threads.
-CellLabels labelCells(const GMap<3>& g, int threads) {
-    const std::size_t n = g.links().size();
-    CellLabels cs;
-    cs.cell.assign(n, -1);
-    cs.face.assign(n, -1);
-    cs.corner.assign(n, -1);
-    cs.darts.resize(n);
-    const int chunks = n >= 65536 ? std::max(1, threads) : 1;
-    std::vector<CellChunk> part(static_cast<std::size_t>(chunks));
-    // The first chunk's arrays become the result's, reserved at their hex-map sizes (48
-    // darts per cell, 8 per face, 6 per corner): no growth beyond them, which would keep up
-    // to twice the memory through the assembly.
-    part[0].size.reserve(n / 48 + 1);
-    part[0].off.reserve(n / 48 + 2);
-    part[0].fsize.reserve(n / 8 + 1);
-    part[0].ksize.reserve(n / 6 + 1);
-    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-        CellChunk& P = part[static_cast<std::size_t>(k)];
-        if (k == 0) {
-            DartArrayList front{cs.darts.data()};
-            if (chunks == 1) labelCellChunk<true>(g, b, e, cs, P, front, nullptr);
-            else labelCellChunk<false>(g, b, e, cs, P, front, nullptr);
-            return;
-        }
-        P.base = {static_cast<int>(b / 48), static_cast<int>(b / 8), static_cast<int>(b / 6)};
-        P.size.reserve((e - b) / 48 + 1);
-        P.off.reserve((e - b) / 48 + 2);
-        P.fsize.reserve((e - b) / 8 + 1);
-        P.ksize.reserve((e - b) / 6 + 1);
-        const bool last = k == chunks - 1;
-        if (!last) P.darts.reserve(e - b);
-        std::vector<int> scratch;
-        labelCellChunk<false>(g, b, e, cs, P, scratch, last ? cs.darts.data() + (n - 1) : nullptr);
-    });
-    for (const CellChunk& P : part)
-        for (const auto& [x, c] : P.deferred) cs.cell[static_cast<std::size_t>(x)] = c;
-    CellChunk& first = part[0];
-    std::size_t nDarts = first.n_darts;
-    for (std::size_t k = 1; k < part.size(); ++k) {
-        CellChunk& P = part[k];
-        // The differences between the true first numbers and the assumed ones (none when the
-        // earlier chunks' cells were exactly their darts' hexes).
-        const int cellShift = static_cast<int>(first.size.size()) - P.base[0];
-        const int faceShift = static_cast<int>(first.fsize.size()) - P.base[1];
-        const int cornerShift = static_cast<int>(first.ksize.size()) - P.base[2];
-        const int dartBase = static_cast<int>(nDarts);
-        first.size.insert(first.size.end(), P.size.begin(), P.size.end());
-        for (std::size_t c = 1; c < P.off.size(); ++c) first.off.push_back(dartBase + P.off[c]);
-        first.fsize.insert(first.fsize.end(), P.fsize.begin(), P.fsize.end());
-        first.ksize.insert(first.ksize.end(), P.ksize.begin(), P.ksize.end());
-        int* const at = cs.darts.data() + nDarts;
-        if (k + 1 == part.size()) std::reverse(at, at + P.n_darts);  // written backwards from the end
-        else std::copy(P.darts.begin(), P.darts.end(), at);
-        nDarts += P.n_darts;
-        // If an assumed first number was wrong, the chunk's numbers are moved to the true ones.
-        if (cellShift != 0 || faceShift != 0 || cornerShift != 0)
-            parallelChunks(P.n_darts, chunks, [&](int, std::size_t b, std::size_t e) {
-                for (std::size_t i = b; i < e; ++i) {
-                    const auto x = static_cast<std::size_t>(at[i]);
-                    cs.cell[x] += cellShift;
-                    cs.face[x] += faceShift;
-                    cs.corner[x] += cornerShift;
-                }
-            });
-        first.counts.eq3_quad += P.counts.eq3_quad;
-        first.counts.eq4_corner += P.counts.eq4_corner;
-        first.counts.eq5_strip += P.counts.eq5_strip;
-        first.counts.eq6_hex += P.counts.eq6_hex;
-        P = CellChunk();
-    }
-    cs.counts = first.counts;
-    cs.size = std::move(first.size);
-    cs.off = std::move(first.off);
-    cs.fsize = std::move(first.fsize);
-    cs.ksize = std::move(first.ksize);
     return cs;
 }
 
@@ -548,10 +343,14 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
-    // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums);
-    // then, for an involutive map with every dart alive, the cells in parallel chunks
-    // (labelCells()).
-    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(1, threads)), std::max<std::size_t>(1, n / 65536)));
+    // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
+    // With two or more threads the cell search and labelling (labelCells(), sequential)
+    // runs on one of them while the others do the per-dart checks; it is used only if the
+    // checks find an involutive map with every dart alive.
+    const bool overlap = threads >= 2 && n >= 65536;
+    CellLabels cells;
+    const int checkThreads = overlap ? threads - 1 : std::max(1, threads);
+    const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(checkThreads), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
     auto checks = [&](int k, std::size_t b, std::size_t e) {
         GMapValidation& w = part[static_cast<std::size_t>(k)];
@@ -577,7 +376,14 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
             }
         }
     };
-    parallelChunks(n, chunks, checks);
+    if (overlap) {
+        parallelChunks(2, 2, [&](int job, std::size_t, std::size_t) {
+            if (job == 0) cells = labelCells(g);
+            else parallelChunks(n, chunks, checks);
+        });
+    } else {
+        parallelChunks(n, chunks, checks);
+    }
     for (const auto& w : part) {
         v.darts += w.darts;
         v.not_involution += w.not_involution;
@@ -587,7 +393,7 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
         v.eq2_face_connection += w.eq2_face_connection;
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
-        CellLabels cells = labelCells(g, threads);
+        if (!overlap) cells = labelCells(g);
         useCellLabels(std::move(cells), v, labels);
         if (!v.valid()) collectExamples(g, v);
         return v;
