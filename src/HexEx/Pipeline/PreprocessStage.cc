@@ -18,8 +18,6 @@ namespace HexEx {
 namespace {
 /// Tets per block of the deterministic parallel sums.
 constexpr std::size_t kSumBlock = 4096;
-/// Smallest bounding box (grid points) that gets a dense index (as in extractDarts()).
-constexpr double kDenseMinPoints = 64;
 /// Bytes per box point of a dense index: 4 (offset) + 1 (flags).
 constexpr double kBytesPerBoxPoint = 5;
 
@@ -136,7 +134,7 @@ void buildAndClassify(const CornerParams& params, std::vector<TetSoS>& tets, int
                 double box = 1;
                 for (int a = 0; a < 3; ++a) box *= std::max(0.0, floorChecked(hi[a]) - ceilChecked(lo[a]) + 1);
                 double shell = vol;
-                if (box >= kDenseMinPoints) {
+                if (box >= kDenseIndexMinPoints) {
                     BlockCounts& B = blocks[blk];
                     B.denseBytes += kBytesPerBoxPoint * box;
                     (T.vol > 0 ? B.largeProper : B.largeFlipped) += vol;
