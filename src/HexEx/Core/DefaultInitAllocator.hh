@@ -9,6 +9,7 @@
 #include <new>
 #include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace HexEx {
 
@@ -35,5 +36,11 @@ struct DefaultInitAllocator : std::allocator<T> {
         ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
     }
 };
+
+/// A std::vector whose resize() leaves new elements of trivial types uninitialized
+/// (DefaultInitAllocator): for large arrays that are sized and then filled completely, in
+/// parallel, with no serial zeroing pass (the pages are touched first by their writers).
+template <class T>
+using DefaultInitVector = std::vector<T, DefaultInitAllocator<T>>;
 
 } // namespace HexEx

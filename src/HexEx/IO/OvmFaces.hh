@@ -14,12 +14,6 @@
 
 namespace HexEx {
 
-/// A std::vector whose resize() leaves new elements of trivial types uninitialized
-/// (DefaultInitAllocator): the large lists of the face numbering are sized without a
-/// serial zeroing pass and then filled, in parallel, by the threads that number them.
-template <class T>
-using DefaultInitVector = std::vector<T, DefaultInitAllocator<T>>;
-
 /// Integer lists stored back to back: list i is values[offsets[i]] .. values[offsets[i + 1] - 1],
 /// or, if stride > 0 (lists of one length, such as the quads of an all-hex mesh), values[stride
 /// i] .. values[stride (i + 1) - 1] with offsets unused (no offset array to fill and to read).

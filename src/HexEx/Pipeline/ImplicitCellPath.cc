@@ -53,7 +53,7 @@ struct Slab {
 /// Counts the implicit cells of @p sl (and their boundary faces), or with @p fill writes
 /// them to @p cells from position @p at, and their twin faces to @p twins.
 void visitSlab(const TetMesh& mesh, const DartSet& ds, Slab& sl, bool fill, std::size_t at,
-               FilledVector<std::array<int, 8>>& cells, std::vector<unsigned char>& twins) {
+               DefaultInitVector<std::array<int, 8>>& cells, std::vector<unsigned char>& twins) {
     const DartSet::DenseIndex& di = ds.dense[sl.dense];
     unsigned boundaryFaces = 0;
     for (int j = 0; j < 4; ++j)
@@ -111,10 +111,10 @@ std::vector<FaceMask> implicitCellFaces(const TetMesh& mesh, const std::vector<T
     return usable;
 }
 
-FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
+DefaultInitVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
                                             const std::vector<int>& newIndex, int n_alive, int threads) {
     // Every surviving dart has one new index: every entry is written (no zeroing pass).
-    FilledVector<int> occ(static_cast<std::size_t>(n_alive));
+    DefaultInitVector<int> occ(static_cast<std::size_t>(n_alive));
     parallelChunks(alpha.size(), threads, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
@@ -125,12 +125,12 @@ FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha,
     return occ;
 }
 
-FilledVector<int> implicitDartOccurrences(const DartSet& ds, const std::vector<char>& alive, const std::vector<int>& newIndex,
+DefaultInitVector<int> implicitDartOccurrences(const DartSet& ds, const std::vector<char>& alive, const std::vector<int>& newIndex,
                                           int n_alive, int threads) {
     // Without occurrences (no dense box) every entry would be -1: none.
     if (ds.n_occurrences == 0) return {};
     // Every surviving dart has one new index: every entry is written (no zeroing pass).
-    FilledVector<int> occ(static_cast<std::size_t>(n_alive));
+    DefaultInitVector<int> occ(static_cast<std::size_t>(n_alive));
     // Darts are sorted by (tet, grid point): look the occurrence up once per run.
     parallelChunks(ds.darts.size(), threads, [&](int, std::size_t b, std::size_t e) {
         int o = -1;

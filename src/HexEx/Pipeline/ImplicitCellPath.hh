@@ -7,6 +7,7 @@
 /// darts refer to implicit cells (occurrence ids) and builds the implicit cells for the
 /// assembly (ImplicitCells).
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../Extraction/ConnectionTracing.hh"
 #include "../Postprocessing/HexMeshAssembly.hh"
 
@@ -25,12 +26,12 @@ std::vector<FaceMask> implicitCellFaces(const TetMesh& mesh, const std::vector<T
 /// Per surviving dart (new index): the occurrence id of its implicit alpha_3 partner, or
 /// -1. Reads the traced links @p alpha before they are compacted; @p new_index maps old
 /// dart indices to new ones (-1 for removed darts).
-FilledVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
+DefaultInitVector<int> implicitAlpha3Occurrences(const std::vector<DartLinks>& alpha, const std::vector<char>& alive,
                                            const std::vector<int>& new_index, int n_alive, int threads);
 
 /// Per surviving dart (new index): the occurrence id of its own grid point, or -1; empty
 /// if @p darts has no occurrences.
-FilledVector<int> implicitDartOccurrences(const DartSet& darts, const std::vector<char>& alive,
+DefaultInitVector<int> implicitDartOccurrences(const DartSet& darts, const std::vector<char>& alive,
                                          const std::vector<int>& new_index, int n_alive, int threads);
 
 /// Fills the implicit cells of @p darts into @p out: n_occurrences, cells (8 corner

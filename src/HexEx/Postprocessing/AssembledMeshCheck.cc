@@ -186,7 +186,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
         largest = std::max(largest, static_cast<std::size_t>(start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p) + 1])] -
                                                              start[static_cast<std::size_t>(vb[static_cast<std::size_t>(p)])]));
     // Every record read is written first: sized without zeroing.
-    std::vector<QuadRecord<Item>, DefaultInitAllocator<QuadRecord<Item>>> rec(largest);
+    DefaultInitVector<QuadRecord<Item>> rec(largest);
     // Per chunk of vertices: counts and the boundary quads in vertex order, concatenated in
     // chunk order (and part order).
     struct ChunkQuads {

@@ -96,9 +96,9 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // are neither): 1.88M of the 10.35M occurrences of the cylinder v6.
         const std::vector<int>& corner = labels.corner;
         nk = static_cast<int>(labels.corner_size.size());
-        const FilledVector<int>& dartOccs = implicit->dart_occurrence;
+        const DefaultInitVector<int>& dartOccs = implicit->dart_occurrence;
         auto dartOcc = [&](std::size_t d) { return dartOccs.empty() ? -1 : dartOccs[d]; };
-        const FilledVector<int>& a3Occ = implicit->alpha3_occurrence;
+        const DefaultInitVector<int>& a3Occ = implicit->alpha3_occurrence;
         const auto& jo = implicit->joined_occurrences;
         const auto nOcc = static_cast<std::size_t>(nocc);
         const int ufChunks = nd + nOcc >= 16384 ? std::max(1, threads) : 1;

@@ -5,6 +5,7 @@
 /// <alpha_1, alpha_2, alpha_3> orbits (so h-vertices that annihilation or degenerate tets
 /// joined are merged), cells the <alpha_0, alpha_1, alpha_2> orbits.
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../GMap/GMap.hh"
 #include "../GMap/GMapValidator.hh"
 #include "../Mesh/HexMesh.hh"
@@ -40,14 +41,14 @@ struct DartGeometry {
 /// meet them. Their corners are "occurrences": grid points in the closed image of one tet.
 struct ImplicitCells {
     long n_occurrences = 0;                       ///< number of occurrence ids
-    FilledVector<int> dart_occurrence;            ///< per dart: occurrence of its own grid point, or -1 (empty: none has one)
-    FilledVector<int> alpha3_occurrence;          ///< per dart: occurrence of its implicit alpha_3 partner, or -1
+    DefaultInitVector<int> dart_occurrence;            ///< per dart: occurrence of its own grid point, or -1 (empty: none has one)
+    DefaultInitVector<int> alpha3_occurrence;          ///< per dart: occurrence of its implicit alpha_3 partner, or -1
     /// Pairs of occurrences that are the same grid point seen from the two tets of a shared
     /// face (one vertex).
     std::vector<std::pair<int, int>> joined_occurrences;
     long boundary_quads = 0;                      ///< faces of implicit cells on the boundary
     /// The implicit cells, each as its 8 corner occurrences in VTK order.
-    FilledVector<std::array<int, 8>> cells;
+    DefaultInitVector<std::array<int, 8>> cells;
     /// Per implicit cell: bit f set if its face f (kHexFaces order) is the opposite face of
     /// the neighbouring implicit cell of the same tet across it (the same four occurrences,
     /// so the same four vertices): checkAssembledHexes() files such pairs once.

@@ -13,18 +13,12 @@
 
 namespace HexEx {
 
-/// A vector whose resize() does not zero its new elements (DefaultInitAllocator), for large
-/// arrays that are sized and then filled completely, in parallel: no serial zeroing pass,
-/// and the pages are touched first by the threads that fill them.
-template <class T>
-using FilledVector = std::vector<T, DefaultInitAllocator<T>>;
-
 /// Geometry the merging needs: the placed points (a grid point in one tet, shared by the
 /// darts extracted there) and, per dart, its placed point.
 struct DartPlacement {
-    FilledVector<int> point;                       ///< per dart: index of its placed point
+    DefaultInitVector<int> point;                       ///< per dart: index of its placed point
     std::vector<Vec3d> position;                   ///< per placed point: 3D position of the grid point in its tet
-    FilledVector<std::array<int, 3>> boundary_hf;  ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
+    DefaultInitVector<std::array<int, 3>> boundary_hf;  ///< per placed point: boundary halffaces of the tet containing it (-1 = none)
     /// Extra placed points of removed regular darts (annihilation), each attached to the
     /// surviving dart extra_dart[k] that inherited its h-vertex: another preimage of the
     /// same grid point, used as a position candidate of that dart's vertex.
