@@ -1,9 +1,9 @@
 #include "FoldCancellation.hh"
 
+#include "../Core/Error.hh"
 #include "../Core/UnionFind.hh"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <map>
 
@@ -25,20 +25,15 @@ std::vector<int> identityChartComponents(const TetMesh& mesh, const Transitions&
 }
 
 bool mayCancelFoldPoints(const std::vector<TetSoS>& tets) {
-    for (const TetSoS& T : tets) {
+    for (std::size_t c = 0; c < tets.size(); ++c) {
+        const TetSoS& T = tets[c];
         if (T.vol >= 0) continue;
         if (!T.p) return true;
-        double points = 1;
-        for (int a = 0; a < 3; ++a) {
-            double lo = T.p[0][a], hi = T.p[0][a];
-            for (int i = 1; i < 4; ++i) {
-                lo = std::min(lo, T.p[i][a]);
-                hi = std::max(hi, T.p[i][a]);
-            }
-            if (!(std::fabs(lo) <= 1e9 && std::fabs(hi) <= 1e9)) return true;  // (also NaN) gridBox() throws: let it
-            points *= std::max(0.0, std::floor(hi) - std::ceil(lo) + 1);  // gridBox()'s box, exactly (|u| <= 1e9)
+        try {
+            if (gridBox(T, c).points >= kDenseIndexMinPoints) return true;
+        } catch (const InputError&) {
+            return true;  // non-finite or absurd parameters: the extraction reports them
         }
-        if (points >= kDenseIndexMinPoints) return true;
     }
     return false;
 }
