@@ -693,7 +693,14 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
         const unsigned m = (f0 & 1u) | (f0 > f1 ? 2u : 0u) | (f1 > f2 ? 4u : 0u) | ((f2 & 1u) << 3);
         return D.sign < 0 ? m ^ 0xFu : m;
     };
-    auto deferred = [&](std::size_t d, int i) { return (deferMask(d) >> i & 1u) != 0; };
+    // One bit of deferMask(d), spelled out: this one runs per link on the hot path, where
+    // computing all four bits measured dearer. The two must state the same rule.
+    auto deferred = [&](std::size_t d, int i) {
+        const Dart& D = darts.darts[d];
+        const auto& f = D.d;
+        const bool upper = i == 0 ? dirSign(f[0]) < 0 : i == 1 ? f[0] > f[1] : i == 2 ? f[1] > f[2] : dirSign(f[2]) < 0;
+        return upper != (D.sign < 0);
+    };
     // The link back into a deferred partner: it takes the smallest dart that found it (as a
     // pass in dart order after pass 1 would write first); a value below kUnconnected there
     // is kPending or its own implicit-cell answer, which a link back replaces (pass 2 would
