@@ -15,4 +15,16 @@ inline void prefetch(const void* p) {
 #endif
 }
 
+/// prefetch() for a loop that does nothing but prefetch (requests ahead of the real work):
+/// GCC deletes such a loop, a prefetch being no side effect to it; the empty volatile asm
+/// that takes @p p keeps the loop.
+inline void prefetchKept(const void* p) {
+#if defined(__GNUC__)
+    __builtin_prefetch(p);
+    asm volatile("" : : "r"(p));
+#else
+    (void)p;
+#endif
+}
+
 } // namespace HexEx
