@@ -5,6 +5,7 @@
 /// indexed 4*c+i (opposite corner i), unique edges and faces with incidences.
 
 #include "../Core/Handles.hh"
+#include "../Core/Prefetch.hh"
 #include "../Core/Property.hh"
 #include "../Core/Vec.hh"
 
@@ -62,6 +63,12 @@ public:
     /// mispredicts).
     static int corner_of(const std::array<VertexHandle, 4>& cv, VertexHandle v) {
         return static_cast<int>(cv[1] == v) + 2 * static_cast<int>(cv[2] == v) + 3 * static_cast<int>(cv[3] == v);
+    }
+    /// Asks the CPU to load the corners of cell @p c and, once built, its four opposite
+    /// halffaces early (for per-vertex passes, whose stars are scattered over the arrays).
+    void prefetch_cell(CellHandle c) const {
+        prefetchKept(&cells_[c.uidx()]);
+        if (adjacency_built_) prefetchKept(&opposite_[4 * c.uidx()]);
     }
     /// Swaps corners @p i and @p j of cell @p c (changes its orientation). Invalidates adjacency.
     void swap_corners(CellHandle c, int i, int j);

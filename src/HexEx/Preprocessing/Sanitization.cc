@@ -1,6 +1,7 @@
 #include "Sanitization.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/Prefetch.hh"
 #include "../Predicates/ExactPredicates.hh"
 
 #include <algorithm>
@@ -64,6 +65,24 @@ bool sanitizeSimpleVertex(const TetMesh& mesh, CornerParams& params, const Trans
     }
     return true;
 }
+/// How many vertices ahead of the current one the star is prefetched.
+constexpr std::size_t kPrefetchAhead = 2;
+
+/// Asks the CPU to load what the sanitization of @p v reads (the corners, opposite
+/// halffaces, transition codes and parameters of its tets) early: the tets of a star are
+/// scattered over the arrays, and the walk over them is a chain of dependent loads.
+void prefetchStar(const TetMesh& mesh, const CornerParams& params, const Transitions& tr, VertexHandle v) {
+    auto cells = mesh.vertex_cells(v);
+    for (auto it = cells.first; it != cells.second; ++it) {
+        const CellHandle c(*it);
+        mesh.prefetch_cell(c);
+        const char* p = reinterpret_cast<const char*>(params[c.uidx()].data());
+        prefetchKept(p);
+        prefetchKept(p + sizeof(params[0]) - 1);
+        tr.halfface.prefetch(4 * c.uidx());
+    }
+}
+
 /// True if two values of a vertex (in one chart) are the same up to @p epsilon, relative
 /// to their magnitude once above 1.
 bool sameValue(const Vec3d& a, const Vec3d& b, double epsilon) {
@@ -128,6 +147,7 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     std::vector<char> agrees;              // per star entry: agrees with the voted value
     for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
+        if (vi + kPrefetchAhead < vend) prefetchStar(mesh, params, tr, VertexHandle(static_cast<int>(vi + kPrefetchAhead)));
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
         if (sanitizeSimpleVertex(mesh, params, tr, oneChart, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;

@@ -178,6 +178,25 @@ bool cornersAgree(const Vec3d u[3], const Vec3d w[3], const FaceFit& f) {
     return false;
 }
 
+/// How many edges ahead the holonomy walk prefetches the ring's tets.
+constexpr std::size_t kEdgesAhead = 4;
+/// How many halffaces (a multiple of 4: whole tets) ahead the fit prefetches.
+constexpr std::size_t kHalffacesAhead = 16;
+
+/// Asks the CPU to load the corners and parameters of the neighbours across the four
+/// halffaces from @p h (the first of a tet) whose faces are fitted from this side.
+void prefetchNeighbours(const TetMesh& mesh, const CornerParams& params, std::size_t h) {
+    for (std::size_t k = h; k < h + 4; ++k) {
+        const HalfFaceHandle o = mesh.opposite_halfface(HalfFaceHandle(static_cast<int>(k)));
+        if (o.idx() < static_cast<int>(k)) continue;  // boundary, or fitted from the other side
+        const CellHandle n = TetMesh::cell(o);
+        mesh.prefetch_cell(n);
+        const char* p = reinterpret_cast<const char*>(params[n.uidx()].data());
+        prefetchKept(p);
+        prefetchKept(p + sizeof(params[0]) - 1);
+    }
+}
+
 } // namespace
 
 void HalffaceTransitions::reset(std::size_t n) {
@@ -298,6 +317,9 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     std::vector<std::vector<std::pair<int, Vec3i>>> translations(static_cast<std::size_t>(chunks));
     parallelChunks(nhf, chunks, [&](int chunk, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
+            // The neighbours' corners and parameters a few tets ahead (they lie anywhere in
+            // the arrays; this tet's own are read in order).
+            if (h % 4 == 0 && h + kHalffacesAhead < he) prefetchNeighbours(mesh, params, h + kHalffacesAhead);
             const HalfFaceHandle hf(static_cast<int>(h));
             const HalfFaceHandle opp = mesh.opposite_halfface(hf);
             if (!opp.is_valid() || opp.idx() < hf.idx()) continue;
@@ -420,6 +442,10 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
     std::vector<std::vector<SingularEdge>> found(static_cast<std::size_t>(chunks));
     parallelChunks(mesh.n_edges(), chunks, [&](int chunk, std::size_t eb, std::size_t ee) {
     for (std::size_t ei = eb; ei < ee; ++ei) {
+        if (ei + kEdgesAhead < ee) {  // the ring's tets lie anywhere in the arrays
+            auto ahead = mesh.edge_cells(EdgeHandle(static_cast<int>(ei + kEdgesAhead)));
+            for (const int* c = ahead.first; c != ahead.second; ++c) mesh.prefetch_cell(CellHandle(*c));
+        }
         const EdgeHandle e(static_cast<int>(ei));
         if (mesh.is_boundary(e)) continue;
         auto ring = mesh.edge_cells(e);

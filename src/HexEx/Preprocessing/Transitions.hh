@@ -3,6 +3,7 @@
 /// @ingroup pipeline
 /// Transition functions per halfface (paper 4.1.1) and singularity detection.
 
+#include "../Core/Prefetch.hh"
 #include "../Grid/GridTransform.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
 
@@ -30,6 +31,11 @@ public:
     }
     /// The rotation of halfface @p h (operator[] without looking up the translation).
     Rotation rotation(std::size_t h) const { return Rotation(code_[h] & kRotationMask); }
+    /// Asks the CPU to load the code of halfface @p h (and its translation, when dense) early.
+    void prefetch(std::size_t h) const {
+        prefetchKept(&code_[h]);
+        if (!dense_.empty()) prefetchKept(&dense_[h]);
+    }
     /// True if halfface @p h has the identity.
     bool is_identity(std::size_t h) const { return code_[h] == 0; }
     /// True if every halfface has the identity (a map with one chart): one pass over the
