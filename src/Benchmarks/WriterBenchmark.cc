@@ -2,7 +2,9 @@
 /// Times the hex mesh writers (and the OpenVolumeMesh face numbering they need) on one mesh.
 ///
 /// Usage: writer_benchmark MESH [threads] [repetitions] [formats] [DIR]   (defaults: 2 threads,
-/// 3 runs, all formats; formats is a comma-separated list of faces,vtu,vtk,ovm,ovmb,mesh or "all").
+/// 3 runs, all formats; formats is a comma-separated list of faces,vtu,vtk,ovm,ovmb,mesh or "all";
+/// tfaces, tovm, tovmb: the same with a face-neighbour table, HexFaceNeighbours.hh, built before
+/// each run by checkAssembledHexes() as the extraction builds it, not timed; not in "all").
 /// Without DIR every format is written to an std::ostringstream (the time includes growing it);
 /// with DIR to the file DIR/writer_benchmark.EXT by writeHexMesh(), as `hexex` writes its output
 /// (the time includes the kernel's copy into the page cache, not the disk).
@@ -13,6 +15,7 @@
 #include <HexEx/IO/HexMeshReaders.hh>
 #include <HexEx/IO/HexMeshWriters.hh>
 #include <HexEx/IO/OvmModel.hh>
+#include <HexEx/Postprocessing/AssembledMeshCheck.hh>
 
 #include <algorithm>
 #include <chrono>
@@ -31,10 +34,12 @@ namespace {
 /// CPU time of the process (all threads) in seconds.
 double cpuSeconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
 
-/// Best wall time of @p reps runs of @p f, and the CPU time of that run in @p cpu.
-double best(int reps, const std::function<void()>& f, double& cpu) {
+/// Best wall time of @p reps runs of @p f, and the CPU time of that run in @p cpu; @p before
+/// (if set) runs untimed before each run.
+double best(int reps, const std::function<void()>& f, double& cpu, const std::function<void()>& before = {}) {
     double t = 1e300;
     for (int r = 0; r < reps; ++r) {
+        if (before) before();
         const auto start = std::chrono::steady_clock::now();
         const double c0 = cpuSeconds();
         f();
@@ -65,6 +70,25 @@ int main(int argc, char** argv) {
         if (wanted("faces")) {
             const double tf = best(reps, [&] { faces = HexEx::ovmFlatFromHexMesh(mesh, threads).faces.size(); }, cpu);
             std::printf("%-6s %8.3f s wall %8.3f s cpu  (%zu faces)\n", "faces", tf, cpu, faces);
+        }
+        // The table variants: only when named.
+        HexEx::HexFaceNeighbours table;
+        const auto buildTable = [&] { HexEx::checkAssembledHexes(mesh, threads, nullptr, 0, &table); };
+        const auto named = [&](const char* name) { return !only.empty() && wanted(name); };
+        if (named("tfaces")) {
+            const double tf = best(reps, [&] { faces = HexEx::ovmFlatFromHexMesh(mesh, threads, &table).faces.size(); }, cpu, buildTable);
+            std::printf("%-6s %8.3f s wall %8.3f s cpu  (%zu faces)\n", "tfaces", tf, cpu, faces);
+        }
+        for (const auto& [name, format] : {std::pair<const char*, HexEx::HexMeshFormat>{"tovm", HexEx::HexMeshFormat::Ovm},
+                                           std::pair<const char*, HexEx::HexMeshFormat>{"tovmb", HexEx::HexMeshFormat::Ovmb}}) {
+            if (!named(name)) continue;
+            std::size_t bytes = 0;
+            const double t = best(reps, [&, format = format] {
+                std::ostringstream out;
+                HexEx::writeHexMeshStream(out, mesh, format, HexEx::VtuEncoding::Binary, threads, &table);
+                bytes = static_cast<std::size_t>(out.tellp());
+            }, cpu, buildTable);
+            std::printf("%-6s %8.3f s wall %8.3f s cpu  %zu bytes\n", name, t, cpu, bytes);
         }
         const std::pair<const char*, HexEx::HexMeshFormat> formats[] = {
             {"vtu", HexEx::HexMeshFormat::Vtu}, {"vtk", HexEx::HexMeshFormat::Vtk},

@@ -198,7 +198,7 @@ std::vector<std::string> writeMedit(BlockOutput& o, const HexMesh& m, int thread
 }
 
 std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMeshFormat format, VtuEncoding enc,
-                                 int threads) {
+                                 int threads, HexFaceNeighbours* neighbours) {
     detail::checkCellIndices(mesh);
     threads = resolveThreadCount(threads);
     BlockOutput o(&out);
@@ -206,8 +206,8 @@ std::vector<std::string> writeTo(std::ostream& out, const HexMesh& mesh, HexMesh
     switch (format) {
     case HexMeshFormat::Vtu: writeVtu(o, mesh, enc); break;
     case HexMeshFormat::Vtk: writeVtk(o, mesh, threads); break;
-    case HexMeshFormat::Ovm: writeOvmAscii(o, mesh, threads); break;
-    case HexMeshFormat::Ovmb: writeOvmBinary(o, ovmFlatFromHexMesh(mesh, threads), threads); break;
+    case HexMeshFormat::Ovm: writeOvmAscii(o, mesh, threads, neighbours); break;
+    case HexMeshFormat::Ovmb: writeOvmBinary(o, ovmFlatFromHexMesh(mesh, threads, neighbours), threads); break;
     default: warnings = writeMedit(o, mesh, threads);
     }
     o.flush();
@@ -239,17 +239,17 @@ HexMeshFormat hexMeshFormatFromPath(const std::string& path) {
 }
 
 std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
-                                            VtuEncoding encoding, int threads) {
-    return writeTo(out, mesh, format, encoding, threads);
+                                            VtuEncoding encoding, int threads, HexFaceNeighbours* neighbours) {
+    return writeTo(out, mesh, format, encoding, threads, neighbours);
 }
 
 std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh, VtuEncoding encoding,
-                                      int threads) {
+                                      int threads, HexFaceNeighbours* neighbours) {
     const HexMeshFormat format = hexMeshFormatFromPath(path);
     detail::checkCellIndices(mesh);
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     if (!out) throw InputError(path + ": cannot open file for writing");
-    auto warnings = writeTo(out, mesh, format, encoding, threads);
+    auto warnings = writeTo(out, mesh, format, encoding, threads, neighbours);
     out.flush();
     if (!out) throw InputError(path + ": error while writing the file");
     for (auto& w : warnings) w = path + ": " + w;

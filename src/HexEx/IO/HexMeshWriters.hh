@@ -27,6 +27,7 @@
 ///
 /// Positions are written with 17 significant digits, so they read back bit-identically.
 
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Mesh/HexMesh.hh"
 
 #include <array>
@@ -63,19 +64,24 @@ HexMeshFormat hexMeshFormatFromPath(const std::string& path);
 /// Writes @p mesh in @p format to @p out (`.vtu` data arrays in @p encoding), in blocks of
 /// about 1 MiB; text is formatted and `.ovm`/`.ovmb` faces are numbered on @p threads
 /// threads (0 = all hardware threads); the bytes do not depend on the thread count.
+/// With @p neighbours (the hexes' face neighbours from the extraction, extractHexMesh()) the
+/// `.ovm`/`.ovmb` faces are numbered from that table if it is the one of @p mesh, instead of
+/// matching the quads (the same bytes); it is used up (left empty) by those formats.
 /// @return warnings (e.g. cells a format cannot store); empty if everything was written.
 /// @throws std::invalid_argument if the mesh references a vertex out of range or has a
 ///         polyhedron face with fewer than three vertices.
 std::vector<std::string> writeHexMeshStream(std::ostream& out, const HexMesh& mesh, HexMeshFormat format,
-                                            VtuEncoding encoding = VtuEncoding::Binary, int threads = 0);
+                                            VtuEncoding encoding = VtuEncoding::Binary, int threads = 0,
+                                            HexFaceNeighbours* neighbours = nullptr);
 
 /// Writes @p mesh to @p path in the format given by its extension (see the file overview),
-/// on @p threads threads as writeHexMeshStream().
+/// on @p threads threads and with @p neighbours as writeHexMeshStream().
 /// @return warnings, each starting with "<path>: "; empty if everything was written.
 /// @throws InputError naming the path for an unknown extension or an unwritable path;
 ///         std::invalid_argument as writeHexMeshStream().
 std::vector<std::string> writeHexMesh(const std::string& path, const HexMesh& mesh,
-                                      VtuEncoding encoding = VtuEncoding::Binary, int threads = 0);
+                                      VtuEncoding encoding = VtuEncoding::Binary, int threads = 0,
+                                      HexFaceNeighbours* neighbours = nullptr);
 
 /// Writes singular edges as legacy VTK POLYDATA: @p points, line @p segments (pairs of
 /// point indices) and a cell-data scalar `valence` (one value per segment, @p valences).

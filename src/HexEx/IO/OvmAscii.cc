@@ -265,9 +265,9 @@ void writeOvmAscii(detail::BlockOutput& o, const OvmFlatMesh& m, int threads) {
     writeOvmAsciiTopology(o, m, threads);
 }
 
-void writeOvmAscii(detail::BlockOutput& o, const HexMesh& mesh, int threads) {
+void writeOvmAscii(detail::BlockOutput& o, const HexMesh& mesh, int threads, HexFaceNeighbours* neighbours) {
     if (threads <= 1) {
-        writeOvmAscii(o, ovmFlatFromHexMesh(mesh, 1), 1);
+        writeOvmAscii(o, ovmFlatFromHexMesh(mesh, 1, neighbours), 1);
         return;
     }
     // The vertices do not depend on the face numbering: they are formatted and handed to the
@@ -283,7 +283,7 @@ void writeOvmAscii(detail::BlockOutput& o, const HexMesh& mesh, int threads) {
     });
     OvmFlatMesh flat;
     try {
-        flat = ovmFlatFromHexMesh(mesh, threads);
+        flat = ovmFlatFromHexMesh(mesh, threads, neighbours);
     } catch (...) {
         vertices.join();
         throw;

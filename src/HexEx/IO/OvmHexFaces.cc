@@ -136,17 +136,18 @@ void forItemsInRange(const std::vector<std::array<int, 8>>& hexes, int perHex, s
 /// Counts the items of every hex of @p hexes for both @p a and @p b in one pass over the
 /// hexes (keys @p keyA and @p keyB, hex vertices). Chunk c of @p vChunks owns a range of
 /// vertices and reads the hexes in order (which the prefetcher follows): no atomics.
+/// Without @p countA only @p b is counted (@p a is left empty).
 template <class KeyA, class KeyB>
 void countBuckets(const std::vector<std::array<int, 8>>& hexes, std::size_t nv, int vChunks, BucketCount& a, KeyA&& keyA,
-                  BucketCount& b, KeyB&& keyB) {
-    a.start.assign(nv + 1, 0);
+                  BucketCount& b, KeyB&& keyB, bool countA = true) {
+    if (countA) a.start.assign(nv + 1, 0);
     b.start.assign(nv + 1, 0);
     parallelChunks(nv, vChunks, [&](int, std::size_t v0, std::size_t v1) {
-        forItemsInRange(hexes, a.perHex, v0, v1, keyA, [&](std::size_t, int, std::size_t v) { ++a.start[v + 1]; });
+        if (countA) forItemsInRange(hexes, a.perHex, v0, v1, keyA, [&](std::size_t, int, std::size_t v) { ++a.start[v + 1]; });
         forItemsInRange(hexes, b.perHex, v0, v1, keyB, [&](std::size_t, int, std::size_t v) { ++b.start[v + 1]; });
     });
     for (std::size_t v = 0; v < nv; ++v) {
-        a.start[v + 1] += a.start[v];
+        if (countA) a.start[v + 1] += a.start[v];
         b.start[v + 1] += b.start[v];
     }
 }
@@ -222,7 +223,7 @@ constexpr int kFirstLoopShift = 24;
 
 } // namespace
 
-bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
+bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbours* neighbours) {
     const std::size_t nHex = mesh.hexes.size(), nLoops = 6 * nHex, nv = mesh.vertices.size();
     // Halffaces fit in int, owner references with their orientation (2 (16 h + rank) + 1) in 32 bits.
     if (!mesh.polyhedra.empty() || nHex > static_cast<std::size_t>(INT_MAX / 12) || nHex > (std::size_t(1) << 27)) return false;
@@ -273,16 +274,20 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
         const auto& hx = mesh.hexes[h];
         return std::min(hx[static_cast<std::size_t>(kEdges[e][0])], hx[static_cast<std::size_t>(kEdges[e][1])]);
     };
+    // With a neighbour table (loop 6h + i is face i of hex h in both) the quads need no buckets.
+    const bool table = neighbours != nullptr && neighbours->items.size() == nLoops;
     BucketCount quadCount{6, {}}, edgeCount{12, {}};
-    countBuckets(mesh.hexes, nv, vChunks, quadCount, quadKey, edgeCount, edgeKey);
+    countBuckets(mesh.hexes, nv, vChunks, quadCount, quadKey, edgeCount, edgeKey, !table);
 
     // Quads: filed by their smallest vertex with their other three vertices sorted, matched in
     // each bucket by a sort (neighbour loop or -1; more than two equal quads: not covered).
-    DefaultInitVector<int> nb(nLoops);  // every entry written by the matching
+    DefaultInitVector<int> nb;
+    if (table) nb.swap(neighbours->items);
+    else nb.resize(nLoops);  // every entry written by the matching
     // One buffer for both kinds of records: 6 quads of 16 bytes or 12 edges of 8 bytes per hex.
     static_assert(sizeof(std::uint64_t) * 12 == 16 * 6, "records of a hex");
     std::unique_ptr<std::uint64_t[]> records(new std::uint64_t[12 * nHex]);  // not zeroed: every entry written
-    {
+    if (!table) {
         struct Quad {  // the other three vertices, sorted, and the loop
             int a, b, d, loop;
         };
@@ -369,10 +374,15 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out) {
                 const int v0 = loopVertex(l, 0);
                 int k = 0;
                 while (k < 4 && loopVertex(s, k) != v0) ++k;
-                hf[l] = hf[s] + (loopVertex(s, k + 1) == loopVertex(l, 1) ? 0 : 1);
-                // The same cycle as s, either way round (then the vertex opposite l's first one
-                // is the same): the quads' sides are edges of both hexes.
-                if (loopVertex(s, k + 2) != loopVertex(l, 2)) ok[static_cast<std::size_t>(c)] = 0;
+                const bool along = loopVertex(s, k + 1) == loopVertex(l, 1);
+                hf[l] = hf[s] + (along ? 0 : 1);
+                // The same cycle as s, either way round: the quads' sides are edges of both
+                // hexes. (For quads matched by their vertex sets the vertex opposite l's first
+                // one decides it; a neighbour table's pairs are compared in full.)
+                const bool same = k < 4 && loopVertex(s, k + 2) == loopVertex(l, 2) &&
+                                  loopVertex(s, k + (along ? 3 : 1)) == loopVertex(l, 3) &&
+                                  (along || loopVertex(s, k + 3) == loopVertex(l, 1));
+                if (!same) ok[static_cast<std::size_t>(c)] = 0;
             }
         }
     });

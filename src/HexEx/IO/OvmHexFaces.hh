@@ -7,6 +7,7 @@
 /// the same halfface and halfedge orientations, so the files' bytes do not change; it needs no
 /// copy of the loops and no sequential numbering pass.
 
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Mesh/HexMesh.hh"
 #include "OvmFaces.hh"
 
@@ -30,9 +31,13 @@ constexpr int kOvmHexOrder[6] = {0, 1, 5, 3, 4, 2};
 /// halfedges, the edges' end points. Matches quads and finds edge owners in per-vertex
 /// buckets of records, then fills the halfedges hex by hex, in parallel.
 /// Same result for any @p threads.
+/// With @p neighbours (a table that fits @p mesh: hexFaceNeighboursFit() without the vertex
+/// comparison, checked by the caller) the quads are not matched: its items are taken over
+/// (left empty) as every face's neighbour, and the pairs' vertex cycles are compared while the
+/// halffaces are oriented.
 /// @return false (and @p out unspecified) if the mesh is outside what it covers: a hex with a
-/// repeated vertex, a quad whose vertices bound quads of more than two hexes, or more than
-/// 2^27 hexes; buildOvmFaces() must be used then.
-bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out);
+/// repeated vertex, a quad whose vertices bound quads of more than two hexes, more than
+/// 2^27 hexes, or a pair of @p neighbours whose quads differ; buildOvmFaces() must be used then.
+bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbours* neighbours = nullptr);
 
 } // namespace HexEx

@@ -116,18 +116,23 @@ HexMesh hexMeshFromOvm(const OvmModel& m) {
     return mesh;
 }
 
-OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads) {
+OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads, HexFaceNeighbours* neighbours) {
     detail::checkCellIndices(mesh);
     OvmFlatMesh m;
     m.vertices = &mesh.vertices;
     m.topology = mesh.polyhedra.empty() ? OvmTopology::Hexahedral : OvmTopology::Polyhedral;
     OvmFaces faces;
     bool numbered = false;
-    if (mesh.polyhedra.empty() && mesh.hexes.size() >= kPerVertexNumberingHexes) {
-        // Many hexes only: faces and edges per vertex, the numbering of buildOvmFaces() with
-        // less memory (buildOvmFaces() remains for what ovmHexFaces() does not cover).
-        numbered = ovmHexFaces(mesh, threads, faces);
+    // A face-neighbour table from the assembly is used if it is the one of these hexes.
+    const bool table = mesh.polyhedra.empty() && neighbours && !neighbours->items.empty() &&
+                       hexFaceNeighboursFit(mesh, *neighbours, hexMeshDigest(mesh, threads), threads, false);
+    if (table || (mesh.polyhedra.empty() && mesh.hexes.size() >= kPerVertexNumberingHexes)) {
+        // Many hexes only, or a table: faces and edges per vertex, the numbering of
+        // buildOvmFaces() with less memory (buildOvmFaces() remains for what ovmHexFaces()
+        // does not cover).
+        numbered = ovmHexFaces(mesh, threads, faces, table ? neighbours : nullptr);
     }
+    if (neighbours) *neighbours = HexFaceNeighbours{};  // used up (or stale)
     if (!numbered) faces = ovmFacesOfCells(mesh, threads);
     m.edges = std::move(faces.edges);
     m.faces = std::move(faces.faceHalfedges);

@@ -9,6 +9,7 @@
 /// Numbering as in OpenVolumeMesh: halfedge 2e+o of edge e = (a, b) runs a->b for o = 0 and
 /// b->a for o = 1; halfface 2f is the loop of face f, 2f+1 the reversed loop.
 
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Mesh/HexMesh.hh"
 #include "BlockOutput.hh"
 #include "OvmFaces.hh"
@@ -96,8 +97,9 @@ void writeOvmAscii(detail::BlockOutput& out, const OvmFlatMesh& mesh, int thread
 /// Appends the hex mesh @p mesh as OpenVolumeMesh ASCII to @p out: the same bytes as
 /// writeOvmAscii(out, ovmFlatFromHexMesh(mesh, threads), threads), but with @p threads > 1
 /// the vertices are formatted and appended while the faces and edges are numbered.
+/// With @p neighbours the faces are numbered from that table (see ovmFlatFromHexMesh()).
 /// @throws std::invalid_argument as ovmFlatFromHexMesh().
-void writeOvmAscii(detail::BlockOutput& out, const HexMesh& mesh, int threads);
+void writeOvmAscii(detail::BlockOutput& out, const HexMesh& mesh, int threads, HexFaceNeighbours* neighbours = nullptr);
 
 /// The model as OpenVolumeMesh binary (file and header version 1, exact doubles, no
 /// compression); the map (if any) as halfface property `HexHex::Parametrization` of type `3d`.
@@ -122,6 +124,9 @@ OvmModel ovmFromHexMesh(const HexMesh& mesh);
 
 /// The same as ovmFromHexMesh() in flat form, with faces and edges found on @p threads
 /// threads (the result does not depend on it); the positions point into @p mesh.
-OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads = 1);
+/// With @p neighbours (e.g. from the extraction, HexFaceNeighbours.hh) that fit the mesh the
+/// faces are numbered from that table instead of matching the quads; the result is the same.
+/// The table is used up (left empty) either way.
+OvmFlatMesh ovmFlatFromHexMesh(const HexMesh& mesh, int threads = 1, HexFaceNeighbours* neighbours = nullptr);
 
 } // namespace HexEx

@@ -29,9 +29,13 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         // The implicit cells are the last hexes; their twin faces are filed once.
         const std::size_t nImplicit = in.implicit ? in.implicit->cells.size() : 0;
         const AssembledMeshCheck check = checkAssembledHexes(out.mesh, in.threads, in.implicit ? &in.implicit->twin_faces : nullptr,
-                                                             out.mesh.hexes.size() - nImplicit);
+                                                             out.mesh.hexes.size() - nImplicit,
+                                                             in.want_face_neighbours ? &out.face_neighbours : nullptr,
+                                                             in.implicit ? &in.implicit->cells : nullptr);
         out.mesh_agrees = check.agrees(out.stats.quads, out.stats.boundary_quads);
         if (!out.mesh_agrees) out.warnings.push_back(check.warning(out.stats.quads, out.stats.boundary_quads));
+        // The table is handed on only for a mesh that is what the map describes.
+        if (!out.mesh_agrees) out.face_neighbours = HexFaceNeighbours{};
     }
     return out;
 }

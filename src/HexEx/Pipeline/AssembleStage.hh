@@ -4,6 +4,7 @@
 /// Pipeline stage "assemble": validates the final generalized map (paper 3.1) and builds
 /// the hex mesh (vertex merging 4.4.2, hexes, polyhedra for other cells).
 
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Postprocessing/HexMeshAssembly.hh"
 
 #include <string>
@@ -18,6 +19,7 @@ struct AssembleInput {
     const ImplicitCells* implicit = nullptr;   ///< implicit cells, or null when the fast path is off
     int threads = 1;                           ///< worker threads (resolved, >= 1)
     bool want_hex_darts = false;               ///< fill AssembleOutput::hex_darts (for the arcs stage)
+    bool want_face_neighbours = false;         ///< fill AssembleOutput::face_neighbours (for the OVM writers)
 };
 
 /// Output of assembleStage().
@@ -33,6 +35,9 @@ struct AssembleOutput {
     /// With AssembleInput::want_hex_darts: per hex built from darts, its dart at corner 0
     /// whose frame points to corners 1, 3 and 4 (see assembleHexMesh()).
     std::vector<int> hex_darts;
+    /// With AssembleInput::want_face_neighbours: the hexes' face neighbours found by the mesh
+    /// check (empty if it did not run or did not pass, e.g. with polyhedra).
+    HexFaceNeighbours face_neighbours;
 };
 
 /// Runs the stage. The result does not depend on the thread count.

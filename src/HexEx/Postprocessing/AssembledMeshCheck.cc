@@ -8,6 +8,7 @@
 #include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Parallel.hh"
 #include "../Mesh/HexMeshCheck.hh"
+#include "../Mesh/HexFaceNeighbours.hh"
 
 #include <algorithm>
 #include <array>
@@ -80,6 +81,9 @@ struct QuadPass {
     long boundary_quads = 0;         ///< of those, in exactly one hex
     long shared_by_more = 0;         ///< in three or more hexes
     std::vector<long> boundary;      ///< the items of the boundary quads, by smallest vertex, then vertex set
+    long twin_faces_skipped = 0;     ///< twin faces not filed (their partner's record stands for them)
+    long twin_pairs_found = 0;       ///< filed twin faces whose partner face was found (neighbour table)
+    bool neighbours_complete = true; ///< false if the neighbour table could not be filled
 };
 
 /// Faces of twin pairs (checkAssembledHexes()): the face of the pair in the first set is
@@ -92,9 +96,34 @@ constexpr unsigned kTwinSkipped = (1u << 0) | (1u << 2) | (1u << 5);
 struct TwinFaces {
     const std::vector<unsigned char>* twins = nullptr;  ///< per hex from first on
     std::size_t first = 0;                              ///< the first hex with bits
+    /// Per hex from first on its corner occurrences (ImplicitCells::cells), or null.
+    const DefaultInitVector<std::array<int, 8>>* corners = nullptr;
     /// The twin bits of hex @p h.
     unsigned of(std::size_t h) const {
         return twins && h >= first && h - first < twins->size() ? (*twins)[h - first] : 0u;
+    }
+    /// The face item 6h' + f' of the twin of filed face @p f (1, 3 or 4) of hex @p h, or -1 if
+    /// it is not found. The cells are unit cells of boxes with corners c, c + X, c + X + Y,
+    /// c + Y, c + Z, ... (Z = 1), in increasing corner 0: the neighbour across face 1 (+z), 3
+    /// (+x), 4 (+y) is the cell whose corner 0 is corner 4, 1, 3 of this one, at most that
+    /// many occurrences, hence cells, further on; its face 0, 5, 2 is the twin.
+    long partner(std::size_t h, int f) const {
+        if (!corners || corners->size() != twins->size()) return -1;
+        const auto& C = *corners;
+        const std::size_t i = h - first;
+        const int c0 = C[i][0];
+        const int target = f == 1 ? C[i][4] : f == 3 ? C[i][1] : C[i][3];
+        const int opposite = f == 1 ? 0 : f == 3 ? 5 : 2;
+        if (target <= c0) return -1;
+        // Binary search for corner 0 == target in (i, i + (target - c0)].
+        std::size_t lo = i + 1, hi = std::min(C.size(), i + 1 + static_cast<std::size_t>(target - c0));
+        while (lo < hi) {
+            const std::size_t mid = lo + (hi - lo) / 2;
+            if (C[mid][0] < target) lo = mid + 1;
+            else hi = mid;
+        }
+        if (lo >= C.size() || C[lo][0] != target || !(((*twins)[lo] >> opposite) & 1u)) return -1;
+        return 6 * static_cast<long>(first + lo) + opposite;
     }
 };
 
@@ -119,8 +148,13 @@ inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
 /// With @p tw, twin pairs are filed once with two occurrences; if a hex has a repeated
 /// corner it returns after the first pass (repeated_corner_hexes > 0, nothing else counted)
 /// so that the caller runs it again without @p tw.
+///
+/// With @p nb (6 entries per hex) every face of a valid hex gets its neighbour face item, or -1
+/// on the boundary (quads in more than two hexes: unspecified); a filed twin face and its
+/// partner are paired by TwinFaces::partner(). QuadPass::neighbours_complete says whether
+/// every face got an entry.
 template <class Item>
-QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
+QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int* nb) {
     QuadPass r;
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
@@ -131,7 +165,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
     // atomics too (the records of a bucket in chunk order, then hex order). At most
     // kMaxSlotChunks such arrays, so that the memory does not grow with the thread count.
     const int hexChunks = std::min(chunks, kMaxSlotChunks);
-    std::vector<long> repeated(static_cast<std::size_t>(hexChunks), 0);
+    std::vector<long> repeated(static_cast<std::size_t>(hexChunks), 0), skippedTwins(static_cast<std::size_t>(hexChunks), 0);
     std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
     std::vector<std::vector<Item>> slot(static_cast<std::size_t>(hexChunks));
     parallelChunks(static_cast<std::size_t>(nh), hexChunks, [&](int k, std::size_t h0, std::size_t h1) {
@@ -150,6 +184,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
             }
             good[h] = 1;
             const unsigned skipped = tw.of(h) & kTwinSkipped;
+            skippedTwins[static_cast<std::size_t>(k)] += __builtin_popcount(skipped);
             for (int f = 0; f < 6; ++f) {
                 if ((skipped >> f) & 1) continue;
                 const int* l = kHexFaces[f];
@@ -159,6 +194,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
         }
     });
     for (const long n : repeated) r.repeated_corner_hexes += n;
+    for (const long n : skippedTwins) r.twin_faces_skipped += n;
     if (tw.twins && r.repeated_corner_hexes > 0) return r;
     // Bucket starts, and each chunk's first slot in every bucket (counts turned into offsets).
     for (long v = 0; v < nv; ++v) {
@@ -190,7 +226,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
     // Per chunk of vertices: counts and the boundary quads in vertex order, concatenated in
     // chunk order (and part order).
     struct ChunkQuads {
-        long quads = 0, boundary_quads = 0, shared_by_more = 0;
+        long quads = 0, boundary_quads = 0, shared_by_more = 0, twin_pairs = 0;
+        bool unresolved = false;  // a filed twin face whose partner was not found
         std::vector<long> boundary;
     };
     std::vector<ChunkQuads> parts(static_cast<std::size_t>(chunks) * static_cast<std::size_t>(nParts));
@@ -244,6 +281,27 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
                     } else if (n > 2) {
                         ++part.shared_by_more;
                     }
+                    if (nb) {
+                        // Each face item is written by the group of its quad only (a twin
+                        // partner's face is not filed): no two chunks write one entry.
+                        const auto a = static_cast<std::size_t>(i->item);
+                        if (j - i == 2) {
+                            const auto b = static_cast<std::size_t>(i[1].item);
+                            nb[a] = static_cast<int>(b);
+                            nb[b] = static_cast<int>(a);
+                        } else if (j - i == 1 && n == 1) {
+                            nb[a] = -1;
+                        } else if (j - i == 1 && n == 2) {
+                            const long t = tw.partner(a / 6, static_cast<int>(a % 6));
+                            if (t < 0) {
+                                part.unresolved = true;
+                            } else {
+                                nb[a] = static_cast<int>(t);
+                                nb[static_cast<std::size_t>(t)] = static_cast<int>(a);
+                                ++part.twin_pairs;
+                            }
+                        }
+                    }
                     i = j;
                 }
             }
@@ -253,6 +311,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw) {
         r.quads += part.quads;
         r.boundary_quads += part.boundary_quads;
         r.shared_by_more += part.shared_by_more;
+        r.twin_pairs_found += part.twin_pairs;
+        if (part.unresolved) r.neighbours_complete = false;
         r.boundary.insert(r.boundary.end(), part.boundary.begin(), part.boundary.end());
         std::vector<long>().swap(part.boundary);
     }
@@ -285,7 +345,9 @@ std::string AssembledMeshCheck::warning(long dart_quads, long dart_boundary_quad
 }
 
 AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads, const std::vector<unsigned char>* twin_faces,
-                                       std::size_t first_twin_hex) {
+                                       std::size_t first_twin_hex, HexFaceNeighbours* neighbours,
+                                       const DefaultInitVector<std::array<int, 8>>* twin_corners) {
+    if (neighbours) *neighbours = HexFaceNeighbours{};
     AssembledMeshCheck r;
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
@@ -296,13 +358,26 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads, const s
     }
     const int chunks = nh >= kParallelHexes ? std::max(1, threads) : 1;
     // Quad items: face f of hex h is item 6h+f; a 32-bit item index when it fits.
+    // The neighbour table (int entries), every entry written by the quad pass; none if a
+    // twin face could not be paired (no corners given).
+    const bool wantTable = neighbours && 6 * nh <= static_cast<long>(INT32_MAX) && (!twin_faces || twin_corners);
+    DefaultInitVector<int> table(wantTable ? static_cast<std::size_t>(6 * nh) : 0);
+    int* const nb = wantTable ? table.data() : nullptr;
     auto quadPass = [&](const TwinFaces& tw) {
-        return 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks, tw) : distinctQuads<long>(mesh, chunks, tw);
+        return 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks, tw, nb) : distinctQuads<long>(mesh, chunks, tw, nb);
     };
-    QuadPass pass = quadPass(TwinFaces{twin_faces, first_twin_hex});
+    QuadPass pass = quadPass(TwinFaces{twin_faces, first_twin_hex, twin_corners});
     // A hex with a repeated corner breaks the twin pairs' premise (both hexes counted):
     // the whole pass again without them.
     if (twin_faces && pass.repeated_corner_hexes > 0) pass = quadPass(TwinFaces{});
+    // The table is complete if every hex is valid, no quad is in more than two hexes and every
+    // twin face not filed was paired by its partner's record (each pairing writes one).
+    if (wantTable && pass.repeated_corner_hexes == 0 && pass.shared_by_more == 0 && pass.neighbours_complete &&
+        pass.twin_pairs_found == pass.twin_faces_skipped) {
+        neighbours->items = std::move(table);
+        neighbours->digest = hexMeshDigest(mesh, threads);
+    }
+    DefaultInitVector<int>().swap(table);
     r.repeated_corner_hexes = pass.repeated_corner_hexes;
     r.quads = pass.quads;
     r.boundary_quads = pass.boundary_quads;

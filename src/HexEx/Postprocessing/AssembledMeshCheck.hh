@@ -6,7 +6,11 @@
 /// (vertices = <alpha_1, alpha_2, alpha_3> orbits) gave two distinct quads the same four
 /// vertices, or a hex two equal corners. The report must not call such a mesh valid.
 
+#include "../Core/DefaultInitAllocator.hh"
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Mesh/HexMesh.hh"
+
+#include <array>
 
 #include <cstddef>
 #include <string>
@@ -40,7 +44,15 @@ struct AssembledMeshCheck {
 /// (ImplicitCells::twin_faces). Such a pair is filed once, as two occurrences of its quad
 /// (the same counts with fewer records); if a hex has a repeated corner the check runs
 /// again without them, so the result is the same as without @p twin_faces.
+/// With @p neighbours, the quads matched on the way give its face-neighbour table (every face
+/// of a hex the other hex's face with the same vertices, or -1), with the mesh's digest; the
+/// table is left empty unless every hex is valid and no quad is in more than two hexes. With
+/// @p twin_faces the twins are paired through @p twin_corners (per hex from @p first_twin_hex
+/// its corner occurrences, ImplicitCells::cells: unit cells of boxes in increasing corner 0);
+/// without @p twin_corners there is no table then.
 AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads = 1,
-                                       const std::vector<unsigned char>* twin_faces = nullptr, std::size_t first_twin_hex = 0);
+                                       const std::vector<unsigned char>* twin_faces = nullptr, std::size_t first_twin_hex = 0,
+                                       HexFaceNeighbours* neighbours = nullptr,
+                                       const DefaultInitVector<std::array<int, 8>>* twin_corners = nullptr);
 
 } // namespace HexEx
