@@ -57,7 +57,7 @@ struct PipelineState {
 // src/HexEx/Pipeline with a plain input and output struct; its counts go into the report
 // as they come.
 ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* ownedParams, HexMesh& output,
-                             const ExtractionOptions& opt, PipelineState& state) {
+                             const ExtractionOptions& opt, PipelineState& state, HexFaceNeighbours* faceNeighbours) {
     ExtractionReport rep;
     const TetMesh& mesh = input.mesh;
     const int threads = resolveThreadCount(opt.threads);
@@ -127,9 +127,11 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* own
     release(survivors.new_index);
 
     enter("assemble");
-    AssembleOutput assembled = assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads, arcs || provenance});
+    AssembleOutput assembled =
+        assembleStage({&map.map, &geo, implicit ? &cells : nullptr, threads, arcs || provenance, faceNeighbours != nullptr});
     addToReport(assembled, rep);
     output = std::move(assembled.mesh);
+    if (faceNeighbours) *faceNeighbours = std::move(assembled.face_neighbours);
     if (provenance)
         *opt.provenance = provenanceStage({&mesh, &pre.transitions, &pre.tets, &output, &map.map, &assembled.hex_darts,
                                            &darts.darts, &origin, implicit ? &cells : nullptr, threads});
@@ -149,10 +151,10 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* own
 /// Runs the pipeline on @p input (its parameters taken over if @p ownedParams is
 /// input.params) and turns an allocation failure into a ResourceError.
 ExtractionReport extractGuarded(const ParametrizedTetMesh& input, CornerParams* ownedParams, HexMesh& output,
-                                const ExtractionOptions& opt) {
+                                const ExtractionOptions& opt, HexFaceNeighbours* faceNeighbours = nullptr) {
     PipelineState state;
     try {
-        return runPipeline(input, ownedParams, output, opt, state);
+        return runPipeline(input, ownedParams, output, opt, state, faceNeighbours);
     } catch (const std::bad_alloc&) {
         // Whatever failed to allocate has been freed by the unwinding: there is room for the message.
         const MemoryEstimate& est = state.estimate;
@@ -171,6 +173,12 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
 
 ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output, const ExtractionOptions& opt) {
     return extractGuarded(input, &input.params, output, opt);
+}
+
+ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output, const ExtractionOptions& opt,
+                                HexFaceNeighbours* faceNeighbours) {
+    if (faceNeighbours) *faceNeighbours = HexFaceNeighbours{};
+    return extractGuarded(input, &input.params, output, opt, faceNeighbours);
 }
 
 } // namespace HexEx

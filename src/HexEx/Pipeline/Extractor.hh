@@ -5,6 +5,7 @@
 /// "Stages") and fills the report as data flows. Included through HexEx.hh.
 
 #include "../Extraction/ExtractionReport.hh"
+#include "../Mesh/HexFaceNeighbours.hh"
 #include "../Mesh/HexMesh.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
 
@@ -25,5 +26,11 @@ ExtractionReport extractHexMesh(const ParametrizedTetMesh& input, HexMesh& outpu
 /// as the overload above; afterwards `input.params` is empty and `input.mesh` unchanged.
 ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output,
                                 const ExtractionOptions& options = {});
+
+/// The same, and the hexes' face neighbours as the assembly found them into
+/// @p face_neighbours (if not null; empty where the mesh check did not pass or there are
+/// polyhedra): writeHexMesh() numbers the `.ovm`/`.ovmb` faces of @p output from them.
+ExtractionReport extractHexMesh(ParametrizedTetMesh&& input, HexMesh& output, const ExtractionOptions& options,
+                                HexFaceNeighbours* face_neighbours);
 
 } // namespace HexEx
