@@ -27,7 +27,7 @@ struct AnnihilateInput {
     /// The darts (optional): removed darts at the same grid point of the same tet as the
     /// previous one, with the same heir, are then left out of AnnihilateOutput::heir.
     const DartSet* darts = nullptr;
-    int threads = 1;                                   ///< worker threads for the numbering
+    int threads = 1;                                   ///< worker threads for the numbering and AnnihilationRetry::threads
     AnnihilationRetry retry;                           ///< local retries of clusters left with broken hex cells
     /// Per tet, its chart component (tets joined by identity transitions), computed only
     /// when broken cells are reconnected (reconnectBrokenCells()); empty: each tet alone.

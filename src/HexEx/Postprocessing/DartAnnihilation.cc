@@ -6,9 +6,12 @@
 #include "LocalVertexCheck.hh"
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <map>
+#include <memory>
+#include <thread>
 #include <utility>
 
 namespace HexEx {
@@ -79,6 +82,8 @@ private:
     std::vector<std::vector<T>> blocks_;
 };
 
+struct PhasedTwin;
+
 /// The annihilation's state: links, survivors, the saved original links of changed darts
 /// and the vertex groups of the heirs.
 class Annihilator {
@@ -91,19 +96,32 @@ public:
             flag_[d] = static_cast<std::uint8_t>((alive_[d] ? kAlive : 0) | (sign_[d] < 0 ? kAnti : 0) | (sign_[d] > 0 ? kRegular : 0));
     }
 
-    /// The first pass: every anti dart in ascending order, then the re-queued ones. The first
-    /// call lists the anti darts (the retries' orders permute them); the pass then walks that
-    /// list, which visits the darts a scan of all darts for queued anti darts would, in the
-    /// same order (only processed darts leave the queue, and re-queued ones wait for the end
-    /// of the scan), with the links of the darts ahead prefetched.
+    ~Annihilator();
+
+    /// Lists the anti darts alive before the first pass (the retries' orders permute them).
+    void listAntis() {
+        if (!antis_.empty()) return;
+        for (long d = 0; d < n_; ++d)
+            if (isAliveAnti(d)) antis_.push_back(static_cast<int>(d));
+        if (wantHeirs_) pending_.reserve(antis_.size());  // at most one pair per anti dart
+    }
+
+    /// The first pass: every anti dart in ascending order, then the re-queued ones. The pass
+    /// walks the list of anti darts (listAntis()), which visits the darts a scan of all darts
+    /// for queued anti darts would, in the same order (only processed darts leave the queue,
+    /// and re-queued ones wait for the end of the scan), with the links of the darts ahead
+    /// prefetched.
     void runAll() {
-        if (antis_.empty()) {
-            for (long d = 0; d < n_; ++d)
-                if (isAliveAnti(d)) antis_.push_back(static_cast<int>(d));
-            if (wantHeirs_) pending_.reserve(antis_.size());  // at most one pair per anti dart
-        }
+        listAntis();
         run(&antis_);
     }
+
+    /// Starts the phase-by-phase run on a second thread, on copies of the links and
+    /// survivors as they are now (before the first pass), if @p opt asks for it and the map
+    /// has enough anti darts (AnnihilationRetry::threads). Returns once the links are copied.
+    void startTwin(const AnnihilationRetry& opt);
+    /// Stops and drops the phase-by-phase run of startTwin() (the first pass is kept).
+    void dropTwin();
 
     /// Phase by phase: first only partners linked by alpha_0, then alpha_0..1, alpha_0..2 and
     /// all four; in each phase every alive anti dart in ascending order, then the re-queued ones.
@@ -157,9 +175,16 @@ private:
     void touch(long d) {
         if (retries_ && !(F(d) & kSaved)) {
             F(d) |= kSaved;
-            saved_.push_back({static_cast<int>(d), A(d)});
+            // The twin (startTwin()) lists only the darts: their original links are those the
+            // first pass saved, or still in its arrays if it never changed them.
+            if (touchedIds_) touchedIds_->push_back(static_cast<int>(d));
+            else saved_.push_back({static_cast<int>(d), A(d)});
         }
     }
+
+    /// Takes over the twin's phase-by-phase run (startTwin()) in place of restoreAll() and
+    /// runPhased(): false if there is none or it failed.
+    bool takeTwin();
 
     int idOf(long d) {
         if (sameVertex_.parent.empty()) sameVertex_ = UnionFind(idx(n_));
@@ -358,7 +383,85 @@ private:
     // (joinGroups() at the end, collectHeirs()); joinNow_: the run joins at once (step()).
     std::vector<std::pair<int, int>> pending_;
     bool joinNow_ = false;
+    // Only in the twin (startTwin()): the darts it touched, in order (instead of saved_), and
+    // the request to stop.
+    std::vector<int>* touchedIds_ = nullptr;
+    const std::atomic<bool>* stop_ = nullptr;
+    // The phase-by-phase run on a second thread (startTwin()); destroyed first (last member).
+    std::unique_ptr<PhasedTwin> twin_;
 };
+
+/// The phase-by-phase run on a second thread, beside the first pass (AnnihilationRetry::threads):
+/// its own copies of the links and survivors, and the darts it touched in order.
+struct PhasedTwin {
+    std::vector<std::array<int, 4>> alpha;  ///< links (copied before the first pass)
+    std::vector<char> alive;                ///< survivors (the same)
+    std::vector<int> touched;               ///< darts touched, in order of their first change
+    std::unique_ptr<Annihilator> an;        ///< its state after the run
+    std::atomic<bool> stop{false};          ///< set when the first pass is kept
+    bool ok = false;                        ///< the run finished (not stopped, no exception)
+    std::thread thread;
+    ~PhasedTwin() {
+        stop = true;
+        if (thread.joinable()) thread.join();
+    }
+};
+
+Annihilator::~Annihilator() = default;
+
+void Annihilator::startTwin(const AnnihilationRetry& opt) {
+    listAntis();
+    // Worth it where the first pass is long and usually undone (heavy folds: 40 % of the
+    // darts are anti darts on the pig folded by 1.5); a retry must be able to run at all.
+    if (opt.threads < 2 || !retries_ || opt.orders < 1 || opt.patience < 1 || antis_.empty() ||
+        antis_.size() * 8 < static_cast<std::size_t>(n_))
+        return;
+    twin_ = std::make_unique<PhasedTwin>();
+    PhasedTwin& t = *twin_;
+    t.alive = alive_;
+    t.alpha = alpha_;  // before the first pass changes them
+    t.thread = std::thread([this, &t]() {
+        try {
+            t.an = std::make_unique<Annihilator>(t.alpha, sign_, t.alive, wantHeirs_, true, mutual_);
+            Annihilator& b = *t.an;
+            b.touchedIds_ = &t.touched;
+            b.stop_ = &t.stop;
+            b.antis_ = antis_;  // read-only in the first pass
+            b.runPhased();
+            t.ok = !t.stop.load();
+        } catch (...) {
+            t.ok = false;  // a failed twin is not taken: the retry runs as without it
+        }
+    });
+}
+
+void Annihilator::dropTwin() { twin_.reset(); }
+
+bool Annihilator::takeTwin() {
+    if (!twin_) return false;
+    std::unique_ptr<PhasedTwin> t = std::move(twin_);
+    t->thread.join();
+    if (!t->ok) return false;
+    Annihilator& b = *t->an;
+    // The state restoreAll() and runPhased() would leave. Links, survivors, flags and vertex
+    // groups: the twin's (it ran from the same links and survivors as restoreAll() puts
+    // back, in the same way). The saved list: the first pass's entries, then those the
+    // phased run would append, i.e. the darts it touched that the first pass did not,
+    // in the order it touched them, with their original links (the first pass never changed
+    // them, so its arrays still hold them). Every saved dart keeps kSaved.
+    for (int d : t->touched)
+        if (!(F(d) & kSaved)) saved_.push_back({d, A(d)});
+    saved_.forEach([&](const Saved& e) { b.flag_[idx(e.first)] |= kSaved; });
+    alpha_.swap(t->alpha);
+    alive_.swap(t->alive);
+    flag_.swap(b.flag_);
+    sameVertex_.parent.swap(b.sameVertex_.parent);
+    std::vector<std::pair<int, int>>().swap(pending_);
+    joinNow_ = b.joinNow_;
+    pairs = b.pairs;
+    maxLink_ = 3;
+    return true;
+}
 
 void Annihilator::step(long anti, std::deque<long>& requeued) {
     long reg = -1;
@@ -491,7 +594,9 @@ void Annihilator::run(const std::vector<int>* order) {
         requeued.pop_front();
         return d;
     };
+    unsigned steps = 0;
     for (long anti = next(); anti >= 0; anti = next()) {
+        if (stop_ && (++steps & 1023u) == 0 && stop_->load(std::memory_order_relaxed)) return;  // the twin, dropped
         F(anti) &= static_cast<std::uint8_t>(~kQueued);
         if (!isAlive(anti)) continue;
         step(anti, requeued);
@@ -517,6 +622,10 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
     bool best0Exact = !lazy;
     // Variant k: 1 phase by phase (runPhased()), 2 descending, k >= 3 a hashed order.
     auto runVariant = [&](int k) {
+        if (k == 1 && takeTwin()) {  // ran beside the first pass (the first variant tried)
+            st.phased_beside = true;
+            return;
+        }
         restoreAll();
         if (k == 0) {
             runAll();
@@ -644,8 +753,10 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
                                   const std::function<bool(int, int)>& same_place, const AnnihilationRetry& retry, bool mutual_links) {
     AnnihilationStats st;
     Annihilator an(alpha, sign, alive, heirs != nullptr, retry.enabled, mutual_links);
+    if (retry.enabled) an.startTwin(retry);
     an.runAll();
     if (retry.enabled && an.pairs > 0) an.retry(retry, st);
+    an.dropTwin();  // not taken: the first pass is kept
     st.pairs = an.pairs;
     for (std::size_t d = 0; d < alpha.size(); ++d)
         if (alive[d] && sign[d] < 0) ++st.remaining_anti;

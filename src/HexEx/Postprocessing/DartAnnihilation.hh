@@ -26,6 +26,7 @@ struct AnnihilationStats {
     int reordered = 0;            ///< the order kept: 0 the first pass (ascending), 1 phase by phase, 2 descending, k > 2 hashed
     long merged_vertex_runs = 0;  ///< retries that left no broken cell but merged vertices (LocalVertexCheck.hh), ranked below every other
     bool alpha3_only_kept = false; ///< the order kept left broken cells that are hexes once alpha_3 is ignored (AnnihilationRetry::keep_alpha3_only)
+    bool phased_beside = false;   ///< the phase-by-phase run ran beside the first pass and was taken over (AnnihilationRetry::threads)
 };
 
 /// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.
@@ -61,6 +62,13 @@ struct AnnihilationRetry {
     /// eighth round) instead of stopping at the first and counting them all only where a
     /// retry is compared with that count: the same result, more work (for the tests).
     bool exact_first_count = false;
+    /// With 2 or more, a map whose anti darts are at least an eighth of its darts runs the
+    /// first retry (phase by phase) on a second thread beside the first pass, on copies of
+    /// the links and survivors, and takes it over if the first pass leaves a broken cell
+    /// (else it is stopped and dropped): the same result as running it after the first pass
+    /// (Documentation/algorithm.md, "The phase-by-phase run beside the first pass"), at the
+    /// cost of a second copy of the links, survivors and flags while both run.
+    int threads = 1;
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the
