@@ -52,23 +52,46 @@ DartGeometry placementStage(const PlacementInput& in) {
     });
     if (in.heir && !in.heir->empty()) {
         // Removed regular darts with an heir: one extra placed point per (tet, grid point)
-        // run and heir, in dart order.
-        int lastTet = -1, lastHeir = -1;
-        Vec3i lastZ(0, 0, 0);
-        for (const auto& [d, h] : *in.heir) {
-            const Dart& D = ds.darts[static_cast<std::size_t>(d)];
-            const bool flipped = D.sign < 0;
-            if (D.tet == lastTet && samePoint(D.z, lastZ) && h == lastHeir) continue;
-            lastTet = D.tet;
-            lastZ = D.z;
-            lastHeir = h;
-            std::array<int, 3> bhf = {-1, -1, -1};
-            geo.placement.position.push_back(gridPointPosition(*in.mesh, *in.tets, ds, D.tet, D.z, &bhf));
-            geo.placement.boundary_hf.push_back(bhf);
-            geo.placement.extra_dart.push_back(newIndex[static_cast<std::size_t>(h)]);
-            geo.placement.extra_point.push_back(static_cast<int>(geo.placement.position.size()) - 1);
-            geo.placement.extra_flipped.push_back(flipped ? 1 : 0);
-        }
+        // run and heir, in dart order. An entry is left out if it has the tet, point and heir
+        // of the entry before it (equal to the last one kept: every entry left out equals
+        // it), so chunks of the entries decide on their own: counted per chunk, then placed
+        // from the chunk's prefix (the same points in the same order for any thread count).
+        const std::vector<std::pair<int, int>>& heir = *in.heir;
+        auto kept = [&](std::size_t k) {
+            if (k == 0) return true;
+            const Dart& D = ds.darts[static_cast<std::size_t>(heir[k].first)];
+            const Dart& P = ds.darts[static_cast<std::size_t>(heir[k - 1].first)];
+            return !(D.tet == P.tet && samePoint(D.z, P.z) && heir[k].second == heir[k - 1].second);
+        };
+        const std::size_t ne = heir.size();
+        std::vector<std::size_t> keptBefore(static_cast<std::size_t>(threads) + 1, 0);
+        parallelChunks(ne, threads, [&](int k, std::size_t b, std::size_t e) {
+            std::size_t n = 0;
+            for (std::size_t x = b; x < e; ++x) n += kept(x) ? 1 : 0;
+            keptBefore[static_cast<std::size_t>(k) + 1] = n;
+        });
+        for (std::size_t k = 0; k < static_cast<std::size_t>(threads); ++k) keptBefore[k + 1] += keptBefore[k];
+        const std::size_t first = geo.placement.position.size(), extras = keptBefore.back();
+        geo.placement.position.resize(first + extras);
+        geo.placement.boundary_hf.resize(first + extras);
+        geo.placement.extra_dart.resize(extras);
+        geo.placement.extra_point.resize(extras);
+        geo.placement.extra_flipped.resize(extras);
+        parallelChunks(ne, threads, [&](int k, std::size_t b, std::size_t e) {
+            std::size_t x = keptBefore[static_cast<std::size_t>(k)];
+            for (std::size_t q = b; q < e; ++q) {
+                if (!kept(q)) continue;
+                const auto [d, h] = heir[q];
+                const Dart& D = ds.darts[static_cast<std::size_t>(d)];
+                std::array<int, 3> bhf = {-1, -1, -1};
+                geo.placement.position[first + x] = gridPointPosition(*in.mesh, *in.tets, ds, D.tet, D.z, &bhf);
+                geo.placement.boundary_hf[first + x] = bhf;
+                geo.placement.extra_dart[x] = newIndex[static_cast<std::size_t>(h)];
+                geo.placement.extra_point[x] = static_cast<int>(first + x);
+                geo.placement.extra_flipped[x] = D.sign < 0 ? 1 : 0;
+                ++x;
+            }
+        });
     }
     return geo;
 }
