@@ -94,6 +94,9 @@ TEST(HexExFileParallel, ReadsWhatWasWritten) {
     const auto pm = readHexExBuffer(join(lines), "big.hexex");
     expectSameMesh(largeMesh(), pm);
     EXPECT_TRUE(pm.mesh.has_adjacency());
+    // On one thread (chunked parse too) and token by token: the same mesh.
+    expectSameMesh(largeMesh(), readHexExBuffer(join(lines), "big.hexex", nullptr, 1));
+    expectSameMesh(largeMesh(), detail::readHexExBufferTokenByToken(join(lines), "big.hexex", nullptr, 1));
 }
 
 TEST(HexExFileParallel, AnyLayout) {
@@ -172,10 +175,12 @@ TEST(HexExFileParallel, InvertedTetListedWithItsLine) {
                     std::to_string(tetLineIndex(9999) + 1) + ")");
 }
 
-/// Outcome of reading @p text on @p threads threads: the error message, or a digest of the mesh.
-std::string outcomeOf(const std::string& text, int threads) {
+/// Outcome of reading @p text on @p threads threads (with @p tokenByToken, without the
+/// chunked parse): the error message, or a digest of the mesh.
+std::string outcomeOf(const std::string& text, int threads, bool tokenByToken = false) {
     try {
-        const auto pm = readHexExBuffer(text, "big.hexex", nullptr, threads);
+        const auto pm = tokenByToken ? detail::readHexExBufferTokenByToken(text, "big.hexex", nullptr, threads)
+                                     : readHexExBuffer(text, "big.hexex", nullptr, threads);
         std::ostringstream os;
         os.precision(17);
         os << "ok " << pm.mesh.n_vertices() << " " << pm.mesh.n_cells();
@@ -190,8 +195,8 @@ std::string outcomeOf(const std::string& text, int threads) {
 }
 
 TEST(HexExFileParallel, MutatedFilesReadAsSequentially) {
-    // Random byte edits in the tet section: the parallel reader must give exactly what the
-    // sequential one gives (the same mesh, or the same file:line:reason).
+    // Random byte edits in the tet section: the chunked parse, on 1 and 2 threads, must give
+    // exactly what the token-by-token parser gives (the same mesh, or the same file:line:reason).
     const auto lines = largeLines();
     const std::string base = join(lines);
     std::size_t tetStart = 0;
@@ -211,9 +216,12 @@ TEST(HexExFileParallel, MutatedFilesReadAsSequentially) {
             default: t.insert(pos, 1, ch); break;
             }
         }
-        const std::string seq = outcomeOf(t, 1), par = outcomeOf(t, 2);
-        EXPECT_EQ(seq.substr(0, 300), par.substr(0, 300)) << "iteration " << it;
-        EXPECT_EQ(seq, par) << "iteration " << it;
+        const std::string seq = outcomeOf(t, 1, true);
+        for (const int threads : {1, 2}) {
+            const std::string par = outcomeOf(t, threads);
+            EXPECT_EQ(seq.substr(0, 300), par.substr(0, 300)) << "iteration " << it << ", " << threads << " threads";
+            EXPECT_EQ(seq, par) << "iteration " << it << ", " << threads << " threads";
+        }
         if (seq.rfind("ok", 0) == 0) ++accepted;
     }
     EXPECT_LT(accepted, 30);  // most edits are caught
@@ -275,7 +283,8 @@ TEST(HexExFileParallel, ControlBytesAsSequentially) {
         t[5] = t[5] + std::string(1, bad);
         mutated[tetLineIndex(15000)] = joinTokens(t);
         const std::string text = join(mutated);
-        EXPECT_EQ(outcomeOf(text, 1), outcomeOf(text, 2)) << "byte " << int(bad);
+        EXPECT_EQ(outcomeOf(text, 1, true), outcomeOf(text, 1)) << "byte " << int(bad);
+        EXPECT_EQ(outcomeOf(text, 1, true), outcomeOf(text, 2)) << "byte " << int(bad);
         expectError(text, tetLineIndex(15000) + 1, "expected a number for parameter v of corner 0 of tet 15000", 2);
     }
 }

@@ -47,11 +47,19 @@ ParametrizedTetMesh readHexExFile(const std::string& path, ReadReport* report = 
 ParametrizedTetMesh readHexExStream(std::istream& in, const std::string& name, ReadReport* report = nullptr);
 
 /// Reads `.hexex` data held in memory; @p name is used in error messages. Large tet
-/// sections are parsed and the adjacency built on @p threads threads (0 = all hardware
-/// threads, 1 = sequential); the result, and every error message, do not depend on it.
+/// sections are parsed in chunks, in place, and the adjacency built on @p threads threads
+/// (0 = all hardware threads); the result, and every error message, do not depend on it.
 /// @throws InputError as readHexExFile().
 ParametrizedTetMesh readHexExBuffer(std::string_view text, const std::string& name,
                                     ReadReport* report = nullptr, int threads = 0);
+
+namespace detail {
+/// readHexExBuffer() with every tet section read token by token: the parser that words
+/// the error messages (readHexExBuffer() falls back to it on anything unusual) and the
+/// reference that the chunked parse is tested against.
+ParametrizedTetMesh readHexExBufferTokenByToken(std::string_view text, const std::string& name,
+                                                ReadReport* report = nullptr, int threads = 0);
+} // namespace detail
 
 /// Writes @p pm in `.hexex` format to a stream. Doubles are written in the shortest form
 /// that reads back bit-identically.
