@@ -83,6 +83,13 @@ void prefetchStar(const TetMesh& mesh, const CornerParams& params, const Transit
     }
 }
 
+/// Asks the CPU to load the walk's marks of the tets of @p v early (an int per tet, as
+/// scattered as the tets).
+void prefetchMarks(const TetMesh& mesh, const std::vector<int>& mark, VertexHandle v) {
+    auto cells = mesh.vertex_cells(v);
+    for (auto it = cells.first; it != cells.second; ++it) prefetchKept(&mark[static_cast<std::size_t>(*it)]);
+}
+
 /// True if two values of a vertex (in one chart) are the same up to @p epsilon, relative
 /// to their magnitude once above 1.
 bool sameValue(const Vec3d& a, const Vec3d& b, double epsilon) {
@@ -147,7 +154,11 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     std::vector<char> agrees;              // per star entry: agrees with the voted value
     for (std::size_t vi = vbegin; vi < vend; ++vi) {
         const VertexHandle v(static_cast<int>(vi));
-        if (vi + kPrefetchAhead < vend) prefetchStar(mesh, params, tr, VertexHandle(static_cast<int>(vi + kPrefetchAhead)));
+        if (vi + kPrefetchAhead < vend) {
+            const VertexHandle ahead(static_cast<int>(vi + kPrefetchAhead));
+            prefetchStar(mesh, params, tr, ahead);
+            if (!mark.empty()) prefetchMarks(mesh, mark, ahead);
+        }
         auto cells = mesh.vertex_cells(v);
         if (cells.first == cells.second) continue;
         if (sanitizeSimpleVertex(mesh, params, tr, oneChart, v, opt.epsilon, snapped[static_cast<std::size_t>(chunk)])) continue;

@@ -18,9 +18,19 @@ int localIndex(const TetMesh& mesh, CellHandle c, VertexHandle v) {
     return -1;
 }
 
+/// std::lround(x) without the libm call where |x| < 2^52 (elsewhere, NaN included, it calls
+/// it): there the truncation t and the fraction x - t are exact, and halves round away from
+/// zero as in std::lround.
+long roundHalfAway(double x) {
+    if (!(std::fabs(x) < 4503599627370496.0)) return std::lround(x);
+    const long t = static_cast<long>(x);
+    const double f = x - static_cast<double>(t);
+    return f >= 0.5 ? t + 1 : f <= -0.5 ? t - 1 : t;
+}
+
 Vec3i roundVec(const Vec3d& v) {
-    return Vec3i(static_cast<int>(std::lround(v[0])), static_cast<int>(std::lround(v[1])),
-                 static_cast<int>(std::lround(v[2])));
+    return Vec3i(static_cast<int>(roundHalfAway(v[0])), static_cast<int>(roundHalfAway(v[1])),
+                 static_cast<int>(roundHalfAway(v[2])));
 }
 
 /// Per interior face: the candidate rotations (bit mask) and the translation per rotation.
