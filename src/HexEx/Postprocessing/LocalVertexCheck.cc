@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <utility>
 
 namespace HexEx {
 
 namespace {
 
-/// Labels of orbits, filled on demand (one int per dart, -1 unlabelled).
+/// Labels of orbits, filled on demand (one int per dart, -1 unlabelled), and the darts of
+/// each labelled orbit (in the order they were labelled).
 class OrbitLabels {
 public:
     OrbitLabels(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, std::array<int, 3> links)
@@ -23,6 +25,7 @@ public:
             const int x = stack_.back();
             stack_.pop_back();
             if (darts) darts->push_back(x);
+            members_.push_back(x);
             for (int i : links_) {
                 const int p = alpha_[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)];
                 if (p < 0 || p == x || !alive_[static_cast<std::size_t>(p)] || label_[static_cast<std::size_t>(p)] >= 0) continue;
@@ -30,7 +33,13 @@ public:
                 stack_.push_back(p);
             }
         }
+        start_.push_back(static_cast<int>(members_.size()));
         return id;
+    }
+
+    /// The darts of orbit @p label (labelled before).
+    std::pair<const int*, const int*> darts(int label) const {
+        return {members_.data() + start_[static_cast<std::size_t>(label)], members_.data() + start_[static_cast<std::size_t>(label) + 1]};
     }
 
 private:
@@ -39,6 +48,8 @@ private:
     const std::array<int, 3> links_;
     std::vector<int> label_;
     std::vector<int> stack_;
+    std::vector<int> members_;     // darts of the orbits, label after label
+    std::vector<int> start_{0};    // per label: first of its darts in members_
     int next_ = 0;
 };
 
@@ -57,15 +68,11 @@ long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const 
         if (static_cast<std::size_t>(v) >= vertexDone.size()) vertexDone.resize(static_cast<std::size_t>(v) + 1, 0);
         if (vertexDone[static_cast<std::size_t>(v)]) continue;
         vertexDone[static_cast<std::size_t>(v)] = 1;
-        if (atVertex.empty()) {  // labelled earlier as the corner of a quad: list its darts now
-            // (a vertex has a few dozen darts: a linear search keeps the list free of repeats)
-            atVertex.push_back(s);
-            for (std::size_t k = 0; k < atVertex.size(); ++k)
-                for (int i = 1; i < 4; ++i) {
-                    const int p = alpha[static_cast<std::size_t>(atVertex[k])][static_cast<std::size_t>(i)];
-                    if (p < 0 || !alive[static_cast<std::size_t>(p)] || std::find(atVertex.begin(), atVertex.end(), p) != atVertex.end()) continue;
-                    atVertex.push_back(p);
-                }
+        if (atVertex.empty()) {  // labelled earlier as the corner of a quad: its darts were listed then
+            // (the same set as a search of its orbit from s; the order does not matter: each
+            // quad is looked at once, and what is counted depends only on its vertex set)
+            const auto range = vertex.darts(v);
+            atVertex.assign(range.first, range.second);
         }
         for (int x : atVertex) {
             inFace.clear();
