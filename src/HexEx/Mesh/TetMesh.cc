@@ -238,9 +238,13 @@ void TetMesh::build_adjacency(int threads) {
     ec_idx_.resize(static_cast<std::size_t>(incidences[nv]));
     boundary_edge_.resize(ne);
     boundary_vertex_.resize(nv);
-    parallelChunks(nv, vchunks, [&](int, std::size_t b, std::size_t e) {
+    // Per chunk: its first non-manifold edge and vertex (what check_manifold() reports).
+    std::vector<std::array<long long, 2>> firstBad(static_cast<std::size_t>(std::max(1, vchunks)), {-1, -1});
+    parallelChunks(nv, vchunks, [&](int chunk, std::size_t b, std::size_t e) {
         std::vector<int> slot(nv, -1);  // slot[w]: w's place among the larger neighbours of the current v
-        std::vector<int> nbrs, count, start, startHf;
+        std::vector<int> nbrs, count, start, startHf, stack;
+        std::vector<int> mark(nc, -1);  // mark[c] == v: tet c reached in the walk over v's star
+        long long badEdge = -1, badVertex = -1;
         for (std::size_t v = b; v < e; ++v) {
             if (v + kStarAhead < e) {
                 const int* aheadBegin = vc_idx_.data() + vc_off_[v + kStarAhead];
@@ -248,6 +252,7 @@ void TetMesh::build_adjacency(int threads) {
                 prefetchStar(aheadBegin, aheadEnd, cells_.data(), 1);
                 prefetchStar(aheadBegin, aheadEnd, opposite_.data(), 4);
                 prefetchStar(aheadBegin, aheadEnd, cell_edges_.data(), 6);
+                prefetchStar(aheadBegin, aheadEnd, mark.data(), 1);
             }
             const int vi = static_cast<int>(v);
             const int* const starBegin = vc_idx_.data() + vc_off_[v];
@@ -320,68 +325,57 @@ void TetMesh::build_adjacency(int threads) {
                     inHf = next;
                 }
                 // A non-manifold edge leaves slots unfilled; check_manifold() reports it.
+                if (pos < end && badEdge < 0) badEdge = static_cast<long long>(id);
                 for (; pos < end; ++pos) ec_idx_[static_cast<std::size_t>(pos)] = -1;
             }
+            // The star must be connected through faces that contain v (a disk or sphere link),
+            // checked while its tets are in the cache.
+            if (badVertex < 0 && starBegin != starEnd) {
+                int reached = 0;
+                stack.assign(1, *starBegin);
+                mark[static_cast<std::size_t>(*starBegin)] = vi;
+                while (!stack.empty()) {
+                    const std::size_t c = static_cast<std::size_t>(stack.back());
+                    stack.pop_back();
+                    ++reached;
+                    for (int j = 0; j < 4; ++j) {
+                        if (cells_[c][j].idx() == vi) continue;  // the face opposite v does not contain it
+                        const int opp = opposite_[4 * c + static_cast<std::size_t>(j)];
+                        if (opp >= 0 && mark[static_cast<std::size_t>(opp / 4)] != vi) {
+                            mark[static_cast<std::size_t>(opp / 4)] = vi;
+                            stack.push_back(opp / 4);
+                        }
+                    }
+                }
+                if (reached != starEnd - starBegin) badVertex = static_cast<long long>(v);
+            }
         }
+        firstBad[static_cast<std::size_t>(chunk)] = {badEdge, badVertex};
     });
+    // Chunks are in vertex order and edges numbered in it: the first found is the first.
+    first_bad_edge_ = first_bad_vertex_ = -1;
+    for (const auto& f : firstBad) {
+        if (first_bad_edge_ < 0) first_bad_edge_ = f[0];
+        if (first_bad_vertex_ < 0) first_bad_vertex_ = f[1];
+    }
 
     adjacency_built_ = true;
 }
 
-std::string TetMesh::check_manifold(int threads) const {
+std::string TetMesh::check_manifold(int) const {
     std::ostringstream os;
-    for (std::size_t e = 0; e < edges_.size(); ++e)
-        for (int o = ec_off_[e]; o < ec_off_[e + 1]; ++o)
-            if (ec_idx_[o] < 0) {
-                os << "non-manifold edge " << e << " (" << edges_[e][0] << ", " << edges_[e][1]
-                   << "): its tets do not form a single fan";
-                return os.str();
-            }
-    // Vertex stars must be connected through faces that contain the vertex. Vertices in
-    // parallel chunks (each with its own marks); the first bad vertex of the first chunk
-    // that has one is reported, i.e. the first in vertex order, for any thread count.
-    const std::size_t nv = positions_.size();
-    const int chunks = nv < 20000 ? 1 : resolveThreadCount(threads);
-    std::vector<long long> firstBad(static_cast<std::size_t>(std::max(1, chunks)), -1);
-    parallelChunks(nv, chunks, [&](int chunk, std::size_t vb, std::size_t ve) {
-        std::vector<int> stack, mark(cells_.size(), -1);
-        for (std::size_t v = vb; v < ve; ++v) {
-            if (v + kStarAhead < ve) {
-                const int* aheadBegin = vc_idx_.data() + vc_off_[v + kStarAhead];
-                const int* aheadEnd = vc_idx_.data() + vc_off_[v + kStarAhead + 1];
-                prefetchStar(aheadBegin, aheadEnd, cells_.data(), 1);
-                prefetchStar(aheadBegin, aheadEnd, opposite_.data(), 4);
-            }
-            const int first = vc_off_[v], last = vc_off_[v + 1];
-            if (first == last) continue;
-            int reached = 0;
-            stack.assign(1, vc_idx_[first]);
-            mark[vc_idx_[first]] = static_cast<int>(v);
-            while (!stack.empty()) {
-                const int c = stack.back();
-                stack.pop_back();
-                ++reached;
-                for (int j = 0; j < 4; ++j) {
-                    if (cells_[c][j].idx() == static_cast<int>(v)) continue;  // face opposite v does not contain it
-                    const int opp = opposite_[4 * c + j];
-                    if (opp >= 0 && mark[opp / 4] != static_cast<int>(v)) {
-                        mark[opp / 4] = static_cast<int>(v);
-                        stack.push_back(opp / 4);
-                    }
-                }
-            }
-            if (reached != last - first) {
-                firstBad[static_cast<std::size_t>(chunk)] = static_cast<long long>(v);
-                return;
-            }
-        }
-    });
-    for (const long long v : firstBad)
-        if (v >= 0) {
-            os << "non-manifold vertex " << v << ": its " << (vc_off_[v + 1] - vc_off_[v])
-               << " tets form more than one connected fan";
-            return os.str();
-        }
+    if (first_bad_edge_ >= 0) {
+        const std::size_t e = static_cast<std::size_t>(first_bad_edge_);
+        os << "non-manifold edge " << e << " (" << edges_[e][0] << ", " << edges_[e][1]
+           << "): its tets do not form a single fan";
+        return os.str();
+    }
+    if (first_bad_vertex_ >= 0) {
+        const std::size_t v = static_cast<std::size_t>(first_bad_vertex_);
+        os << "non-manifold vertex " << v << ": its " << (vc_off_[v + 1] - vc_off_[v])
+           << " tets form more than one connected fan";
+        return os.str();
+    }
     return {};
 }
 

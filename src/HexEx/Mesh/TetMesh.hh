@@ -125,9 +125,10 @@ public:
 
     /// A description of the first manifoldness violation found, empty if the mesh is a
     /// 3-manifold with boundary (every face in at most two tets, every edge link a path or
-    /// cycle, every vertex link a disk or sphere). Requires adjacency. The vertex stars are
-    /// checked on @p threads threads (0 = all hardware threads); the result does not
-    /// depend on the thread count.
+    /// cycle, every vertex link a disk or sphere): the first non-manifold edge, else the
+    /// first non-manifold vertex. Requires adjacency. The edges and vertex stars are checked
+    /// by build_adjacency() (on its threads, while the stars are in the cache), so this only
+    /// words the result; @p threads has no effect (kept for the callers that pass it).
     std::string check_manifold(int threads = 1) const;
 
     /// Vertex properties.
@@ -151,6 +152,8 @@ private:
     std::vector<int> vc_off_, vc_idx_, ec_off_, ec_idx_, ve_off_, ve_idx_;
     std::vector<char> boundary_vertex_, boundary_edge_;
     std::size_t n_boundary_faces_ = 0;
+    long long first_bad_edge_ = -1;    // first edge whose tets do not form a single fan, or -1
+    long long first_bad_vertex_ = -1;  // first vertex whose star is not connected through its faces, or -1
     PropertyManager<VertexTag> vprops_;
     PropertyManager<CellTag> cprops_;
     PropertyManager<HalfFaceTag> hfprops_;
