@@ -106,23 +106,26 @@ struct TwinFaces {
     /// it is not found. The cells are unit cells of boxes with corners c, c + X, c + X + Y,
     /// c + Y, c + Z, ... (Z = 1), in increasing corner 0: the neighbour across face 1 (+z), 3
     /// (+x), 4 (+y) is the cell whose corner 0 is corner 4, 1, 3 of this one, at most that
-    /// many occurrences, hence cells, further on; its face 0, 5, 2 is the twin.
-    long partner(std::size_t h, int f) const {
-        if (!corners || corners->size() != twins->size()) return -1;
+    /// many occurrences, hence cells, further on; its face 0, 5, 2 is the twin. @p hint is
+    /// the cell index found last for this face (the next cell's partner is usually the next
+    /// cell): tried first, then a binary search; updated. Needs corners (checked by the caller).
+    long partner(std::size_t h, int f, std::size_t& hint) const {
         const auto& C = *corners;
         const std::size_t i = h - first;
         const int c0 = C[i][0];
         const int target = f == 1 ? C[i][4] : f == 3 ? C[i][1] : C[i][3];
         const int opposite = f == 1 ? 0 : f == 3 ? 5 : 2;
         if (target <= c0) return -1;
-        // Binary search for corner 0 == target in (i, i + (target - c0)].
+        // Corner 0 == target in (i, i + (target - c0)]: the hint's next cell, else a binary search.
         std::size_t lo = i + 1, hi = std::min(C.size(), i + 1 + static_cast<std::size_t>(target - c0));
+        if (hint + 1 >= lo && hint + 1 < hi && C[hint + 1][0] == target) lo = hi = hint + 1;
         while (lo < hi) {
             const std::size_t mid = lo + (hi - lo) / 2;
             if (C[mid][0] < target) lo = mid + 1;
             else hi = mid;
         }
         if (lo >= C.size() || C[lo][0] != target || !(((*twins)[lo] >> opposite) & 1u)) return -1;
+        hint = lo;
         return 6 * static_cast<long>(first + lo) + opposite;
     }
 };
@@ -151,8 +154,9 @@ inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
 ///
 /// With @p nb (6 entries per hex) every face of a valid hex gets its neighbour face item, or -1
 /// on the boundary (quads in more than two hexes: unspecified); a filed twin face and its
-/// partner are paired by TwinFaces::partner(). QuadPass::neighbours_complete says whether
-/// every face got an entry.
+/// partner are paired by TwinFaces::partner() in a pass over the twin hexes. Whether every
+/// face got an entry: QuadPass::neighbours_complete and twin_pairs_found against
+/// twin_faces_skipped.
 template <class Item>
 QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int* nb) {
     QuadPass r;
@@ -196,6 +200,36 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
     for (const long n : repeated) r.repeated_corner_hexes += n;
     for (const long n : skippedTwins) r.twin_faces_skipped += n;
     if (tw.twins && r.repeated_corner_hexes > 0) return r;
+    // The twin pairs' neighbour entries, cell by cell (the partners of consecutive cells are
+    // mostly consecutive): every filed twin face and its partner. The quad groups below leave
+    // these entries alone (a filed twin face alone in its group is such a pair).
+    if (nb && tw.twins) {
+        const std::size_t nTwins = tw.corners && tw.corners->size() == tw.twins->size() ? tw.twins->size() : 0;
+        if (nTwins != tw.twins->size()) r.neighbours_complete = false;
+        std::vector<long> found(static_cast<std::size_t>(chunks), 0);
+        std::vector<char> missed(static_cast<std::size_t>(chunks), 0);
+        parallelChunks(nTwins, chunks, [&](int k, std::size_t b, std::size_t e) {
+            std::size_t hint[6] = {b, b, b, b, b, b};
+            for (std::size_t i = b; i < e; ++i) {
+                const std::size_t h = tw.first + i;
+                const unsigned filed = tw.of(h) & kTwinFiled;
+                for (unsigned m = filed; m != 0; m &= m - 1) {
+                    const int f = __builtin_ctz(m);
+                    const long t = tw.partner(h, f, hint[f]);
+                    if (t < 0) {
+                        missed[static_cast<std::size_t>(k)] = 1;
+                        continue;
+                    }
+                    nb[6 * h + static_cast<std::size_t>(f)] = static_cast<int>(t);
+                    nb[static_cast<std::size_t>(t)] = static_cast<int>(6 * h + static_cast<std::size_t>(f));
+                    ++found[static_cast<std::size_t>(k)];
+                }
+            }
+        });
+        for (const long n : found) r.twin_pairs_found += n;
+        for (const char x : missed)
+            if (x) r.neighbours_complete = false;
+    }
     // Bucket starts, and each chunk's first slot in every bucket (counts turned into offsets).
     for (long v = 0; v < nv; ++v) {
         Item at = start[static_cast<std::size_t>(v)];
@@ -226,8 +260,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
     // Per chunk of vertices: counts and the boundary quads in vertex order, concatenated in
     // chunk order (and part order).
     struct ChunkQuads {
-        long quads = 0, boundary_quads = 0, shared_by_more = 0, twin_pairs = 0;
-        bool unresolved = false;  // a filed twin face whose partner was not found
+        long quads = 0, boundary_quads = 0, shared_by_more = 0;
         std::vector<long> boundary;
     };
     std::vector<ChunkQuads> parts(static_cast<std::size_t>(chunks) * static_cast<std::size_t>(nParts));
@@ -291,16 +324,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
                             nb[b] = static_cast<int>(a);
                         } else if (j - i == 1 && n == 1) {
                             nb[a] = -1;
-                        } else if (j - i == 1 && n == 2) {
-                            const long t = tw.partner(a / 6, static_cast<int>(a % 6));
-                            if (t < 0) {
-                                part.unresolved = true;
-                            } else {
-                                nb[a] = static_cast<int>(t);
-                                nb[static_cast<std::size_t>(t)] = static_cast<int>(a);
-                                ++part.twin_pairs;
-                            }
-                        }
+                        }  // a filed twin face alone (n == 2): written with its partner above
                     }
                     i = j;
                 }
@@ -311,8 +335,6 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
         r.quads += part.quads;
         r.boundary_quads += part.boundary_quads;
         r.shared_by_more += part.shared_by_more;
-        r.twin_pairs_found += part.twin_pairs;
-        if (part.unresolved) r.neighbours_complete = false;
         r.boundary.insert(r.boundary.end(), part.boundary.begin(), part.boundary.end());
         std::vector<long>().swap(part.boundary);
     }
