@@ -343,10 +343,15 @@ int runExtract(const Args& args) {
     opt.progress = [&](const std::string& phase, double f) { progress.update(phase, f); };
     HexEx::HexMesh hm;
     HexEx::ExtractionReport rep;
+    // The .ovm/.ovmb writers number the faces from the assembly's face neighbours (the same
+    // bytes; the writer checks that the table is the one of the mesh it writes).
+    const HexEx::HexMeshFormat outFormat = HexEx::hexMeshFormatFromPath(output);
+    const bool ovmOut = outFormat == HexEx::HexMeshFormat::Ovm || outFormat == HexEx::HexMeshFormat::Ovmb;
+    HexEx::HexFaceNeighbours neighbours;
     try {
         // The parameters are not needed afterwards (the untangler uses the tet mesh's boundary
         // only): the pipeline takes them over instead of copying them (96 bytes per tet).
-        rep = HexEx::extractHexMesh(std::move(pm), hm, opt);
+        rep = HexEx::extractHexMesh(std::move(pm), hm, opt, ovmOut && !untangle ? &neighbours : nullptr);
     } catch (const HexEx::InputError& e) {
         progress.finish();
         std::cerr << "hexex extract: error: " << (input == "-" ? std::string("<stdin>") : input) << ": " << e.what()
@@ -410,7 +415,7 @@ int runExtract(const Args& args) {
             return false;
         }
     };
-    if (!write([&] { return HexEx::writeHexMesh(output, hm, encoding, opt.threads); })) return 2;
+    if (!write([&] { return HexEx::writeHexMesh(output, hm, encoding, opt.threads, &neighbours); })) return 2;
     if (!surface_path.empty()) {
         if (!write([&] { return HexEx::writeBoundarySurface(surface_path, hm); })) return 2;
         if (!quiet) std::cerr << "hexex extract: wrote the boundary surface to " << surface_path << "\n";
