@@ -11,6 +11,8 @@
 #include <deque>
 #include <map>
 #include <memory>
+#include <new>
+#include <system_error>
 #include <thread>
 #include <utility>
 
@@ -416,23 +418,34 @@ void Annihilator::startTwin(const AnnihilationRetry& opt) {
     if (opt.threads < 2 || !retries_ || opt.orders < 1 || opt.patience < 1 || antis_.empty() ||
         antis_.size() * 8 < static_cast<std::size_t>(n_))
         return;
-    twin_ = std::make_unique<PhasedTwin>();
+    // The twin is optional: where its copies cannot be allocated or its thread cannot be
+    // started, the retries run one after the other as without it.
+    try {
+        twin_ = std::make_unique<PhasedTwin>();
+        twin_->alive = alive_;
+        twin_->alpha = alpha_;  // before the first pass changes them
+    } catch (const std::bad_alloc&) {
+        twin_.reset();
+        return;
+    }
     PhasedTwin& t = *twin_;
-    t.alive = alive_;
-    t.alpha = alpha_;  // before the first pass changes them
-    t.thread = std::thread([this, &t]() {
-        try {
-            t.an = std::make_unique<Annihilator>(t.alpha, sign_, t.alive, wantHeirs_, true, mutual_);
-            Annihilator& b = *t.an;
-            b.touchedIds_ = &t.touched;
-            b.stop_ = &t.stop;
-            b.antis_ = antis_;  // read-only in the first pass
-            b.runPhased();
-            t.ok = !t.stop.load();
-        } catch (...) {
-            t.ok = false;  // a failed twin is not taken: the retry runs as without it
-        }
-    });
+    try {
+        t.thread = std::thread([this, &t]() {
+            try {
+                t.an = std::make_unique<Annihilator>(t.alpha, sign_, t.alive, wantHeirs_, true, mutual_);
+                Annihilator& b = *t.an;
+                b.touchedIds_ = &t.touched;
+                b.stop_ = &t.stop;
+                b.antis_ = antis_;  // read-only in the first pass
+                b.runPhased();
+                t.ok = !t.stop.load();
+            } catch (...) {
+                t.ok = false;  // a failed twin is not taken: the retry runs as without it
+            }
+        });
+    } catch (const std::system_error&) {
+        twin_.reset();  // no thread: nothing runs on the copies
+    }
 }
 
 void Annihilator::dropTwin() { twin_.reset(); }
