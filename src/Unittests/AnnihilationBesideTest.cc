@@ -5,6 +5,8 @@
 // later orders that restore the darts both runs changed, the first pass kept after all).
 #include "../TestSupport/RandomAnnihilationMaps.hh"
 
+#include <HexEx/Pipeline/AnnihilateStage.hh>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -96,4 +98,38 @@ TEST(AnnihilationBeside, DroppedWhenTheFirstPassLeavesNoBrokenCell) {
     EXPECT_EQ(two.stats.retry_runs, 0);
     EXPECT_FALSE(two.stats.phased_beside);
     EXPECT_EQ(std::count(two.alive.begin(), two.alive.end(), 1), 20000);
+}
+
+TEST(AnnihilationBeside, TheStageRunsItOnlyWhenAskedAndWithTheSameResult) {
+    // annihilateStage() passes its thread count on unless AnnihilateInput::phased_beside is
+    // off (callers short of memory); either way the survivors, heirs and counters are the same.
+    int taken = 0;
+    for (unsigned seed = 1; seed <= 20; ++seed) {
+        const RandomDartMap m = randomMutualDartMap(400, seed);
+        long anti = 0;
+        for (const signed char s : m.sign) anti += s < 0 ? 1 : 0;
+        AnnihilateOutput out[2];
+        AnnihilationLinks links[2];
+        for (int beside = 0; beside < 2; ++beside) {
+            links[beside] = m.alpha;
+            AnnihilateInput in;
+            in.alpha = &links[beside];
+            in.sign = &m.sign;
+            in.anti = anti;
+            in.threads = 2;
+            in.retry.enabled = true;
+            in.mutual_links = true;
+            in.phased_beside = beside == 1;
+            out[beside] = annihilateStage(in);
+        }
+        EXPECT_FALSE(out[0].stats.phased_beside) << "seed " << seed;
+        taken += out[1].stats.phased_beside ? 1 : 0;
+        EXPECT_EQ(links[0], links[1]) << "seed " << seed;
+        EXPECT_EQ(out[0].alive, out[1].alive) << "seed " << seed;
+        EXPECT_EQ(out[0].heir, out[1].heir) << "seed " << seed;
+        EXPECT_EQ(out[0].new_index, out[1].new_index) << "seed " << seed;
+        EXPECT_EQ(out[0].stats.reordered, out[1].stats.reordered) << "seed " << seed;
+        EXPECT_EQ(out[0].stats.broken_cells_after, out[1].stats.broken_cells_after) << "seed " << seed;
+    }
+    EXPECT_GT(taken, 10);
 }

@@ -28,7 +28,7 @@ AnnihilateOutput annihilateStage(const AnnihilateInput& in) {
         // Cells still broken after the phase-by-phase retry: regroup their darts into cubes and
         // re-link them; if that leaves none broken, the other orders are not tried.
         AnnihilationRetry retry = in.retry;
-        retry.threads = in.threads;  // the phase-by-phase retry beside the first pass (same result)
+        retry.threads = in.phased_beside ? in.threads : 1;  // the phase-by-phase retry beside the first pass (same result)
         if (retry.enabled && in.darts)
             retry.repair = [&](const std::vector<int>& broken) {
                 std::vector<std::pair<int, std::array<int, 4>>> undo;
