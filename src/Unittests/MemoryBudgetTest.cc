@@ -72,6 +72,19 @@ TEST(MemoryBudget, DefaultBudgetIsHalfTheAvailableMemory) {
     EXPECT_LE(budget, std::max<std::uint64_t>(avail / 2 + (1ull << 20), 64ull << 20));
 }
 
+TEST(MemoryBudget, OptionalWorkFitsOnlyWithinTheBudget) {
+    MemoryEstimate est;
+    est.bytes = 300e6;
+    EXPECT_TRUE(budgetAllows(est, 1e12));  // no budget: everything fits
+    est.budget = 400000000;
+    EXPECT_TRUE(budgetAllows(est, 100e6));
+    EXPECT_FALSE(budgetAllows(est, 100e6 + 1));
+    // The annihilation's run beside the first pass on 3.76M darts (pig 1.5 seed 21): 120 MB more.
+    EXPECT_FALSE(budgetAllows(est, kBytesPerPhasedTwinDart * 3.76e6));
+    est.budget = 512ull << 20;
+    EXPECT_TRUE(budgetAllows(est, kBytesPerPhasedTwinDart * 3.76e6));
+}
+
 TEST(MemoryBudget, EstimateIs48DartsPerCellOfSmallTets) {
     ParametrizedTetMesh pm = generateCube(2, 3);  // 48 tets of 27/48 cells each: no dense boxes
     pm.mesh.build_adjacency();

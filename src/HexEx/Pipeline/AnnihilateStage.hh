@@ -38,7 +38,8 @@ struct AnnihilateInput {
     /// With 2 or more threads, run the phase-by-phase retry beside the first pass
     /// (AnnihilationRetry::threads): the same result, sooner on a free second core, but both
     /// runs hold their own links meanwhile (pig 1.5 seed 21: peak 371 -> 480 MB). False: one
-    /// after the other, as on one thread (for callers short of memory).
+    /// after the other, as on one thread (for callers short of memory; extractHexMesh() sets
+    /// it only where budgetAllows() the kBytesPerPhasedTwinDart per dart).
     bool phased_beside = true;
 };
 

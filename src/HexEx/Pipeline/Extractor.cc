@@ -96,6 +96,9 @@ ExtractionReport runPipeline(const ParametrizedTetMesh& input, CornerParams* own
     AnnihilateInput annihilateIn{&links.alpha, &darts.sign, opt.merge, darts.anti, &darts.darts, threads, {}, {}};
     annihilateIn.retry.enabled = opt.annihilation_retries && !implicit;
     annihilateIn.mutual_links = true;  // connectStage() keeps only mutual links
+    // The run beside the first pass only saves time; it holds a second copy of the links.
+    annihilateIn.phased_beside =
+        budgetAllows(state.estimate, kBytesPerPhasedTwinDart * static_cast<double>(darts.darts.darts.size()));
     annihilateIn.chart_components = [&]() { return identityChartComponents(mesh, pre.transitions); };
     AnnihilateOutput survivors = annihilateStage(annihilateIn);
     addToReport(survivors, rep);

@@ -85,4 +85,8 @@ void checkMemoryBudget(const MemoryEstimate& est) {
                                       &est));
 }
 
+bool budgetAllows(const MemoryEstimate& est, double extra_bytes) {
+    return est.budget == 0 || est.bytes + extra_bytes <= static_cast<double>(est.budget);
+}
+
 } // namespace HexEx
