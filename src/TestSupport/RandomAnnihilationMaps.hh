@@ -70,6 +70,35 @@ inline AnnihilationOutcome runAnnihilation(const RandomDartMap& m, const HexEx::
     return o;
 }
 
+/// One way the retries can be set up; @p repairAt > 0: a repair callback that "succeeds"
+/// (without changing anything) when the phase-by-phase run leaves at most that many
+/// broken-cell darts, so that some runs are kept without a comparison.
+struct RetrySetup {
+    int orders, patience;
+    bool alpha3Only;
+    std::size_t repairAt;
+};
+
+/// The setups the comparison tests run every map with: many and few orders, every way a
+/// retry can end (kept at once, repaired, compared with later orders).
+inline const std::vector<RetrySetup>& retrySetups() {
+    static const std::vector<RetrySetup> setups = {{16, 6, true, 0},   {16, 6, false, 0},  {3, 1, false, 0},
+                                                   {1, 6, true, 0},    {16, 6, true, 200}, {4, 2, false, 400}};
+    return setups;
+}
+
+/// The retry options of @p s (enabled; the other options at their defaults).
+inline HexEx::AnnihilationRetry retryOptions(const RetrySetup& s) {
+    HexEx::AnnihilationRetry retry;
+    retry.enabled = true;
+    retry.orders = s.orders;
+    retry.patience = s.patience;
+    retry.keep_alpha3_only = s.alpha3Only;
+    const std::size_t repairAt = s.repairAt;
+    if (repairAt > 0) retry.repair = [repairAt](const std::vector<int>& broken) { return broken.size() <= repairAt; };
+    return retry;
+}
+
 /// Expects the same links, survivors, heirs and counters of @p a and @p b (map @p seed in the
 /// messages); AnnihilationStats::broken_cells_before only if @p with_first_count.
 inline void expectSameAnnihilation(const AnnihilationOutcome& a, const AnnihilationOutcome& b, unsigned seed,

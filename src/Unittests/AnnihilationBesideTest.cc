@@ -18,33 +18,19 @@ using namespace HexExTestSupport;
 
 namespace {
 
-/// One way the retries can be set up (as in AnnihilationFirstCountTest); @p repairAt > 0: a
-/// repair that "succeeds" when the phase-by-phase run leaves at most that many broken-cell darts.
-struct RetrySetup {
-    int orders, patience;
-    bool alpha3Only;
-    std::size_t repairAt;
-};
-
 AnnihilationOutcome annihilate(const RandomDartMap& m, const RetrySetup& s, int threads) {
-    AnnihilationRetry retry;
-    retry.enabled = true;
-    retry.orders = s.orders;
-    retry.patience = s.patience;
-    retry.keep_alpha3_only = s.alpha3Only;
+    AnnihilationRetry retry = retryOptions(s);
     retry.threads = threads;
-    if (s.repairAt > 0) retry.repair = [&s](const std::vector<int>& broken) { return broken.size() <= s.repairAt; };
     return runAnnihilation(m, retry, true);
 }
 
 } // namespace
 
 TEST(AnnihilationBeside, SameResultAsOneThreadOnRandomMaps) {
-    const RetrySetup setups[] = {{16, 6, true, 0}, {16, 6, false, 0}, {3, 1, false, 0}, {1, 6, true, 0}, {16, 6, true, 200}, {4, 2, false, 400}};
     long taken = 0, dropped = 0, laterOrders = 0, firstKeptAfterAll = 0;
     for (unsigned seed = 1; seed <= 80; ++seed) {
         const RandomDartMap m = randomMutualDartMap(250 + static_cast<int>(seed % 5) * 60, seed);
-        for (const RetrySetup& s : setups) {
+        for (const RetrySetup& s : retrySetups()) {
             const AnnihilationOutcome one = annihilate(m, s, 1);
             EXPECT_FALSE(one.stats.phased_beside) << "seed " << seed;
             for (const int threads : {2, 3}) {

@@ -14,34 +14,19 @@ using namespace HexExTestSupport;
 
 namespace {
 
-/// One way the retries can be set up; @p repairAt > 0: a repair callback that "succeeds"
-/// (without changing anything) when the phase-by-phase run leaves at most that many
-/// broken-cell darts, so that some runs are kept without a comparison.
-struct RetrySetup {
-    int orders, patience;
-    bool alpha3Only;
-    std::size_t repairAt;
-};
-
 AnnihilationOutcome annihilate(const RandomDartMap& m, const RetrySetup& s, bool exact) {
-    AnnihilationRetry retry;
-    retry.enabled = true;
-    retry.orders = s.orders;
-    retry.patience = s.patience;
-    retry.keep_alpha3_only = s.alpha3Only;
+    AnnihilationRetry retry = retryOptions(s);
     retry.exact_first_count = exact;
-    if (s.repairAt > 0) retry.repair = [&s](const std::vector<int>& broken) { return broken.size() <= s.repairAt; };
     return runAnnihilation(m, retry, true);
 }
 
 } // namespace
 
 TEST(AnnihilationFirstCount, SameResultAsCountingEveryBrokenCellAtOnce) {
-    const RetrySetup setups[] = {{16, 6, true, 0}, {16, 6, false, 0}, {3, 1, false, 0}, {1, 6, true, 0}, {16, 6, true, 200}, {4, 2, false, 400}};
     long stoppedEarly = 0, countedLater = 0, firstKept = 0, othersKept = 0;
     for (unsigned seed = 1; seed <= 120; ++seed) {
         const RandomDartMap m = randomMutualDartMap(250 + static_cast<int>(seed % 5) * 60, seed);
-        for (const RetrySetup& s : setups) {
+        for (const RetrySetup& s : retrySetups()) {
             const AnnihilationOutcome exact = annihilate(m, s, true);
             const AnnihilationOutcome lazy = annihilate(m, s, false);
             expectSameAnnihilation(exact, lazy, seed, false);
