@@ -15,8 +15,10 @@ public:
     OrbitLabels(const std::vector<std::array<int, 4>>& alpha, const std::vector<char>& alive, std::array<int, 3> links)
         : alpha_(alpha), alive_(alive), links_(links), label_(alpha.size(), -1) {}
 
-    /// The label of @p d's orbit; labels the orbit (and appends its darts to @p darts, if given) the first time.
-    int of(int d, std::vector<int>* darts = nullptr) {
+    /// The label of @p d's orbit; labels the orbit (its darts listed for darts()) the first
+    /// time, and then sets @p fresh (if given).
+    int of(int d, bool* fresh = nullptr) {
+        if (fresh) *fresh = label_[static_cast<std::size_t>(d)] < 0;
         if (label_[static_cast<std::size_t>(d)] >= 0) return label_[static_cast<std::size_t>(d)];
         const int id = next_++;
         stack_.assign(1, d);
@@ -24,7 +26,6 @@ public:
         while (!stack_.empty()) {
             const int x = stack_.back();
             stack_.pop_back();
-            if (darts) darts->push_back(x);
             members_.push_back(x);
             for (int i : links_) {
                 const int p = alpha_[static_cast<std::size_t>(x)][static_cast<std::size_t>(i)];
@@ -59,30 +60,29 @@ long countMergedVertexQuads(const std::vector<std::array<int, 4>>& alpha, const 
     OrbitLabels vertex(alpha, alive, {{1, 2, 3}}), face(alpha, alive, {{0, 1, 3}});
     std::vector<std::array<int, 4>> quads;        // sorted vertex labels of each quad looked at (once per face)
     std::vector<char> vertexDone;                 // per vertex label: its quads were looked at
-    std::vector<int> atVertex, inFace;
+    std::vector<int> atVertex;
     long merged = 0;
     for (int s : seeds) {
         if (s < 0 || !alive[static_cast<std::size_t>(s)]) continue;
-        atVertex.clear();
-        const int v = vertex.of(s, &atVertex);
+        const int v = vertex.of(s);
         if (static_cast<std::size_t>(v) >= vertexDone.size()) vertexDone.resize(static_cast<std::size_t>(v) + 1, 0);
         if (vertexDone[static_cast<std::size_t>(v)]) continue;
         vertexDone[static_cast<std::size_t>(v)] = 1;
-        if (atVertex.empty()) {  // labelled earlier as the corner of a quad: its darts were listed then
-            // (the same set as a search of its orbit from s; the order does not matter: each
-            // quad is looked at once, and what is counted depends only on its vertex set)
-            const auto range = vertex.darts(v);
-            atVertex.assign(range.first, range.second);
-        }
+        // Its darts as listed when it was labelled, here or earlier as the corner of a quad
+        // (the same set as a search of its orbit from s; the order does not matter: each quad
+        // is looked at once, and what is counted depends only on its vertex set). Copied:
+        // labelling more vertices below grows the list.
+        const auto range = vertex.darts(v);
+        atVertex.assign(range.first, range.second);
         for (int x : atVertex) {
-            inFace.clear();
-            face.of(x, &inFace);
-            if (inFace.empty()) continue;  // this quad was looked at before
+            bool fresh = false;
+            const auto inFace = face.darts(face.of(x, &fresh));
+            if (!fresh) continue;  // this quad was looked at before
             std::array<int, 4> corners{{-1, -1, -1, -1}};
             int n = 0;
             bool repeated = false;
-            for (int y : inFace) {
-                const int c = vertex.of(y);
+            for (const int* y = inFace.first; y != inFace.second; ++y) {
+                const int c = vertex.of(*y);
                 if (std::find(corners.begin(), corners.begin() + n, c) != corners.begin() + n) continue;
                 if (n == 4) {
                     repeated = true;  // more than four vertices: not a quad of a valid hex
