@@ -172,6 +172,9 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         ConcurrentUnionFind uf(nElements);
         auto element = [&](int o) { return nk + occ.rank(o); };
         bq.assign(labels.face_size.size(), 0);
+        // The validator groups the darts by cell only if every dart is alive and every link an
+        // involution (alpha_3(alpha_3(d)) = d).
+        const bool involutive = !labels.cell_offset.empty();
         // The unions run in parallel chunks of darts (the classes do not depend on the order).
         parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
             // The darts of one grid point of a tet (consecutive) share their occurrence: each
@@ -186,7 +189,10 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                 const int d3 = a(static_cast<int>(d), 3);
                 // Partners on the same occurrence are joined through it anyway.
                 const int o = dartOcc(d);
-                if (d3 != static_cast<int>(d) && (o < 0 || o != dartOcc(static_cast<std::size_t>(d3))))
+                // With involutive links (darts grouped by cell) the pair's union is made once,
+                // from its smaller dart.
+                if (d3 != static_cast<int>(d) && (!involutive || d3 > static_cast<int>(d)) &&
+                    (o < 0 || o != dartOcc(static_cast<std::size_t>(d3))))
                     uf.unite(k, corner[static_cast<std::size_t>(d3)]);
                 if (o >= 0) {
                     if (o != lastOcc) {
@@ -294,6 +300,10 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         std::vector<Polyhedron> polyhedra;
         long degenerate_faces = 0, collapsed_cells = 0;
     };
+    // Every face orbit of 8 and corner orbit of 6 darts (always on a valid map): a cell of
+    // 48 darts needs no look-up of its darts' face and corner sizes.
+    const bool regularOrbits = std::all_of(fsize.begin(), fsize.end(), [](int x) { return x == 8; }) &&
+                               std::all_of(ksize.begin(), ksize.end(), [](int x) { return x == 6; });
     const int cellChunks = std::max(1, std::min(threads, nc / 1024));
     std::vector<CellPart> cellParts(static_cast<std::size_t>(cellChunks));
     parallelChunks(static_cast<std::size_t>(nc), cellChunks, [&](int part, std::size_t cb, std::size_t ce) {
@@ -306,8 +316,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             int d0 = -1;  // the smallest right-handed dart (cell darts need not be sorted)
             for (int k = 0; k < size && hex; ++k) {
                 const int d = first[k];
-                if (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
-                    ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6)
+                if (!regularOrbits && (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
+                                       ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6))
                     hex = false;
                 if (geo.handedness[static_cast<std::size_t>(d)] > 0 && (d0 < 0 || d < d0)) d0 = d;
             }
