@@ -7,6 +7,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
 using namespace HexEx;
 
 namespace {
@@ -271,4 +275,42 @@ TEST(AssembledMeshCheck, TwinFacesOfAHexWithARepeatedCornerAreCheckedWithoutThem
     EXPECT_EQ(twin.repeated_corner_hexes, 1);
     EXPECT_EQ(twin.boundary_quads, 6 + 6L * 6 * 6 + 6);
     expectSameCheck(twin, plain);
+}
+
+TEST(AssembledMeshCheck, PrivateTwinPairsGiveTheSameCountsAndTable) {
+    // The grid's vertices are in grid hexes only (private): its twin pairs are not filed.
+    const int n = 30;
+    TwinGrid g = twinGrid(n, 2);
+    const auto base = static_cast<std::size_t>(g.mesh.hexes[g.first][0]);
+    auto privateBits = [&](const std::vector<int>& except) {
+        std::vector<std::uint64_t> bits((g.mesh.vertices.size() + 63) / 64, 0);
+        for (std::size_t v = base; v < g.mesh.vertices.size(); ++v)
+            if (std::find(except.begin(), except.end(), static_cast<int>(v)) == except.end()) bits[v / 64] |= std::uint64_t(1) << (v % 64);
+        return bits;
+    };
+    // The grid hexes' corners as occurrences (unit cells in increasing corner 0).
+    DefaultInitVector<std::array<int, 8>> corners(g.mesh.hexes.begin() + static_cast<long>(g.first), g.mesh.hexes.end());
+    const std::vector<std::uint64_t> all = privateBits({});
+    for (const int threads : {1, 2}) {
+        HexFaceNeighbours table;
+        const AssembledMeshCheck plain = checkAssembledHexes(g.mesh, threads);
+        const AssembledMeshCheck priv = checkAssembledHexes(g.mesh, threads, &g.twins, g.first, &table, &corners, &all);
+        EXPECT_TRUE(priv.agrees(11 + 3L * n * n * (n + 1), 10 + 6L * n * n));
+        expectSameCheck(priv, plain);
+        HexFaceNeighbours matched;
+        checkAssembledHexes(g.mesh, threads, nullptr, 0, &matched);
+        ASSERT_FALSE(table.items.empty());
+        EXPECT_EQ(table.items, matched.items);
+    }
+    // A third hex on an inner twin quad: its four vertices are not private then (another hex
+    // has them), so the quad is filed and found in three hexes.
+    const int nv = static_cast<int>(g.mesh.vertices.size());
+    for (int k = 0; k < 4; ++k) g.mesh.vertices.push_back(Vec3d(100, k % 2, k / 2));
+    const auto h0 = g.mesh.hexes[g.first];
+    g.mesh.hexes.push_back({nv, nv + 1, nv + 3, nv + 2, h0[1], h0[2], h0[6], h0[5]});
+    const std::vector<std::uint64_t> some = privateBits({h0[1], h0[2], h0[6], h0[5]});
+    const AssembledMeshCheck plain = checkAssembledHexes(g.mesh, 2);
+    const AssembledMeshCheck priv = checkAssembledHexes(g.mesh, 2, &g.twins, g.first, nullptr, nullptr, &some);
+    EXPECT_EQ(priv.quads_shared_by_more_than_two, 1);
+    expectSameCheck(priv, plain);
 }

@@ -6,6 +6,8 @@ namespace HexEx {
 
 AssembleOutput assembleStage(const AssembleInput& in) {
     AssembleOutput out;
+    // Vertices that only implicit cells of one box have, for the mesh check.
+    std::vector<std::uint64_t> privateVertices;
     {
         // The orbit labels (about 20 bytes per dart) are freed before the mesh check.
         HexOrbitLabels labels;
@@ -16,7 +18,7 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         if (!labels.cell_offset.empty()) storage.swap(labels.cell);
         out.stats.violations = &out.validation;
         out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
-                                   in.want_hex_darts ? &out.hex_darts : nullptr, &storage);
+                                   in.want_hex_darts ? &out.hex_darts : nullptr, &storage, &privateVertices);
         out.stats.violations = nullptr;
     }
     if (out.stats.degenerate_faces > 0)
@@ -31,7 +33,7 @@ AssembleOutput assembleStage(const AssembleInput& in) {
         const AssembledMeshCheck check = checkAssembledHexes(out.mesh, in.threads, in.implicit ? &in.implicit->twin_faces : nullptr,
                                                              out.mesh.hexes.size() - nImplicit,
                                                              in.want_face_neighbours ? &out.face_neighbours : nullptr,
-                                                             in.implicit ? &in.implicit->cells : nullptr);
+                                                             in.implicit ? &in.implicit->cells : nullptr, &privateVertices);
         out.mesh_agrees = check.agrees(out.stats.quads, out.stats.boundary_quads);
         if (!out.mesh_agrees) out.warnings.push_back(check.warning(out.stats.quads, out.stats.boundary_quads));
         // The table is handed on only for a mesh that is what the map describes.

@@ -13,6 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <utility>
 #include <vector>
 
@@ -82,6 +85,7 @@ struct QuadPass {
     long shared_by_more = 0;         ///< in three or more hexes
     std::vector<long> boundary;      ///< the items of the boundary quads, by smallest vertex, then vertex set
     long twin_faces_skipped = 0;     ///< twin faces not filed (their partner's record stands for them)
+    long private_twin_pairs = 0;     ///< twin pairs not filed at all (four private vertices: one interior quad each)
     long twin_pairs_found = 0;       ///< filed twin faces whose partner face was found (neighbour table)
     bool neighbours_complete = true; ///< false if the neighbour table could not be filled
 };
@@ -98,10 +102,21 @@ struct TwinFaces {
     std::size_t first = 0;                              ///< the first hex with bits
     /// Per hex from first on its corner occurrences (ImplicitCells::cells), or null.
     const DefaultInitVector<std::array<int, 8>>* corners = nullptr;
+    /// Per vertex one bit: set if the vertex is private (checkAssembledHexes()), or null.
+    const std::vector<std::uint64_t>* private_vertices = nullptr;
     /// The twin bits of hex @p h.
     unsigned of(std::size_t h) const {
         return twins && h >= first && h - first < twins->size() ? (*twins)[h - first] : 0u;
     }
+    /// True if vertex @p v is private.
+    bool isPrivate(int v) const {
+        const auto w = static_cast<std::size_t>(v) >> 6;
+        return w < private_vertices->size() && (((*private_vertices)[w] >> (v & 63)) & 1u);
+    }
+    /// The faces of hex @p h (corners @p c) that are not filed: the twin faces of the second
+    /// set (kTwinSkipped) and the twin faces of the first set (kTwinFiled) whose four vertices
+    /// are private.
+    unsigned unfiled(std::size_t h, const std::array<int, 8>& c) const;
     /// The face item 6h' + f' of the twin of filed face @p f (1, 3 or 4) of hex @p h, or -1 if
     /// it is not found. The cells are unit cells of boxes with corners c, c + X, c + X + Y,
     /// c + Y, c + Z, ... (Z = 1), in increasing corner 0: the neighbour across face 1 (+z), 3
@@ -129,6 +144,50 @@ struct TwinFaces {
         return 6 * static_cast<long>(first + lo) + opposite;
     }
 };
+
+unsigned TwinFaces::unfiled(std::size_t h, const std::array<int, 8>& c) const {
+    const unsigned t = of(h);
+    unsigned r = t & kTwinSkipped;
+    if (!private_vertices) return r;
+    for (unsigned m = t & kTwinFiled; m != 0; m &= m - 1) {
+        const int f = __builtin_ctz(m);
+        const int* l = kHexFaces[f];
+        if (isPrivate(c[l[0]]) && isPrivate(c[l[1]]) && isPrivate(c[l[2]]) && isPrivate(c[l[3]])) r |= 1u << f;
+    }
+    return r;
+}
+
+/// Bit of distinctQuads()' per-hex face bits: the hex is valid.
+constexpr unsigned char kGoodHex = 0x80;
+
+/// True if the eight corners @p c are distinct vertex indices in [0, @p nv).
+inline bool distinctInRange(const std::array<int, 8>& c, long nv) {
+#if defined(__SSE2__)
+    if (nv <= static_cast<long>(INT32_MAX)) {
+        // Every pair once: within each half by rotations 1 and 2, across by the four
+        // rotations of the second half.
+        const __m128i a = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c.data()));
+        const __m128i b = _mm_loadu_si128(reinterpret_cast<const __m128i*>(c.data() + 4));
+        const __m128i b1 = _mm_shuffle_epi32(b, 0x39), b2 = _mm_shuffle_epi32(b, 0x4e), b3 = _mm_shuffle_epi32(b, 0x93);
+        __m128i eq = _mm_or_si128(_mm_cmpeq_epi32(a, _mm_shuffle_epi32(a, 0x39)), _mm_cmpeq_epi32(a, _mm_shuffle_epi32(a, 0x4e)));
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(b, b1), _mm_cmpeq_epi32(b, b2)));
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(a, b), _mm_cmpeq_epi32(a, b1)));
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(a, b2), _mm_cmpeq_epi32(a, b3)));
+        const __m128i lim = _mm_set1_epi32(static_cast<int>(nv)), neg = _mm_set1_epi32(-1);
+        // Out of range: c < 0 or c >= nv.
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(neg, a), _mm_cmpgt_epi32(neg, b)));
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(a, _mm_sub_epi32(lim, _mm_set1_epi32(1))),
+                                           _mm_cmpgt_epi32(b, _mm_sub_epi32(lim, _mm_set1_epi32(1)))));
+        return _mm_movemask_epi8(eq) == 0;
+    }
+#endif
+    for (int i = 0; i < 8; ++i) {
+        if (c[static_cast<std::size_t>(i)] < 0 || c[static_cast<std::size_t>(i)] >= nv) return false;
+        for (int j = 0; j < i; ++j)
+            if (c[static_cast<std::size_t>(i)] == c[static_cast<std::size_t>(j)]) return false;
+    }
+    return true;
+}
 
 /// The four sorted vertices of face @p f of hex @p c.
 inline std::array<int, 4> sortedFace(const std::array<int, 8>& c, int f) {
@@ -163,13 +222,15 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
     const long nv = static_cast<long>(mesh.vertices.size());
     const long nh = static_cast<long>(mesh.hexes.size());
     const auto& H = mesh.hexes;
-    std::vector<char> good(static_cast<std::size_t>(nh), 0);
+    // Per hex: kGoodHex if it is valid, and the bits of the faces it files (written for every hex).
+    DefaultInitVector<unsigned char> filed(static_cast<std::size_t>(nh));
     // Per chunk of hexes its own count per vertex (no atomic increments); they become the
     // chunk's next free slot per vertex below, so the chunks fill their records without
     // atomics too (the records of a bucket in chunk order, then hex order). At most
     // kMaxSlotChunks such arrays, so that the memory does not grow with the thread count.
     const int hexChunks = std::min(chunks, kMaxSlotChunks);
-    std::vector<long> repeated(static_cast<std::size_t>(hexChunks), 0), skippedTwins(static_cast<std::size_t>(hexChunks), 0);
+    std::vector<long> repeated(static_cast<std::size_t>(hexChunks), 0), skippedTwins(static_cast<std::size_t>(hexChunks), 0),
+        privatePairs(static_cast<std::size_t>(hexChunks), 0);
     std::vector<Item> start(static_cast<std::size_t>(nv) + 1, 0);
     std::vector<std::vector<Item>> slot(static_cast<std::size_t>(hexChunks));
     parallelChunks(static_cast<std::size_t>(nh), hexChunks, [&](int k, std::size_t h0, std::size_t h1) {
@@ -177,18 +238,15 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
         cnt.assign(static_cast<std::size_t>(nv), 0);
         for (std::size_t h = h0; h < h1; ++h) {
             const auto& c = H[h];
-            bool ok = true;
-            for (int i = 0; i < 8 && ok; ++i) {
-                ok = c[i] >= 0 && c[i] < nv;
-                for (int j = 0; j < i && ok; ++j) ok = c[i] != c[j];
-            }
-            if (!ok) {
+            if (!distinctInRange(c, nv)) {
+                filed[h] = 0;
                 ++repeated[static_cast<std::size_t>(k)];
                 continue;
             }
-            good[h] = 1;
-            const unsigned skipped = tw.of(h) & kTwinSkipped;
-            skippedTwins[static_cast<std::size_t>(k)] += __builtin_popcount(skipped);
+            const unsigned skipped = tw.unfiled(h, c);
+            filed[h] = static_cast<unsigned char>(kGoodHex | (~skipped & 63u));
+            skippedTwins[static_cast<std::size_t>(k)] += __builtin_popcount(skipped & kTwinSkipped);
+            privatePairs[static_cast<std::size_t>(k)] += __builtin_popcount(skipped & kTwinFiled);
             for (int f = 0; f < 6; ++f) {
                 if ((skipped >> f) & 1) continue;
                 const int* l = kHexFaces[f];
@@ -199,6 +257,7 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
     });
     for (const long n : repeated) r.repeated_corner_hexes += n;
     for (const long n : skippedTwins) r.twin_faces_skipped += n;
+    for (const long n : privatePairs) r.private_twin_pairs += n;
     if (tw.twins && r.repeated_corner_hexes > 0) return r;
     // The twin pairs' neighbour entries, cell by cell (the partners of consecutive cells are
     // mostly consecutive): every filed twin face and its partner. The quad groups below leave
@@ -270,11 +329,9 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
         parallelChunks(static_cast<std::size_t>(nh), hexChunks, [&](int k, std::size_t h0, std::size_t h1) {
             Item* const next = slot[static_cast<std::size_t>(k)].data();
             for (std::size_t h = h0; h < h1; ++h) {
-                if (!good[h]) continue;
-                const auto& c = H[h];
-                const unsigned skipped = tw.of(h) & kTwinSkipped;
-                for (int f = 0; f < 6; ++f) {
-                    if ((skipped >> f) & 1) continue;
+                for (unsigned m = filed[h] & 63u; m != 0; m &= m - 1) {
+                    const auto& c = H[h];
+                    const int f = __builtin_ctz(m);
                     const int* l = kHexFaces[f];
                     const int v = std::min(std::min(c[l[0]], c[l[1]]), std::min(c[l[2]], c[l[3]]));
                     if (v < lo || v >= hi) continue;
@@ -331,6 +388,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
             }
         });
     }
+    // A private twin pair is one interior quad, in no other hex (checkAssembledHexes()).
+    r.quads += r.private_twin_pairs;
     for (auto& part : parts) {
         r.quads += part.quads;
         r.boundary_quads += part.boundary_quads;
@@ -368,7 +427,8 @@ std::string AssembledMeshCheck::warning(long dart_quads, long dart_boundary_quad
 
 AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads, const std::vector<unsigned char>* twin_faces,
                                        std::size_t first_twin_hex, HexFaceNeighbours* neighbours,
-                                       const DefaultInitVector<std::array<int, 8>>* twin_corners) {
+                                       const DefaultInitVector<std::array<int, 8>>* twin_corners,
+                                       const std::vector<std::uint64_t>* private_vertices) {
     if (neighbours) *neighbours = HexFaceNeighbours{};
     AssembledMeshCheck r;
     const long nv = static_cast<long>(mesh.vertices.size());
@@ -388,7 +448,7 @@ AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads, const s
     auto quadPass = [&](const TwinFaces& tw) {
         return 6 * nh <= static_cast<long>(UINT32_MAX) ? distinctQuads<std::uint32_t>(mesh, chunks, tw, nb) : distinctQuads<long>(mesh, chunks, tw, nb);
     };
-    QuadPass pass = quadPass(TwinFaces{twin_faces, first_twin_hex, twin_corners});
+    QuadPass pass = quadPass(TwinFaces{twin_faces, first_twin_hex, twin_corners, twin_faces ? private_vertices : nullptr});
     // A hex with a repeated corner breaks the twin pairs' premise (both hexes counted):
     // the whole pass again without them.
     if (twin_faces && pass.repeated_corner_hexes > 0) pass = quadPass(TwinFaces{});

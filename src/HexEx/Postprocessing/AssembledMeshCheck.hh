@@ -13,6 +13,7 @@
 #include <array>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -50,9 +51,17 @@ struct AssembledMeshCheck {
 /// @p twin_faces the twins are paired through @p twin_corners (per hex from @p first_twin_hex
 /// its corner occurrences, ImplicitCells::cells: unit cells of boxes in increasing corner 0);
 /// without @p twin_corners there is no table then.
+/// Optional @p private_vertices (with @p twin_faces; one bit per vertex, bit v % 64 of word
+/// v / 64): vertex v is private if the only hexes with corner v are these twin-bit hexes with
+/// one fixed corner occurrence (@p twin_corners) there, i.e. the vertex is that one grid
+/// point of one unit-cell box (HexMeshAssembly's private vertices). A twin pair whose four
+/// vertices are private is one quad in exactly these two hexes and in no other (any hex
+/// with those vertices is a unit cell of that box with those four corners): it is counted
+/// as one interior quad without being filed. The result is the same as without it.
 AssembledMeshCheck checkAssembledHexes(const HexMesh& mesh, int threads = 1,
                                        const std::vector<unsigned char>* twin_faces = nullptr, std::size_t first_twin_hex = 0,
                                        HexFaceNeighbours* neighbours = nullptr,
-                                       const DefaultInitVector<std::array<int, 8>>* twin_corners = nullptr);
+                                       const DefaultInitVector<std::array<int, 8>>* twin_corners = nullptr,
+                                       const std::vector<std::uint64_t>* private_vertices = nullptr);
 
 } // namespace HexEx

@@ -39,6 +39,7 @@ struct OccurrenceRanks {
     };
     std::vector<Word> word;            ///< per 64 occurrences
     std::vector<std::uint64_t> used;   ///< per word: the used (labelled) occurrences' bits
+    std::vector<std::uint64_t> joined; ///< per word: the bits of occurrences joined across a face
     long n = 0;                        ///< number of elements
     long n_used = 0;                   ///< number of used occurrences
     /// Element number of occurrence @p o (which must be an element).
@@ -51,8 +52,10 @@ struct OccurrenceRanks {
 
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
-                        const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts, std::vector<int>* label_storage) {
+                        const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts, std::vector<int>* label_storage,
+                        std::vector<std::uint64_t>* private_vertices) {
     HexMesh out;
+    if (private_vertices) private_vertices->clear();
     const auto& L = g.links();
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
 
@@ -133,11 +136,12 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             const std::size_t nWords = (nOcc + 63) / 64;
             occ.word.resize(nWords);
             occ.used.resize(nWords);
+            occ.joined.resize(nWords);
             std::vector<long> inChunk(static_cast<std::size_t>(ufChunks) + 1, 0), usedInChunk(static_cast<std::size_t>(ufChunks), 0);
             parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
                 long n = 0;
                 for (std::size_t w = w0; w < w1; ++w) {
-                    std::uint64_t el = 0, us = 0;
+                    std::uint64_t el = 0, us = 0, jn = 0;
                     const std::size_t o0 = 64 * w, o1 = std::min(o0 + 64, nOcc);
 #if defined(__SSE2__)
                     if (o1 - o0 == 64) {
@@ -147,15 +151,19 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                             const auto bit0 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 7)));  // each byte's bit 0
                             el |= static_cast<std::uint64_t>(nonzero) << (16 * q);
                             us |= static_cast<std::uint64_t>(bit0) << (16 * q);
+                            const auto bit1 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 6)));  // each byte's bit 1
+                            jn |= static_cast<std::uint64_t>(bit1) << (16 * q);
                         }
                     } else
 #endif
                         for (std::size_t o = o0; o < o1; ++o) {
                             el |= static_cast<std::uint64_t>(mark[o] != 0) << (o - o0);
                             us |= static_cast<std::uint64_t>(mark[o] & 1) << (o - o0);
+                            jn |= static_cast<std::uint64_t>((mark[o] >> 1) & 1) << (o - o0);
                         }
                     occ.word[w] = {el, n};
                     occ.used[w] = us;
+                    occ.joined[w] = jn;
                     n += __builtin_popcountll(el);
                     usedInChunk[static_cast<std::size_t>(k)] += __builtin_popcountll(us);
                 }
@@ -253,6 +261,23 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             }
         }
         occSlot = std::move(parent);
+        if (private_vertices) {
+            // A dartless class holds no corner, so its occurrences were united only across
+            // faces: one whose first occurrence is not joined is that occurrence alone.
+            private_vertices->assign((static_cast<std::size_t>(nv) + 63) / 64, 0);
+            std::uint64_t* const bits = private_vertices->data();
+            parallelChunks(private_vertices->size(), threads, [&](int, std::size_t w0, std::size_t w1) {
+                for (std::size_t w = w0; w < w1; ++w) {
+                    std::uint64_t b = 0;
+                    const std::size_t l1 = std::min(64 * w + 64, static_cast<std::size_t>(nv));
+                    for (std::size_t l = std::max(64 * w, static_cast<std::size_t>(nvDarts)); l < l1; ++l) {
+                        const auto o = static_cast<std::size_t>(dartless[l - static_cast<std::size_t>(nvDarts)]);
+                        if (!((occ.joined[o >> 6] >> (o & 63)) & 1)) b |= std::uint64_t(1) << (l & 63);
+                    }
+                    bits[w] = b;
+                }
+            });
+        }
     }
     if (stats.violations) describeViolations(g, vlabel, *stats.violations);
     VertexCandidates candidates;

@@ -11,6 +11,7 @@
 #include "../Mesh/HexMesh.hh"
 #include "VertexMerging.hh"
 
+#include <cstdint>
 #include <functional>
 #include <utility>
 #include <vector>
@@ -70,8 +71,13 @@ struct ImplicitCells {
 /// implicit cells), the dart at its corner 0 whose frame points to corners 1, 3 and 4.
 /// If @p label_storage is given, its memory is taken over for the per-dart vertex labels
 /// (e.g. a freed label array of the validator: pages already in use); it is left empty.
+/// With @p implicit and @p private_vertices, the latter receives one bit per vertex (bit
+/// v % 64 of word v / 64), set if vertex v is private: its class is one occurrence that no
+/// dart sits on or links to and that is not joined across a face, so the only hexes with
+/// corner v are the implicit cells with that corner occurrence (checkAssembledHexes() need
+/// not file their twin faces). Without @p implicit it is left empty.
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
                         const ImplicitCells* implicit = nullptr, int threads = 1, std::vector<int>* hex_darts = nullptr,
-                        std::vector<int>* label_storage = nullptr);
+                        std::vector<int>* label_storage = nullptr, std::vector<std::uint64_t>* private_vertices = nullptr);
 
 } // namespace HexEx
