@@ -97,9 +97,9 @@ int walkAlternating(int s, A fa, B fb, Seen seen, Visit visit) {
 /// Orbit labelling for maps whose darts are all alive and whose links are all involutions,
 /// in one pass over the cells (<alpha_0, alpha_1, alpha_2> orbits): each cell is found by a
 /// breadth-first search from its smallest dart (cells numbered in dart order, each cell's
-/// darts in search order), and while its darts are in the cache its strip, face and corner
-/// orbits (they never leave the cell) are walked, faces and corners numbered cell after
-/// cell. Terminates on any map whose links are dart indices (every walk stops at a marked
+/// darts in search order), and while its darts are in the cache its strip and face orbits
+/// (they never leave the cell) are walked, faces numbered cell after cell (the corners are
+/// labelled apart, labelCorners()). Terminates on any map whose links are dart indices (every walk stops at a marked
 /// dart), so it may run before the involution checks are known; its labels are used only
 /// if they find an involutive map with every dart alive.
 struct CellLabels {
@@ -109,9 +109,7 @@ struct CellLabels {
     std::vector<int> darts;    ///< the darts, cell after cell
     std::vector<int> off;      ///< cell c holds darts[off[c] .. off[c + 1])
     std::vector<int> face;     ///< per dart: its face orbit
-    std::vector<int> corner;   ///< per dart: its corner orbit
     std::vector<int> fsize;    ///< per face orbit: number of darts
-    std::vector<int> ksize;    ///< per corner orbit: number of darts
 };
 
 CellLabels labelCells(const GMap<3>& g) {
@@ -120,20 +118,17 @@ CellLabels labelCells(const GMap<3>& g) {
     CellLabels cs;
     cs.cell.assign(n, -1);
     cs.face.assign(n, -1);
-    cs.corner.assign(n, -1);
     cs.darts.reserve(n);
     // Exact sizes for a hex map (48 darts per cell, 8 per face, 6 per corner): no growth
     // beyond them, which would keep up to twice the memory through the assembly.
     cs.size.reserve(n / 48 + 1);
     cs.off.reserve(n / 48 + 2);
     cs.fsize.reserve(n / 8 + 1);
-    cs.ksize.reserve(n / 6 + 1);
     cs.off.push_back(0);
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     auto a121 = [&](int d) { return a(a(a(d, 1), 2), 1); };
     std::vector<int>& face = cs.face;
-    std::vector<int>& corner = cs.corner;
-    // corner[] doubles as the visited mark of the strip walks (-2) before corners are labelled.
+    // face[] doubles as the visited mark of the strip walks (-2) before faces are labelled.
     constexpr int kStripSeen = -2;
     GMapValidation& v = cs.counts;
     for (std::size_t s = 0; s < n; ++s) {
@@ -160,11 +155,11 @@ CellLabels labelCells(const GMap<3>& g) {
         const int* const end = cs.darts.data() + cs.darts.size();
         if (size != 48) v.eq6_hex += size;
         for (const int* x = begin; x != end; ++x) {
-            if (corner[static_cast<std::size_t>(*x)] != -1) continue;
-            corner[static_cast<std::size_t>(*x)] = kStripSeen;
+            if (face[static_cast<std::size_t>(*x)] != -1) continue;
+            face[static_cast<std::size_t>(*x)] = kStripSeen;
             const int m = walkAlternating(
-                *x, [&](int d) { return a(d, 0); }, a121, [&](int d) { return corner[static_cast<std::size_t>(d)] == kStripSeen; },
-                [&](int d) { corner[static_cast<std::size_t>(d)] = kStripSeen; });
+                *x, [&](int d) { return a(d, 0); }, a121, [&](int d) { return face[static_cast<std::size_t>(d)] == kStripSeen; },
+                [&](int d) { face[static_cast<std::size_t>(d)] = kStripSeen; });
             if (m != 8) v.eq5_strip += m;
         }
         for (const int* x = begin; x != end; ++x) {
@@ -177,24 +172,35 @@ CellLabels labelCells(const GMap<3>& g) {
             cs.fsize.push_back(m);
             if (m != 8) v.eq3_quad += m;
         }
-        for (const int* x = begin; x != end; ++x) {
-            if (corner[static_cast<std::size_t>(*x)] >= 0) continue;
-            const int k = static_cast<int>(cs.ksize.size());
-            corner[static_cast<std::size_t>(*x)] = k;
-            const int m = walkAlternating(
-                *x, [&](int d) { return a(d, 1); }, [&](int d) { return a(d, 2); },
-                [&](int d) { return corner[static_cast<std::size_t>(d)] >= 0; }, [&](int d) { corner[static_cast<std::size_t>(d)] = k; });
-            cs.ksize.push_back(m);
-            if (m != 6) v.eq4_corner += m;
-        }
     }
     return cs;
 }
 
-/// Takes the labels of @p cs into @p out (if given) and its equation 3-6 counts into @p v.
-void useCellLabels(CellLabels&& cs, GMapValidation& v, HexOrbitLabels* out) {
+/// Corner orbits (<alpha_1, alpha_2>) of a map whose links are all involutions, numbered in
+/// order of their smallest dart, with the equation 4 count.
+struct CornerLabels {
+    std::vector<int> corner;  ///< per dart: its corner orbit
+    std::vector<int> size;    ///< per corner orbit: number of darts
+    long eq4_corner = 0;      ///< darts of corner orbits without 6 darts
+};
+
+/// Labels the corners of @p g in one pass in dart order (the same labels as the per-dart
+/// checks give in one chunk, validateHexGMap()).
+CornerLabels labelCorners(const GMap<3>& g) {
+    const auto& L = g.links();
+    CornerLabels k;
+    k.size.reserve(L.size() / 6 + 1);  // exact for a hex map: no growth beyond it
+    k.corner = labelAlternating(
+        g, [&](int d) { return L[static_cast<std::size_t>(d)][1]; }, [&](int d) { return L[static_cast<std::size_t>(d)][2]; }, k.size);
+    for (const int m : k.size)
+        if (m != 6) k.eq4_corner += m;
+    return k;
+}
+
+/// Takes the labels of @p cs and @p ks into @p out (if given) and their equation 3-6 counts into @p v.
+void useCellLabels(CellLabels&& cs, CornerLabels&& ks, GMapValidation& v, HexOrbitLabels* out) {
     v.eq3_quad += cs.counts.eq3_quad;
-    v.eq4_corner += cs.counts.eq4_corner;
+    v.eq4_corner += ks.eq4_corner;
     v.eq5_strip += cs.counts.eq5_strip;
     v.eq6_hex += cs.counts.eq6_hex;
     if (!out) return;
@@ -202,8 +208,8 @@ void useCellLabels(CellLabels&& cs, GMapValidation& v, HexOrbitLabels* out) {
     out->cell_size = std::move(cs.size);
     out->face = std::move(cs.face);
     out->face_size = std::move(cs.fsize);
-    out->corner = std::move(cs.corner);
-    out->corner_size = std::move(cs.ksize);
+    out->corner = std::move(ks.corner);
+    out->corner_size = std::move(ks.size);
     out->cell_darts = std::move(cs.darts);
     out->cell_offset = std::move(cs.off);
 }
@@ -345,15 +351,25 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     auto a = [&](int d, int i) { return L[static_cast<std::size_t>(d)][i]; };
     // Per-dart checks, in parallel chunks with per-chunk counters (deterministic sums).
     // With two or more threads the cell search and labelling (labelCells(), sequential)
-    // runs on one of them while the others do the per-dart checks; it is used only if the
-    // checks find an involutive map with every dart alive.
+    // runs on one of them while the others do the per-dart checks and then label the corners;
+    // both are used only if the checks find an involutive map with every dart alive.
     const bool overlap = threads >= 2 && n >= 65536;
     CellLabels cells;
+    CornerLabels corners;
     const int checkThreads = overlap ? threads - 1 : std::max(1, threads);
     const int chunks = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(checkThreads), std::max<std::size_t>(1, n / 65536)));
     std::vector<GMapValidation> part(static_cast<std::size_t>(chunks));
+    // In one chunk the checks also label the corners, in dart order as labelCorners() (a
+    // corner's darts are at one grid point and were just read by the involution test); the
+    // labels are used only on an involutive map with every dart alive.
+    const bool cornersInChecks = chunks == 1;
+    if (cornersInChecks) {
+        corners.corner.assign(n, -1);
+        corners.size.reserve(n / 6 + 1);
+    }
     auto checks = [&](int k, std::size_t b, std::size_t e) {
         GMapValidation& w = part[static_cast<std::size_t>(k)];
+        std::vector<int>& corner = corners.corner;
         for (std::size_t s = b; s < e; ++s) {
             const int d = static_cast<int>(s);
             if (!g.is_alive(DartHandle(d))) continue;
@@ -374,12 +390,34 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
             } else if (a(a(a(a(d, 0), 3), 0), 3) != d || a(a(a(a(d, 1), 3), 1), 3) != d) {
                 ++w.eq2_face_connection;
             }
+            if (cornersInChecks && corner[s] < 0) {
+                const int c = static_cast<int>(corners.size.size());
+                corner[s] = c;
+                const int m = walkAlternating(
+                    d, [&](int x) { return a(x, 1); }, [&](int x) { return a(x, 2); },
+                    [&](int x) { return corner[static_cast<std::size_t>(x)] >= 0; }, [&](int x) { corner[static_cast<std::size_t>(x)] = c; });
+                corners.size.push_back(m);
+                if (m != 6) corners.eq4_corner += m;
+            }
         }
+    };
+    // Every dart alive and every link an involution: the per-cell labels are used.
+    auto involutive = [&]() {
+        long alive = 0, notInvolution = 0;
+        for (const auto& w : part) {
+            alive += w.darts;
+            notInvolution += w.not_involution;
+        }
+        return notInvolution == 0 && alive == static_cast<long>(n);
     };
     if (overlap) {
         parallelChunks(2, 2, [&](int job, std::size_t, std::size_t) {
-            if (job == 0) cells = labelCells(g);
-            else parallelChunks(n, chunks, checks);
+            if (job == 0) {
+                cells = labelCells(g);
+            } else {
+                parallelChunks(n, chunks, checks);
+                if (!cornersInChecks && involutive()) corners = labelCorners(g);
+            }
         });
     } else {
         parallelChunks(n, chunks, checks);
@@ -394,10 +432,14 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
     }
     if (v.not_involution == 0 && v.darts == static_cast<long>(n)) {
         if (!overlap) cells = labelCells(g);
-        useCellLabels(std::move(cells), v, labels);
+        if (!overlap && !cornersInChecks) corners = labelCorners(g);
+        useCellLabels(std::move(cells), std::move(corners), v, labels);
         if (!v.valid()) collectExamples(g, v);
         return v;
     }
+    // Not used: freed before the general labelling.
+    cells = CellLabels{};
+    corners = CornerLabels{};
     auto countBad = [&](std::vector<int>& label, std::vector<int>& size, int want) {
         long bad = 0;
         for (std::size_t s = 0; s < n; ++s)

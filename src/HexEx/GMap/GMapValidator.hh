@@ -66,11 +66,11 @@ struct HexOrbitLabels {
 /// Checks every alive dart of @p g against equations 1-6 of the paper and the involution
 /// property. Linear time. If @p labels is given, the face, corner and cell orbits are
 /// returned there. Cells are numbered in order of their smallest dart. When every dart is
-/// alive and every link an involution (the usual case), faces and corners are numbered cell
-/// by cell (in the order of the cells) and labels->cell_darts is filled; otherwise faces and
-/// corners are numbered in order of their smallest dart. @p threads runs the checks (and
-/// the independent orbit labelings of the general case) in parallel; the result does not
-/// depend on it.
+/// alive and every link an involution (the usual case), faces are numbered cell by cell (in
+/// the order of the cells) and labels->cell_darts is filled; otherwise faces are numbered in
+/// order of their smallest dart. Corners are always numbered in order of their smallest dart.
+/// @p threads runs the checks (and the independent orbit labelings of the general case) in
+/// parallel; the result does not depend on it.
 GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1);
 
 /// Output vertices of each example's face: @p vertex_label gives the output vertex of every
