@@ -148,6 +148,30 @@ public:
     /// If the first pass left broken cells, annihilates again in other orders (see AnnihilationRetry).
     void retry(const AnnihilationRetry& opt, AnnihilationStats& st);
 
+    /// True if the map has at least AnnihilationRetry::phased_first_min_darts darts and its
+    /// anti darts are at least AnnihilationRetry::phased_first_share of them.
+    bool heavy(const AnnihilationRetry& opt) {
+        if (opt.phased_first_share <= 0 || n_ < opt.phased_first_min_darts) return false;
+        listAntis();
+        return static_cast<double>(antis_.size()) >= opt.phased_first_share * static_cast<double>(n_);
+    }
+
+    /// Phase by phase before any other run: true if it is kept as retry() would keep it as
+    /// its first retry (judgeRun(), or no broken cell and no merged vertex); otherwise every
+    /// dart is put back (restoreAll()) and false.
+    bool runPhasedFirst(const AnnihilationRetry& opt, AnnihilationStats& st) {
+        runPhased();
+        bool kept = false;
+        const long now = judgeRun(1, opt, st, kept);
+        if (!kept && now == 0) {
+            kept = true;
+            st.reordered = 1;
+            st.broken_cells_after = 0;
+        }
+        if (!kept) restoreAll();
+        return kept;
+    }
+
     /// Fills @p heirs (see annihilateDarts()).
     void collectHeirs(std::vector<std::pair<int, int>>& heirs, const std::function<bool(int, int)>& same_place);
 
@@ -187,6 +211,13 @@ private:
     /// Takes over the twin's phase-by-phase run (startTwin()) in place of restoreAll() and
     /// runPhased(): false if there is none or it failed.
     bool takeTwin();
+
+    /// Checks the run of variant @p k (retry()) that just finished: returns its rank (broken
+    /// cells among those of the changed darts; kMergedRank + m if it leaves none but merges
+    /// vertices) and sets @p kept (with st.reordered and st.broken_cells_after) where it is kept
+    /// at once: broken only in alpha_3 (AnnihilationRetry::keep_alpha3_only), or, for phase by
+    /// phase (k = 1), repaired by AnnihilationRetry::repair.
+    long judgeRun(int k, const AnnihilationRetry& opt, AnnihilationStats& st, bool& kept);
 
     int idOf(long d) {
         if (sameVertex_.parent.empty()) sameVertex_ = UnionFind(idx(n_));
@@ -616,6 +647,35 @@ void Annihilator::run(const std::vector<int>* order) {
     }
 }
 
+long Annihilator::judgeRun(int k, const AnnihilationRetry& opt, AnnihilationStats& st, bool& kept) {
+    kept = false;
+    // The darts of the broken cells are collected once: the checks below (quads only, the
+    // repair) need only those cells, not another pass over every changed dart's cell.
+    std::vector<int> broken;
+    long now = brokenCells(changedDarts(), &broken);
+    // A run that leaves no broken cell can still have crossed alpha_3 links around an edge
+    // so that two vertices become one (every cell a hex, every vertex link a sphere): such a
+    // run ranks below every run that merges none.
+    if (now == 0) {
+        const long merged = countMergedVertexQuads(alpha_, alive_, alpha3Changed());
+        st.merged_vertex_runs += merged > 0 ? 1 : 0;
+        if (merged > 0) now = kMergedRank + merged;
+    }
+    if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(broken)) {
+        // Only quads are crossed or partial, every cell is a hex inside: the face repair and
+        // relinking finish this run; another order would cost a whole run each.
+        st.alpha3_only_kept = kept = true;
+    } else if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair(broken)) {
+        // The cells phase by phase leaves broken were re-linked into hexes: keep that.
+        st.repaired = kept = true;
+    }
+    if (kept) {
+        st.reordered = k;
+        st.broken_cells_after = now;
+    }
+    return now;
+}
+
 void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
     // Whether the first pass left a broken cell decides whether the retries run at all; how
     // many it left matters only where a retry that leaves broken cells (and is not kept at
@@ -663,35 +723,11 @@ void Annihilator::retry(const AnnihilationRetry& opt, AnnihilationStats& st) {
         ++st.retry_runs;
         runVariant(k);
         lastRun = k;
-        // The darts of the broken cells are collected once: the checks below (quads only,
-        // the repair) need only those cells, not another pass over every changed dart's cell.
-        std::vector<int> broken;
-        long now = brokenCells(changedDarts(), &broken);
-        // A run that leaves no broken cell can still have crossed alpha_3 links around an
-        // edge so that two vertices become one (every cell a hex, every vertex link a
-        // sphere): such a run ranks below every run that merges none.
-        if (now == 0) {
-            const long merged = countMergedVertexQuads(alpha_, alive_, alpha3Changed());
-            st.merged_vertex_runs += merged > 0 ? 1 : 0;
-            if (merged > 0) now = kMergedRank + merged;
-        }
-        // (The two ways out below do not read best or bestOrder, so the comparison with the
-        // best so far comes after them.)
-        if (opt.keep_alpha3_only && now > 0 && now < kMergedRank && brokenOnlyInAlpha3(broken)) {
-            // Only quads are crossed or partial, every cell is a hex inside: the face repair
-            // and relinking finish this run; another order would cost a whole run each.
-            st.alpha3_only_kept = true;
-            st.reordered = k;
-            st.broken_cells_after = now;
-            return;
-        }
-        if (k == 1 && now > 0 && now < kMergedRank && opt.repair && opt.repair(broken)) {
-            // The cells phase by phase leaves broken were re-linked into hexes: keep that.
-            st.repaired = true;
-            st.reordered = 1;
-            st.broken_cells_after = now;
-            return;
-        }
+        // (The two ways out of judgeRun() do not read best or bestOrder, so the comparison
+        // with the best so far comes after them.)
+        bool kept = false;
+        const long now = judgeRun(k, opt, st, kept);
+        if (kept) return;
         // The next variant starts with restoreAll(), so this run's state is not needed after
         // the comparison: the exact count of the first pass may replace it here.
         if (now > 0 && now < kMergedRank && bestOrder == 0 && !best0Exact) exactFirstPass();
@@ -765,15 +801,29 @@ AnnihilationStats annihilateDarts(std::vector<std::array<int, 4>>& alpha, const 
                                   std::vector<char>& alive, std::vector<std::pair<int, int>>* heirs,
                                   const std::function<bool(int, int)>& same_place, const AnnihilationRetry& retry, bool mutual_links) {
     AnnihilationStats st;
-    Annihilator an(alpha, sign, alive, heirs != nullptr, retry.enabled, mutual_links);
-    if (retry.enabled) an.startTwin(retry);
-    an.runAll();
-    if (retry.enabled && an.pairs > 0) an.retry(retry, st);
-    an.dropTwin();  // not taken: the first pass is kept
-    st.pairs = an.pairs;
+    auto an = std::make_unique<Annihilator>(alpha, sign, alive, heirs != nullptr, retry.enabled, mutual_links);
+    // Heavy folds: phase by phase first (AnnihilationRetry::phased_first_share). Where it is
+    // not kept, every dart is back as it was, and a fresh start runs as without it.
+    if (retry.enabled && retry.orders >= 1 && retry.patience >= 1 && an->heavy(retry)) {
+        st.phased_first = an->runPhasedFirst(retry, st);
+        if (st.phased_first) {
+            st.retry_runs = 1;
+        } else {
+            an.reset();
+            an = std::make_unique<Annihilator>(alpha, sign, alive, heirs != nullptr, retry.enabled, mutual_links);
+            st = AnnihilationStats();
+        }
+    }
+    if (!st.phased_first) {
+        if (retry.enabled) an->startTwin(retry);
+        an->runAll();
+        if (retry.enabled && an->pairs > 0) an->retry(retry, st);
+        an->dropTwin();  // not taken: the first pass is kept
+    }
+    st.pairs = an->pairs;
     for (std::size_t d = 0; d < alpha.size(); ++d)
         if (alive[d] && sign[d] < 0) ++st.remaining_anti;
-    if (heirs) an.collectHeirs(*heirs, same_place);
+    if (heirs) an->collectHeirs(*heirs, same_place);
     return st;
 }
 

@@ -27,6 +27,7 @@ struct AnnihilationStats {
     long merged_vertex_runs = 0;  ///< retries that left no broken cell but merged vertices (LocalVertexCheck.hh), ranked below every other
     bool alpha3_only_kept = false; ///< the order kept left broken cells that are hexes once alpha_3 is ignored (AnnihilationRetry::keep_alpha3_only)
     bool phased_beside = false;   ///< the phase-by-phase run ran beside the first pass and was taken over (AnnihilationRetry::threads)
+    bool phased_first = false;    ///< phase by phase ran first and was kept; no ascending pass ran (AnnihilationRetry::phased_first_share)
 };
 
 /// Retries of the annihilation (annihilateDarts()) in other orders, for 3D hex maps.
@@ -69,6 +70,18 @@ struct AnnihilationRetry {
     /// (Documentation/algorithm.md, "The phase-by-phase run beside the first pass"), at the
     /// cost of a second copy of the links, survivors and flags while both run.
     int threads = 1;
+    /// Heavy folds: on a map of at least @ref phased_first_min_darts darts whose anti darts are
+    /// at least this share of them, phase by phase runs *first*, and is kept where the retries
+    /// would keep it as their first variant (no broken cell and no merged vertex, broken cells
+    /// only in alpha_3, or repaired by @ref repair); otherwise every dart is put back and the
+    /// annihilation runs as without it (ascending first, then the retries). This skips the
+    /// ascending pass, which such maps undo anyway (all 7 heavy cases of issue 35's run-time
+    /// table keep phase by phase). It changes the result where the ascending pass would have
+    /// left no broken cell (Documentation/algorithm.md, "Tenth round"). 0 turns it off.
+    double phased_first_share = 0.35;
+    /// Smaller maps keep the ascending pass first (see @ref phased_first_share): it costs
+    /// little there, and their outputs stay as they were.
+    long phased_first_min_darts = 1000000;
 };
 
 /// Annihilates pairs until no regular dart is linked to an anti dart. @p alpha holds the
