@@ -2,6 +2,7 @@
 
 #include "VertexPreimageChoice.hh"
 
+#include "../Core/BitCount.hh"
 #include "../Core/Parallel.hh"
 #include "../Core/ConcurrentUnionFind.hh"
 #include "../GMap/GMapValidator.hh"
@@ -45,7 +46,7 @@ struct OccurrenceRanks {
     /// Element number of occurrence @p o (which must be an element).
     int rank(int o) const {
         const Word& w = word[static_cast<std::size_t>(o) >> 6];
-        return static_cast<int>(w.first) + __builtin_popcountll(w.element & ((std::uint64_t(1) << (o & 63)) - 1));
+        return static_cast<int>(w.first) + bitCount64(w.element & ((std::uint64_t(1) << (o & 63)) - 1));
     }
 };
 } // namespace
@@ -164,8 +165,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                     occ.word[w] = {el, n};
                     occ.used[w] = us;
                     occ.joined[w] = jn;
-                    n += __builtin_popcountll(el);
-                    usedInChunk[static_cast<std::size_t>(k)] += __builtin_popcountll(us);
+                    n += bitCount64(el);
+                    usedInChunk[static_cast<std::size_t>(k)] += bitCount64(us);
                 }
                 inChunk[static_cast<std::size_t>(k) + 1] = n;
             });
