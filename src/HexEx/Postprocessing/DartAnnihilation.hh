@@ -18,7 +18,8 @@ struct AnnihilationStats {
     long remaining_anti = 0;  ///< anti darts left at the fixed point
     /// Broken hex cells next to changed darts after the first pass (with retries only): 0 if
     /// none; otherwise the exact count where a retry had to be compared with it, else 1 (the
-    /// check stops at the first broken cell when a retry is kept without that comparison).
+    /// check stops at the first broken cell when a retry is kept without that comparison);
+    /// 0 where phase by phase ran first and was kept (no ascending pass ran, phased_first).
     long broken_cells_before = 0;
     long broken_cells_after = 0;  ///< the same for the order kept
     long retry_runs = 0;          ///< runs in other orders
