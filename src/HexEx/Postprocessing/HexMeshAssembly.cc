@@ -40,7 +40,6 @@ struct OccurrenceRanks {
     };
     std::vector<Word> word;            ///< per 64 occurrences
     std::vector<std::uint64_t> used;   ///< per word: the used (labelled) occurrences' bits
-    std::vector<std::uint64_t> joined; ///< per word: the bits of occurrences joined across a face
     long n = 0;                        ///< number of elements
     long n_used = 0;                   ///< number of used occurrences
     /// Element number of occurrence @p o (which must be an element).
@@ -120,7 +119,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                         lastOcc = o;
                         use(o);
                     }
-                    if (a3Occ[d] >= 0) use(a3Occ[d]);
+                    if (nocc > 0 && a3Occ[d] >= 0) use(a3Occ[d]);
                 }
             });
             parallelChunks(implicit->cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
@@ -137,12 +136,11 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             const std::size_t nWords = (nOcc + 63) / 64;
             occ.word.resize(nWords);
             occ.used.resize(nWords);
-            occ.joined.resize(nWords);
             std::vector<long> inChunk(static_cast<std::size_t>(ufChunks) + 1, 0), usedInChunk(static_cast<std::size_t>(ufChunks), 0);
             parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
                 long n = 0;
                 for (std::size_t w = w0; w < w1; ++w) {
-                    std::uint64_t el = 0, us = 0, jn = 0;
+                    std::uint64_t el = 0, us = 0;
                     const std::size_t o0 = 64 * w, o1 = std::min(o0 + 64, nOcc);
 #if defined(__SSE2__)
                     if (o1 - o0 == 64) {
@@ -152,19 +150,15 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                             const auto bit0 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 7)));  // each byte's bit 0
                             el |= static_cast<std::uint64_t>(nonzero) << (16 * q);
                             us |= static_cast<std::uint64_t>(bit0) << (16 * q);
-                            const auto bit1 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 6)));  // each byte's bit 1
-                            jn |= static_cast<std::uint64_t>(bit1) << (16 * q);
                         }
                     } else
 #endif
                         for (std::size_t o = o0; o < o1; ++o) {
                             el |= static_cast<std::uint64_t>(mark[o] != 0) << (o - o0);
                             us |= static_cast<std::uint64_t>(mark[o] & 1) << (o - o0);
-                            jn |= static_cast<std::uint64_t>((mark[o] >> 1) & 1) << (o - o0);
                         }
                     occ.word[w] = {el, n};
                     occ.used[w] = us;
-                    occ.joined[w] = jn;
                     n += bitCount64(el);
                     usedInChunk[static_cast<std::size_t>(k)] += bitCount64(us);
                 }
@@ -214,7 +208,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
                         if (nJoined < 8) joined[nJoined++] = k;
                     }
                 }
-                const int o3 = a3Occ[d];
+                const int o3 = nocc > 0 ? a3Occ[d] : -1;  // without occurrences every entry is -1
                 if (o3 >= 0) {
                     uf.unite(k, element(o3));
                 } else if (d3 == static_cast<int>(d)) {
@@ -264,18 +258,25 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         occSlot = std::move(parent);
         if (private_vertices) {
             // A dartless class holds no corner, so its occurrences were united only across
-            // faces: one whose first occurrence is not joined is that occurrence alone.
+            // faces: without a joined occurrence it is one occurrence. All dartless classes,
+            // then the classes of the joined occurrences taken out (a used occurrence's slot
+            // holds its label, an unused one's its root, whose slot holds the label if any).
             private_vertices->assign((static_cast<std::size_t>(nv) + 63) / 64, 0);
             std::uint64_t* const bits = private_vertices->data();
-            parallelChunks(private_vertices->size(), threads, [&](int, std::size_t w0, std::size_t w1) {
-                for (std::size_t w = w0; w < w1; ++w) {
-                    std::uint64_t b = 0;
-                    const std::size_t l1 = std::min(64 * w + 64, static_cast<std::size_t>(nv));
-                    for (std::size_t l = std::max(64 * w, static_cast<std::size_t>(nvDarts)); l < l1; ++l) {
-                        const auto o = static_cast<std::size_t>(dartless[l - static_cast<std::size_t>(nvDarts)]);
-                        if (!((occ.joined[o >> 6] >> (o & 63)) & 1)) b |= std::uint64_t(1) << (l & 63);
-                    }
-                    bits[w] = b;
+            for (auto l = static_cast<std::size_t>(nvDarts); l < static_cast<std::size_t>(nv); ++l)
+                bits[l >> 6] |= std::uint64_t(1) << (l & 63);
+            const std::vector<int>& slot = occSlot;
+            auto notPrivate = [&](int o) {
+                const int r = slot[static_cast<std::size_t>(element(o))];
+                const int v = r < 0 ? r : slot[static_cast<std::size_t>(r)];
+                if (v >= 0) return;  // a class without a label
+                const auto l = static_cast<std::size_t>(-2 - v);
+                __atomic_fetch_and(&bits[l >> 6], ~(std::uint64_t(1) << (l & 63)), __ATOMIC_RELAXED);
+            };
+            parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
+                for (std::size_t i = b; i < e; ++i) {
+                    notPrivate(jo[i].first);
+                    notPrivate(jo[i].second);
                 }
             });
         }
