@@ -3,7 +3,54 @@
 #include "../Core/Parallel.hh"
 #include "GridPointPosition.hh"
 
+#include <optional>
+
 namespace HexEx {
+
+namespace {
+
+/// Positions of grid points taken one after the other (gridPointPosition()): the setup of a
+/// tet (TetPointPositions) is made once for consecutive points in the same tet, and a point
+/// equal to the one before is not computed again. The same numbers as gridPointPosition():
+/// a position depends only on the tet and the point. (On folded maps the heirs' entries of
+/// one point and tet come in a row, one per heir.)
+class PointPlacer {
+public:
+    /// For the tets of @p mesh (@p tets, @p ds as for gridPointPosition()).
+    PointPlacer(const TetMesh& mesh, const std::vector<TetSoS>& tets, const DartSet& ds) : mesh_(mesh), tets_(tets), ds_(ds) {}
+
+    /// Position of grid point @p z of tet @p t into @p pos, its boundary halffaces into @p bhf.
+    void place(int t, const Vec3i& z, Vec3d& pos, std::array<int, 3>& bhf) {
+        if (t == tet_ && placed_ && samePoint(z, z_)) {
+            pos = pos_;
+            bhf = bhf_;
+            return;
+        }
+        if (t != tet_) {
+            at_.emplace(mesh_, tets_, ds_, t);
+            tet_ = t;
+        }
+        bhf = {-1, -1, -1};
+        pos = (*at_)(z, &bhf);
+        z_ = z;
+        pos_ = pos;
+        bhf_ = bhf;
+        placed_ = true;
+    }
+
+private:
+    const TetMesh& mesh_;
+    const std::vector<TetSoS>& tets_;
+    const DartSet& ds_;
+    std::optional<TetPointPositions> at_;  // setup of tet_
+    int tet_ = -1;
+    bool placed_ = false;  // z_, pos_, bhf_ hold the last point placed (in tet_)
+    Vec3i z_;
+    Vec3d pos_;
+    std::array<int, 3> bhf_{};
+};
+
+} // namespace
 
 DartGeometry placementStage(const PlacementInput& in) {
     const DartSet& ds = *in.darts;
@@ -36,6 +83,7 @@ DartGeometry placementStage(const PlacementInput& in) {
     geo.placement.boundary_hf.resize(static_cast<std::size_t>(runsInChunk.back()));
     parallelChunks(nd, threads, [&](int k, std::size_t b, std::size_t e) {
         int run = runsInChunk[static_cast<std::size_t>(k)] - 1;  // a run continued from the previous chunk
+        PointPlacer placer(*in.mesh, *in.tets, ds);
         for (std::size_t d = b; d < e; ++d) {
             if (!alive[d]) continue;
             const Dart& D = ds.darts[d];
@@ -43,9 +91,8 @@ DartGeometry placementStage(const PlacementInput& in) {
             geo.handedness[dk] = static_cast<signed char>(frameHandedness(D.d[0], D.d[1], D.d[2]));
             if (runStart(d)) {
                 ++run;
-                auto& bhf = geo.placement.boundary_hf[static_cast<std::size_t>(run)];
-                bhf = {-1, -1, -1};
-                geo.placement.position[static_cast<std::size_t>(run)] = gridPointPosition(*in.mesh, *in.tets, ds, D.tet, D.z, &bhf);
+                placer.place(D.tet, D.z, geo.placement.position[static_cast<std::size_t>(run)],
+                             geo.placement.boundary_hf[static_cast<std::size_t>(run)]);
             }
             geo.placement.point[dk] = run;
         }
@@ -79,13 +126,12 @@ DartGeometry placementStage(const PlacementInput& in) {
         geo.placement.extra_flipped.resize(extras);
         parallelChunks(ne, threads, [&](int k, std::size_t b, std::size_t e) {
             std::size_t x = keptBefore[static_cast<std::size_t>(k)];
+            PointPlacer placer(*in.mesh, *in.tets, ds);
             for (std::size_t q = b; q < e; ++q) {
                 if (!kept(q)) continue;
                 const auto [d, h] = heir[q];
                 const Dart& D = ds.darts[static_cast<std::size_t>(d)];
-                std::array<int, 3> bhf = {-1, -1, -1};
-                geo.placement.position[first + x] = gridPointPosition(*in.mesh, *in.tets, ds, D.tet, D.z, &bhf);
-                geo.placement.boundary_hf[first + x] = bhf;
+                placer.place(D.tet, D.z, geo.placement.position[first + x], geo.placement.boundary_hf[first + x]);
                 geo.placement.extra_dart[x] = newIndex[static_cast<std::size_t>(h)];
                 geo.placement.extra_point[x] = static_cast<int>(first + x);
                 geo.placement.extra_flipped[x] = D.sign < 0 ? 1 : 0;
