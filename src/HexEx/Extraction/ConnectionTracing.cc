@@ -822,8 +822,11 @@ std::vector<DartLinks> traceConnections(const TetMesh& mesh, const Transitions& 
                         continue;
                     }
                     if (hit >= 0) {
+                        // The partner is in this run: same tet, same sign, a frame the rule
+                        // defers where this dart's is not (see above), and its entry is next
+                        // to this one, so the link back needs neither the rule nor the queue.
                         alpha[d][i] = hit;
-                        linkBack(backs, d, i, hit);
+                        writeBack(&alpha[static_cast<std::size_t>(hit)][i], static_cast<int>(d));
                         continue;
                     }
                     if (implicit) {
