@@ -225,7 +225,8 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         });
         // Labels by first appearance (alive darts in order, then used occurrences in order);
         // the root's slot in parent is reused for its label (encoded as -2 - label).
-        vlabel.assign(nd, -1);
+        // Every dart alive (involutive): each entry is written below, no -1 fill first.
+        if (!involutive || vlabel.size() != nd) vlabel.assign(nd, -1);
         std::vector<int>& parent = uf.parent;
         auto labelOf = [&](int x) {
             const int r = parent[static_cast<std::size_t>(x)];
@@ -341,7 +342,11 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
             const int size = cellOff[static_cast<std::size_t>(c) + 1] - cellOff[static_cast<std::size_t>(c)];
             bool hex = size == 48;
             int d0 = -1;  // the smallest right-handed dart (cell darts need not be sorted)
-            for (int k = 0; k < size && hex; ++k) {
+            // A cell's first dart is its smallest (both groupings list it first): if it is
+            // right-handed and no orbit size needs checking, the others need not be read.
+            const bool firstWins = hex && regularOrbits && geo.handedness[static_cast<std::size_t>(first[0])] > 0;
+            if (firstWins) d0 = first[0];
+            for (int k = 0; k < size && hex && !firstWins; ++k) {
                 const int d = first[k];
                 if (!regularOrbits && (fsize[static_cast<std::size_t>(flabel[static_cast<std::size_t>(d)])] != 8 ||
                                        ksize[static_cast<std::size_t>(klabel[static_cast<std::size_t>(d)])] != 6))
