@@ -8,6 +8,7 @@
 #include <HexEx/Extraction/DartExtraction.hh>
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/Generators/Perturbation.hh>
+#include <HexEx/Pipeline/DartStage.hh>
 
 #include <gtest/gtest.h>
 
@@ -228,4 +229,30 @@ TEST(DartExtraction, ExactAndFilteredFaceSignsEqualTheDirectEnumeration) {
     ParametrizedTetMesh pm = generateCube(3, 3);
     perturbParameters(pm, 0.2, 7);
     expectDirectDarts(pm);
+}
+
+TEST(DartExtraction, StageSignsAreTheDartsSignsForAnyThreadCount) {
+    // The stage fills the per-dart signs from the tets' volume signs: they must be the darts'
+    // own signs, and the anti count theirs, on a folded map (anti darts in small tets) and on
+    // an unfolded one with large tets (a few tets hold most darts: chunks split inside tets).
+    ParametrizedTetMesh folded = generateCube(4, 3);
+    perturbParameters(folded, 0.8, 3);
+    const ParametrizedTetMesh large = generateCube(2, 12);
+    const ParametrizedTetMesh* const maps[] = {&folded, &large};
+    for (const ParametrizedTetMesh* pm : maps) {
+        const std::vector<TetSoS> tets = buildTetSoS(pm->params, 1);
+        for (int threads : {1, 2, 3}) {
+            SCOPED_TRACE("threads = " + std::to_string(threads));
+            const DartStageOutput out = extractDartStage({&pm->mesh, &tets, 0, false, threads});
+            ASSERT_EQ(out.sign.size(), out.darts.darts.size());
+            long anti = 0, wrong = 0;
+            for (std::size_t d = 0; d < out.sign.size(); ++d) {
+                anti += out.darts.darts[d].sign < 0;
+                wrong += out.sign[d] != out.darts.darts[d].sign;
+            }
+            EXPECT_EQ(wrong, 0);
+            EXPECT_EQ(out.anti, anti);
+            EXPECT_EQ(anti > 0, pm == &folded);
+        }
+    }
 }
