@@ -14,6 +14,7 @@
 
 #include "OvmHexFaces.hh"
 
+#include "../Core/BitCount.hh"
 #include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Parallel.hh"
 
@@ -198,14 +199,6 @@ void sortBucket(Rec* b, Rec* e, Less less) {
     }
 }
 
-/// Number of set bits of @p x, inline (__builtin_popcount is a library call on a target
-/// without the popcnt instruction, and it is called per halfedge).
-inline int bitCount(std::uint32_t x) {
-    x = x - ((x >> 1) & 0x55555555u);
-    x = (x & 0x33333333u) + ((x >> 2) & 0x33333333u);
-    return static_cast<int>((((x + (x >> 4)) & 0x0F0F0F0Fu) * 0x01010101u) >> 24);
-}
-
 /// Position of local edge @p e in quad @p i (one of kT.edgeFaces[e]).
 int positionIn(int i, int e) {
     int j = 0;
@@ -346,7 +339,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbo
                 if (nb[l] < 0 || static_cast<std::size_t>(nb[l]) > l) mask |= 1u << i;
             }
             info[h] = static_cast<std::uint64_t>(mask) << kFirstLoopShift;
-            n += static_cast<std::size_t>(bitCount(mask));
+            n += static_cast<std::size_t>(bitCount32(mask));
         }
         faceBase[static_cast<std::size_t>(c)] = n;
     });
@@ -444,7 +437,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbo
                             // The quad runs along the edge from its smaller vertex, or not.
                             const bool fromSmaller = runsFromFirstEnd[le][k] == useFirstSmaller;
                             if (mask >> i & 1u)
-                                slots[4 * (f + static_cast<std::size_t>(bitCount(mask & ((1u << i) - 1u)))) +
+                                slots[4 * (f + static_cast<std::size_t>(bitCount32(mask & ((1u << i) - 1u)))) +
                                       static_cast<std::size_t>(slotOf[le][k])] =
                                     static_cast<int>(ref + (fromSmaller == startsSmaller ? 0u : 1u));
                         }
@@ -463,7 +456,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbo
     std::vector<std::size_t> edgeBase(static_cast<std::size_t>(chunks), 0);
     parallelChunks(nHex, chunks, [&](int c, std::size_t h0, std::size_t h1) {
         std::size_t n = 0;
-        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount(ownedMask(info[h])));
+        for (std::size_t h = h0; h < h1; ++h) n += static_cast<std::size_t>(bitCount32(ownedMask(info[h])));
         edgeBase[static_cast<std::size_t>(c)] = n;
     });
     const std::size_t nEdges = prefix(edgeBase);
@@ -473,7 +466,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbo
         for (std::size_t h = h0; h < h1; ++h) {
             const std::uint64_t x = info[h];
             info[h] = (x & 0xFFFFFFFFu) | static_cast<std::uint64_t>(n) << 32;  // n < INT_MAX / 2
-            n += static_cast<std::size_t>(bitCount(ownedMask(x)));
+            n += static_cast<std::size_t>(bitCount32(ownedMask(x)));
         }
     });
     out.edges.resize(nEdges);
@@ -496,7 +489,7 @@ bool ovmHexFaces(const HexMesh& mesh, int threads, OvmFaces& out, HexFaceNeighbo
                     const std::uint64_t x = info[ref / 32];
                     const std::uint32_t r = ref / 2 % 16;
                     const std::size_t e = static_cast<std::size_t>(x >> 32) +
-                                          static_cast<std::size_t>(bitCount(ownedMask(x) & ((1u << r) - 1u)));
+                                          static_cast<std::size_t>(bitCount32(ownedMask(x) & ((1u << r) - 1u)));
                     values[j] = static_cast<int>(2 * e + (ref & 1u));
                 }
             }

@@ -5,6 +5,7 @@
 
 #include "AssembledMeshCheck.hh"
 
+#include "../Core/BitCount.hh"
 #include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Parallel.hh"
 #include "../Mesh/HexMeshCheck.hh"
@@ -245,8 +246,8 @@ QuadPass distinctQuads(const HexMesh& mesh, int chunks, const TwinFaces& tw, int
             }
             const unsigned skipped = tw.unfiled(h, c);
             filed[h] = static_cast<unsigned char>(kGoodHex | (~skipped & 63u));
-            skippedTwins[static_cast<std::size_t>(k)] += __builtin_popcount(skipped & kTwinSkipped);
-            privatePairs[static_cast<std::size_t>(k)] += __builtin_popcount(skipped & kTwinFiled);
+            skippedTwins[static_cast<std::size_t>(k)] += bitCount32(skipped & kTwinSkipped);
+            privatePairs[static_cast<std::size_t>(k)] += bitCount32(skipped & kTwinFiled);
             for (int f = 0; f < 6; ++f) {
                 if ((skipped >> f) & 1) continue;
                 const int* l = kHexFaces[f];
