@@ -48,8 +48,12 @@ ManualRun runStages(const ParametrizedTetMesh& pm, int threads, bool implicitReq
     r.anti = darts.anti;
     ConnectOutput links = connectStage({&pm.mesh, &pre.transitions, &pre.tets, &darts.darts, threads, {}});
     addToReport(links, r.report);
-    const AnnihilateOutput survivors =
-        annihilateStage({&links.alpha, &darts.sign, true, darts.anti, oneHeirPerPoint ? &darts.darts : nullptr, 1, {}, {}});
+    // The retry and link settings of extractHexMesh(), so that the run stays the same as the
+    // extractor's whichever annihilation path (ascending first, phase by phase first) a map takes.
+    AnnihilateInput annihilateIn{&links.alpha, &darts.sign, true, darts.anti, oneHeirPerPoint ? &darts.darts : nullptr, 1, {}, {}};
+    annihilateIn.retry.enabled = !implicit;
+    annihilateIn.mutual_links = true;
+    const AnnihilateOutput survivors = annihilateStage(annihilateIn);
     addToReport(survivors, r.report);
     r.heirs = static_cast<long>(survivors.heir.size());
     r.survivors = survivors.n_alive;
