@@ -232,9 +232,10 @@ TEST(DartExtraction, ExactAndFilteredFaceSignsEqualTheDirectEnumeration) {
 }
 
 TEST(DartExtraction, StageSignsAreTheDartsSignsForAnyThreadCount) {
-    // The stage fills the per-dart signs from the tets' volume signs: they must be the darts'
-    // own signs, and the anti count theirs, on a folded map (anti darts in small tets) and on
-    // an unfolded one with large tets (a few tets hold most darts: chunks split inside tets).
+    // The stage fills the per-dart signs from the darts or from the tets' volume signs: they
+    // must be the darts' own signs, and the anti count theirs, on a folded map (anti darts in
+    // small tets) and on an unfolded one with large tets (a few tets hold most darts: chunks
+    // split inside tets).
     ParametrizedTetMesh folded = generateCube(4, 3);
     perturbParameters(folded, 0.8, 3);
     const ParametrizedTetMesh large = generateCube(2, 12);
@@ -253,6 +254,8 @@ TEST(DartExtraction, StageSignsAreTheDartsSignsForAnyThreadCount) {
             EXPECT_EQ(wrong, 0);
             EXPECT_EQ(out.anti, anti);
             EXPECT_EQ(anti > 0, pm == &folded);
+            // Both ways of filling are used: per dart (few darts per tet), per tet (many).
+            EXPECT_EQ(out.darts.darts.size() >= 8 * tets.size(), pm == &large);
         }
     }
 }
