@@ -72,6 +72,13 @@ TEST(AssembledMeshCheck, FindsRepeatedCornersAndPinchedBoundaries) {
     m.hexes[0][6] = 5;
     EXPECT_EQ(checkAssembledHexes(m).repeated_corner_hexes, 1);
     EXPECT_EQ(checkAssembledHexes(HexMesh{m.vertices, {{0, 1, 2, 3, 4, 5, 6, 99}}, {}}).repeated_corner_hexes, 1);
+    // Negative corners are out of range too, -1 included (in any of the eight places).
+    for (int i = 0; i < 8; ++i)
+        for (int bad : {-1, -2}) {
+            HexMesh n = column(1);
+            n.hexes[0][static_cast<std::size_t>(i)] = bad;
+            EXPECT_EQ(checkAssembledHexes(n).repeated_corner_hexes, 1) << "corner " << i << " = " << bad;
+        }
     // Two hexes touching in one vertex (vertex 6 of the first is vertex 0 of the second).
     HexMesh p = column(1);
     for (int k = 0; k < 2; ++k)

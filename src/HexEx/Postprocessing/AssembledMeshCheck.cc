@@ -174,11 +174,10 @@ inline bool distinctInRange(const std::array<int, 8>& c, long nv) {
         eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(b, b1), _mm_cmpeq_epi32(b, b2)));
         eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(a, b), _mm_cmpeq_epi32(a, b1)));
         eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpeq_epi32(a, b2), _mm_cmpeq_epi32(a, b3)));
-        const __m128i lim = _mm_set1_epi32(static_cast<int>(nv)), neg = _mm_set1_epi32(-1);
-        // Out of range: c < 0 or c >= nv.
-        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(neg, a), _mm_cmpgt_epi32(neg, b)));
-        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(a, _mm_sub_epi32(lim, _mm_set1_epi32(1))),
-                                           _mm_cmpgt_epi32(b, _mm_sub_epi32(lim, _mm_set1_epi32(1)))));
+        const __m128i zero = _mm_setzero_si128(), last = _mm_set1_epi32(static_cast<int>(nv - 1));
+        // Out of range: 0 > c or c > nv - 1.
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(zero, a), _mm_cmpgt_epi32(zero, b)));
+        eq = _mm_or_si128(eq, _mm_or_si128(_mm_cmpgt_epi32(a, last), _mm_cmpgt_epi32(b, last)));
         return _mm_movemask_epi8(eq) == 0;
     }
 #endif
