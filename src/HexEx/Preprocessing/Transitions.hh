@@ -3,6 +3,7 @@
 /// @ingroup pipeline
 /// Transition functions per halfface (paper 4.1.1) and singularity detection.
 
+#include "../Core/DefaultInitAllocator.hh"
 #include "../Core/Prefetch.hh"
 #include "../Grid/GridTransform.hh"
 #include "../Mesh/ParametrizedTetMesh.hh"
@@ -48,7 +49,10 @@ public:
     void set_rotation_only(std::size_t h, Rotation r) { code_[h] = static_cast<std::uint8_t>(r.index()); }
     /// Adds translations of halffaces whose rotation is set (@p list in any order, each
     /// halfface once, none stored yet); used after a parallel set_rotation_only() pass.
-    void add_translations(std::vector<std::pair<int, Vec3i>> list);
+    void add_translations(const std::vector<std::pair<int, Vec3i>>& list);
+    /// add_translations() of the lists @p parts together (each halfface in one part at
+    /// most), on @p threads threads where the translations are stored densely.
+    void add_translations(const std::vector<std::vector<std::pair<int, Vec3i>>>& parts, int threads);
 
 private:
     static constexpr std::uint8_t kRotationMask = 0x1F;
@@ -56,7 +60,7 @@ private:
     Vec3i translation(std::size_t h) const;
     std::vector<std::uint8_t> code_;                 // rotation index | kTranslated
     std::vector<std::pair<int, Vec3i>> sparse_;      // sorted by halfface, while dense_ is empty
-    std::vector<Vec3i> dense_;                       // per halfface, once translations are many
+    DefaultInitVector<Vec3i> dense_;                 // per halfface, once translations are many (zeroed in parallel)
 };
 
 /// Transitions of a parametrized tet mesh.
