@@ -8,8 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <random>
+#include <vector>
 
 using namespace HexEx;
 
@@ -161,4 +164,140 @@ TEST(HexValidity, ComputeQualityDoesNotDependOnThreads) {
     EXPECT_EQ(one.mean_scaled_jacobian, two.mean_scaled_jacobian);
     EXPECT_GE(one.invalid_hexes, one.inverted_hexes);
     EXPECT_EQ(hexValidities(mesh, 2).back(), HexValidity::Invalid);
+}
+
+namespace {
+
+/// Hexes for the pair functions: random ones from nearly cubes to heavily tangled, nearly
+/// flat and nearly collapsed ones (values close to the rounding bound), and special ones
+/// (zero edges, signed zeros, NaN, infinity, overflowing and underflowing coordinates).
+std::vector<Hex> pairTestHexes() {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> unit(0, 1);
+    std::vector<Hex> hexes;
+    for (const double amplitude : {0.05, 0.3, 0.45, 0.6, 1.0})
+        for (int n = 0; n < 600; ++n) hexes.push_back(randomHex(rng, amplitude));
+    for (int n = 0; n < 400; ++n) {
+        Hex flat = randomHex(rng, 0.02);
+        const double thickness = std::ldexp(unit(rng), -20 - static_cast<int>(unit(rng) * 30));
+        for (int i = 4; i < 8; ++i) flat[static_cast<std::size_t>(i)][2] = flat[static_cast<std::size_t>(i - 4)][2] + thickness;
+        hexes.push_back(flat);
+        Hex pinched = randomHex(rng, 0.02);
+        const std::size_t c = static_cast<std::size_t>(unit(rng) * 8) % 8;
+        pinched[c] = pinched[(c + 1) % 8] + Vec3d(unit(rng), unit(rng), unit(rng)) * std::ldexp(1.0, -40);
+        hexes.push_back(pinched);
+    }
+    // Collinear and coplanar corners of small integers: corner Jacobians of +0 and -0.
+    std::uniform_int_distribution<int> small(-2, 2);
+    for (int n = 0; n < 400; ++n) {
+        Hex h;
+        for (auto& p : h) p = Vec3d(small(rng), n % 2 ? small(rng) : 0, 0);
+        hexes.push_back(h);
+    }
+    hexes.push_back(positiveCornersNegativeInside());
+    hexes.push_back(unitCube(0.0));
+    hexes.push_back(unitCube(-0.0));
+    hexes.push_back(unitCube(1e150));    // rounding bound overflows: undecided
+    hexes.push_back(unitCube(1e-160));   // Jacobians underflow
+    hexes.push_back(unitCube(1e300));    // edge lengths overflow
+    Hex mirrored = unitCube();
+    for (auto& p : mirrored) p[0] = -p[0];
+    hexes.push_back(mirrored);
+    Hex flat = unitCube();
+    for (int i = 4; i < 8; ++i) flat[static_cast<std::size_t>(i)][2] = -0.0;
+    hexes.push_back(flat);
+    for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity()}) {
+        Hex h = unitCube();
+        h[6][1] = bad;
+        hexes.push_back(h);
+    }
+    return hexes;
+}
+
+std::uint64_t bitsOf(double x) {
+    std::uint64_t b;
+    std::memcpy(&b, &x, sizeof b);
+    return b;
+}
+
+} // namespace
+
+TEST(HexValidity, PairsGiveTheSameValuesAsOneAtATime) {
+    const std::vector<Hex> hexes = pairTestHexes();
+    int verdicts[3] = {0, 0, 0};
+    int zeros = 0, negative_zeros = 0;
+    for (std::size_t i = 0; i < hexes.size(); ++i) {
+        const Hex& a = hexes[i];
+        const double sj_a = hexScaledJacobian(a);
+        const HexValidity v_a = classifyHexValidity(a);
+        ++verdicts[static_cast<int>(v_a)];
+        zeros += sj_a == 0;
+        negative_zeros += sj_a == 0 && std::signbit(sj_a);
+        // a in both lanes, beside its neighbour and beside a far one.
+        for (const std::size_t j : {(i + 1) % hexes.size(), (i * 7919 + 13) % hexes.size()}) {
+            const Hex& b = hexes[j];
+            double sj[2];
+            HexValidity v[2];
+            hexScaledJacobianPair(a, b, sj);
+            classifyHexValidityPair(a, b, v);
+            EXPECT_EQ(bitsOf(sj[0]), bitsOf(sj_a)) << i;
+            EXPECT_EQ(bitsOf(sj[1]), bitsOf(hexScaledJacobian(b))) << j;
+            EXPECT_EQ(v[0], v_a) << i;
+            EXPECT_EQ(v[1], classifyHexValidity(b)) << j;
+            hexScaledJacobianPair(b, a, sj);
+            classifyHexValidityPair(b, a, v);
+            EXPECT_EQ(bitsOf(sj[1]), bitsOf(sj_a)) << i;
+            EXPECT_EQ(v[1], v_a) << i;
+        }
+    }
+    // Every verdict and degenerate values occur, so the test covers both ways.
+    EXPECT_GE(verdicts[static_cast<int>(HexValidity::Valid)], 1000);
+    EXPECT_GE(verdicts[static_cast<int>(HexValidity::Invalid)], 500);
+    EXPECT_GE(verdicts[static_cast<int>(HexValidity::Undecided)], 1);
+    EXPECT_GE(zeros, 4);
+    EXPECT_GE(negative_zeros, 1);
+}
+
+TEST(HexValidity, ComputeQualityEqualsOneHexAtATime) {
+    // An odd number of hexes: chunks of odd and even length at 1, 2, 3 threads.
+    const std::vector<Hex> hexes = pairTestHexes();
+    HexMesh mesh;
+    for (int round = 0; round < 2; ++round)
+        for (const Hex& h : hexes) {
+            const int base = static_cast<int>(mesh.vertices.size());
+            mesh.vertices.insert(mesh.vertices.end(), h.begin(), h.end());
+            mesh.hexes.push_back({base, base + 1, base + 2, base + 3, base + 4, base + 5, base + 6, base + 7});
+        }
+    mesh.hexes.insert(mesh.hexes.begin() + 1001, {0, 1, 2, 3, 4, 5, 6, -1});  // out of range: invalid
+    if (mesh.hexes.size() % 2 == 0) mesh.hexes.push_back(mesh.hexes.front());
+    ASSERT_GE(mesh.hexes.size(), 4096u);
+    // The reference: one hex at a time, summed in hex order.
+    double sum = 0, mn = 0;
+    long inverted = 0, invalid = 0, undecided = 0, first_invalid = -1;
+    for (std::size_t h = 0; h < mesh.hexes.size(); ++h) {
+        double sj = 0;
+        HexValidity v = HexValidity::Invalid;
+        if (mesh.hexes[h][7] >= 0) {
+            Hex p;
+            for (std::size_t i = 0; i < 8; ++i) p[i] = mesh.vertices[static_cast<std::size_t>(mesh.hexes[h][i])];
+            sj = hexScaledJacobian(p);
+            v = classifyHexValidity(p);
+        }
+        sum += sj;
+        mn = h == 0 ? sj : std::min(mn, sj);
+        inverted += sj <= 0;
+        if (v == HexValidity::Invalid && first_invalid < 0) first_invalid = static_cast<long>(h);
+        invalid += v == HexValidity::Invalid;
+        undecided += v == HexValidity::Undecided;
+    }
+    for (const int threads : {1, 2, 3}) {
+        const QualityStats q = computeQuality(mesh, threads);
+        EXPECT_EQ(bitsOf(q.mean_scaled_jacobian), bitsOf(sum / static_cast<double>(mesh.hexes.size()))) << threads;
+        EXPECT_EQ(bitsOf(q.min_scaled_jacobian), bitsOf(mn)) << threads;
+        EXPECT_EQ(q.inverted_hexes, inverted) << threads;
+        EXPECT_EQ(q.invalid_hexes, invalid) << threads;
+        EXPECT_EQ(q.undecided_hexes, undecided) << threads;
+        EXPECT_EQ(q.first_invalid_hex, first_invalid) << threads;
+    }
 }

@@ -24,6 +24,10 @@ double cornerScaledJacobian(const Vec3d& a, const Vec3d& b, const Vec3d& c);
 /// A unit cube gives 1; a hex with an inverted (or degenerate) corner gives a value <= 0.
 double hexScaledJacobian(const std::array<Vec3d, 8>& p);
 
+/// hexScaledJacobian() of the hexes @p a and @p b into @p out[0] and @p out[1], one in each
+/// lane of SSE2 registers: the same operations, hence the same bits (without SSE2: two calls).
+void hexScaledJacobianPair(const std::array<Vec3d, 8>& a, const std::array<Vec3d, 8>& b, double out[2]);
+
 /// Scaled Jacobian of every hex of @p mesh, in hex order. Hexes that reference a vertex
 /// index out of range get 0 (they count as degenerate).
 std::vector<double> scaledJacobians(const HexMesh& mesh);

@@ -4,6 +4,7 @@
 #include "HexValidity.hh"
 
 #include "../Predicates/ExactPredicates.hh"
+#include "PointPairs.hh"
 
 #include <CGAL/Interval_nt.h>
 
@@ -44,16 +45,10 @@ void nodes3(const V3<NT>& a, const V3<NT>& b, V3<NT> out[3]) {
     out[2] = b;
 }
 
-/// J at the 27 nodes (a/2, b/2, c/2), a, b, c in {0, 1, 2}; entry a + 3 b + 9 c.
+/// J at the 27 nodes (a/2, b/2, c/2), a, b, c in {0, 1, 2}, of the hex with the corners
+/// @p P (indexed by the reference corner); entry a + 3 b + 9 c.
 template <class NT>
-void jacobianAtNodes(const std::array<Vec3d, 8>& p, NT f[27]) {
-    V3<NT> P[2][2][2];
-    for (int i = 0; i < 2; ++i)
-        for (int j = 0; j < 2; ++j)
-            for (int k = 0; k < 2; ++k) {
-                const Vec3d& q = p[kCorner[i][j][k]];
-                P[i][j][k] = {NT(q[0]), NT(q[1]), NT(q[2])};
-            }
+void jacobianAtNodes(const V3<NT> P[2][2][2], NT f[27]) {
     // Edge vectors along each axis, indexed by the other two corner coordinates.
     V3<NT> eu[2][2], ev[2][2], ew[2][2];
     for (int a = 0; a < 2; ++a)
@@ -79,6 +74,19 @@ void jacobianAtNodes(const std::array<Vec3d, 8>& p, NT f[27]) {
     for (int c = 0; c < 3; ++c)
         for (int b = 0; b < 3; ++b)
             for (int a = 0; a < 3; ++a) f[a + 3 * b + 9 * c] = det(du[b][c], dv[a][c], dw[a][b]);
+}
+
+/// jacobianAtNodes() of the hex with corners @p p (VTK order).
+template <class NT>
+void jacobianAtNodes(const std::array<Vec3d, 8>& p, NT f[27]) {
+    V3<NT> P[2][2][2];
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k) {
+                const Vec3d& q = p[kCorner[i][j][k]];
+                P[i][j][k] = {NT(q[0]), NT(q[1]), NT(q[2])};
+            }
+    jacobianAtNodes(P, f);
 }
 
 /// The other two strides of the axis of stride S (1: u, 3: v, 9: w).
@@ -209,6 +217,18 @@ bool cornersExactlyPositive(const std::array<Vec3d, 8>& p) {
     return true;
 }
 
+/// Forward bound of the rounding error of every double coefficient, node value and
+/// sub-box coefficient (Documentation/algorithm.md, "Certified validity of the hexes") of a
+/// hex whose largest |coordinate| is @p max_coord (C) and whose largest |component| of an
+/// edge is @p max_edge (L): |J| <= (sqrt(3) L)^3, the Bernstein conversion grows values by
+/// at most 27, the edge vectors carry an error of eps * C, and every de Casteljau level
+/// adds a few ulps. NT is double or Lanes2 (one bound per lane, the same operations).
+template <class NT>
+NT roundingBound(const NT& max_edge, const NT& max_coord) {
+    const double eps = std::numeric_limits<double>::epsilon();
+    return max_edge * (2048 * eps * 3) * max_edge * (max_edge * 2.0 + max_coord);
+}
+
 } // namespace
 
 std::array<double, 27> jacobianBernsteinCoefficients(const std::array<Vec3d, 8>& p) {
@@ -269,18 +289,74 @@ HexValidity classifyHexValidity(const std::array<Vec3d, 8>& p, const HexValidity
                 max_edge = std::max(max_edge, std::abs(p[kCorner[a][1][b]][d] - p[kCorner[a][0][b]][d]));
                 max_edge = std::max(max_edge, std::abs(p[kCorner[a][b][1]][d] - p[kCorner[a][b][0]][d]));
             }
-    // Forward bound of the rounding error of every double coefficient, node value and
-    // sub-box coefficient (Documentation/algorithm.md, "Certified validity of the hexes"):
-    // |J| <= (sqrt(3) L)^3, the Bernstein conversion grows values by at most 27, the edge
-    // vectors carry an error of eps * C, and every de Casteljau level adds a few ulps.
-    const double eps = std::numeric_limits<double>::epsilon();
-    const double tol = 2048 * eps * 3 * max_edge * max_edge * (2 * max_edge + max_coord);
+    const double tol = roundingBound(max_edge, max_coord);
     if (!std::isfinite(tol)) return HexValidity::Undecided;
 
     const HexValidity fast = classifyWith<double>(p, DoubleSigns{tol}, options);
     if (fast != HexValidity::Undecided) return fast;
     if (!cornersExactlyPositive(p)) return HexValidity::Invalid;
     return classifyWith<Interval>(p, IntervalSigns{}, options);
+}
+
+#if defined(__SSE2__)
+namespace {
+
+/// Two doubles in the lanes of an SSE2 register, with the arithmetic jacobianAtNodes(),
+/// lagrangeToBernstein() and roundingBound() use: each lane sees the operations of double.
+struct Lanes2 {
+    __m128d v;
+};
+
+Lanes2 operator+(const Lanes2& a, const Lanes2& b) { return {_mm_add_pd(a.v, b.v)}; }
+Lanes2 operator-(const Lanes2& a, const Lanes2& b) { return {_mm_sub_pd(a.v, b.v)}; }
+Lanes2 operator*(const Lanes2& a, const Lanes2& b) { return {_mm_mul_pd(a.v, b.v)}; }
+Lanes2 operator*(const Lanes2& a, double s) { return {_mm_mul_pd(a.v, _mm_set1_pd(s))}; }
+
+/// Lane mask of x > t.
+__m128d above(const Lanes2& x, const Lanes2& t) { return _mm_cmpgt_pd(x.v, t.v); }
+
+} // namespace
+#endif
+
+void classifyHexValidityPair(const std::array<Vec3d, 8>& a, const std::array<Vec3d, 8>& b, HexValidity out[2]) {
+#if defined(__SSE2__)
+    const std::array<Vec3d, 8>* hex[2] = {&a, &b};
+    V3<Lanes2> P[2][2][2];
+    const __m128d largest = _mm_set1_pd(std::numeric_limits<double>::max());
+    __m128d finite = _mm_castsi128_pd(_mm_set1_epi64x(-1));
+    Lanes2 max_coord{_mm_setzero_pd()}, max_edge{_mm_setzero_pd()};
+    for (int i = 0; i < 2; ++i)
+        for (int j = 0; j < 2; ++j)
+            for (int k = 0; k < 2; ++k) {
+                const int c = kCorner[i][j][k];
+                const PointPair q = loadPointPair(a[c], b[c]);
+                P[i][j][k] = {{q.x}, {q.y}, {q.z}};
+                const __m128d coords[3] = {absPair(q.x), absPair(q.y), absPair(q.z)};
+                for (const __m128d x : coords) {
+                    finite = _mm_and_pd(finite, _mm_cmple_pd(x, largest));
+                    max_coord.v = _mm_max_pd(max_coord.v, x);
+                }
+            }
+    // classifyHexValidity()'s L over the same differences (the maximum of finite values
+    // does not depend on the order; a lane with a non-finite coordinate goes there anyway).
+    for (int s = 0; s < 2; ++s)
+        for (int t = 0; t < 2; ++t)
+            for (const V3<Lanes2>& e : {sub(P[1][s][t], P[0][s][t]), sub(P[s][1][t], P[s][0][t]),
+                                        sub(P[s][t][1], P[s][t][0])})
+                for (const Lanes2& x : {e.x, e.y, e.z}) max_edge.v = _mm_max_pd(max_edge.v, absPair(x.v));
+    const Lanes2 tol = roundingBound(max_edge, max_coord);
+    Lanes2 f[27];
+    jacobianAtNodes(P, f);
+    __m128d valid = finite;
+    for (const Lanes2& x : f) valid = _mm_and_pd(valid, above(x, tol));
+    lagrangeToBernstein(f);
+    for (const Lanes2& x : f) valid = _mm_and_pd(valid, above(x, tol));
+    const int proved = _mm_movemask_pd(valid);
+    for (int l = 0; l < 2; ++l) out[l] = (proved >> l) & 1 ? HexValidity::Valid : classifyHexValidity(*hex[l]);
+#else
+    out[0] = classifyHexValidity(a);
+    out[1] = classifyHexValidity(b);
+#endif
 }
 
 const char* toString(HexValidity v) {

@@ -58,6 +58,13 @@ double evaluateBernstein(const std::array<double, 27>& b, double u, double v, do
 /// Certified validity of the trilinear hex with corners @p p (VTK order); see the file comment.
 HexValidity classifyHexValidity(const std::array<Vec3d, 8>& p, const HexValidityOptions& options = {});
 
+/// classifyHexValidity() (default options) of the hexes @p a and @p b into @p out[0] and
+/// @p out[1]. The first test runs for both at once, one in each lane of SSE2 registers, with
+/// the same operations as classifyHexValidity()'s double-precision pass: a hex whose 27 node
+/// values and 27 Bernstein coefficients all exceed the rounding bound is Valid, as there;
+/// any other hex is passed to classifyHexValidity(). The verdicts are always the same.
+void classifyHexValidityPair(const std::array<Vec3d, 8>& a, const std::array<Vec3d, 8>& b, HexValidity out[2]);
+
 /// Short lower-case name of @p v ("valid", "invalid", "undecided").
 const char* toString(HexValidity v);
 
