@@ -381,6 +381,19 @@ TEST(TetMesh, AdjacencyMatchesABruteForceReferenceOnAnyThreadCount) {
             ASSERT_EQ(o.is_boundary(EdgeHandle(int(e))), m.is_boundary(EdgeHandle(int(e))));
         }
         for (std::size_t v = 0; v < nv; ++v) ASSERT_EQ(o.is_boundary(VertexHandle(int(v))), m.is_boundary(VertexHandle(int(v))));
+        // The vertex -> tets table (counted and filled in chunks of tets on several threads).
+        for (std::size_t v = 0; v < nv; ++v) {
+            const auto a = m.vertex_cells(VertexHandle(int(v))), b = o.vertex_cells(VertexHandle(int(v)));
+            ASSERT_TRUE(std::equal(a.first, a.second, b.first, b.second)) << "vertex " << v << ", " << t + 1 << " threads";
+        }
+    }
+    // Each vertex's tets: exactly the tets that contain it, ascending.
+    std::vector<std::vector<int>> refStar(nv);
+    for (std::size_t c = 0; c < nc; ++c)
+        for (int i = 0; i < 4; ++i) refStar[std::size_t(tets[c][std::size_t(i)])].push_back(int(c));
+    for (std::size_t v = 0; v < nv; ++v) {
+        const auto a = m.vertex_cells(VertexHandle(int(v)));
+        ASSERT_EQ(std::vector<int>(a.first, a.second), refStar[v]) << "vertex " << v;
     }
 }
 

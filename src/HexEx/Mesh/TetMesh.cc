@@ -84,17 +84,36 @@ EdgeHandle TetMesh::find_edge(VertexHandle a, VertexHandle b) const {
 
 void TetMesh::build_adjacency(int threads) {
     const std::size_t nv = positions_.size(), nc = cells_.size();
-    // Vertex -> cells (counting sort keeps cells ascending).
-    vc_off_.assign(nv + 1, 0);
-    for (const auto& c : cells_)
-        for (auto v : c) ++vc_off_[v.uidx() + 1];
-    for (std::size_t i = 0; i < nv; ++i) vc_off_[i + 1] += vc_off_[i];
-    vc_idx_.resize(vc_off_[nv]);
-    {
-        std::vector<int> fill(vc_off_.begin(), vc_off_.end() - 1);
-        for (std::size_t c = 0; c < nc; ++c)
-            for (auto v : cells_[c]) vc_idx_[fill[v.uidx()]++] = static_cast<int>(c);
+    // Vertex -> cells (counting sort keeps cells ascending). In chunks of cells: each
+    // counts its cells per vertex; per vertex, the chunks' counts become their first slots,
+    // chunk after chunk (cells stay ascending within a vertex); each chunk fills its slots.
+    // The same table for any chunk count.
+    const int chunks = nc < 50000 ? 1 : resolveThreadCount(threads);
+    std::vector<std::vector<int>> next(static_cast<std::size_t>(chunks));  // per chunk and vertex: count, then next slot
+    parallelChunks(nc, chunks, [&](int k, std::size_t b, std::size_t e) {
+        std::vector<int>& count = next[static_cast<std::size_t>(k)];
+        count.assign(nv, 0);
+        for (std::size_t c = b; c < e; ++c)
+            for (auto v : cells_[c]) ++count[v.uidx()];
+    });
+    vc_off_.resize(nv + 1);
+    int at = 0;
+    for (std::size_t v = 0; v < nv; ++v) {
+        vc_off_[v] = at;
+        for (std::vector<int>& count : next) {
+            const int m = count[v];
+            count[v] = at;
+            at += m;
+        }
     }
+    vc_off_[nv] = at;
+    vc_idx_.resize(static_cast<std::size_t>(at));
+    parallelChunks(nc, chunks, [&](int k, std::size_t b, std::size_t e) {
+        int* const slot = next[static_cast<std::size_t>(k)].data();
+        for (std::size_t c = b; c < e; ++c)
+            for (auto v : cells_[c]) vc_idx_[static_cast<std::size_t>(slot[v.uidx()]++)] = static_cast<int>(c);
+    });
+    std::vector<std::vector<int>>().swap(next);
 
     // Opposite halffaces. Every face is matched within the bucket of its smallest vertex
     // v: the halffaces of the tets around v whose smallest vertex is v, keyed by their
@@ -164,7 +183,6 @@ void TetMesh::build_adjacency(int threads) {
            << cells_[c][kFaceCorners[i][2]] << ") of tet " << c << " is shared by " << bad[1] << " tets";
         throw InputError(os.str());
     }
-    const int chunks = nc < 50000 ? 1 : resolveThreadCount(threads);
 
     // Faces.
     // A halfface opens a new face unless its opposite comes first; faces are numbered in
