@@ -1,6 +1,9 @@
 // The independent hex mesh check (hexex validate) agrees with the extractor's own report on
 // every generated case, after a round trip through the .vtu and .ovm writers and readers.
 
+#include "../TestSupport/HexGMapFixtures.hh"
+
+#include <HexEx/GMap/GMapValidator.hh>
 #include <HexEx/Generators/Generators.hh>
 #include <HexEx/Generators/Perturbation.hh>
 #include <HexEx/HexEx.hh>
@@ -54,4 +57,33 @@ TEST(ValidatorAgreement, GeneratedCases) {
     auto p = generateCube(4, 4);
     perturbParameters(p, 1.0, 2);
     expectAgreement(p, "perturbed cube");
+}
+
+// The work validateHexGMap() runs beside its cell search (the assembly's occurrence ranks):
+// called once, with the checks' threads (all but the cell search's one when they overlap,
+// on maps of at least 65536 darts), and the validation and labels are the same as without.
+TEST(ValidatorAgreement, WorkBesideTheCellSearchRunsOnceAndChangesNothing) {
+    for (const int hexes : {2, 1400}) {  // 96 darts (no overlap) and 67200 darts
+        GMap<3> g = HexExTestSupport::makeHexGMaps(hexes);
+        if (hexes == 2) g.link(DartHandle(0), DartHandle(0), 2);  // one broken link: not valid
+        HexOrbitLabels plain;
+        const GMapValidation expected = validateHexGMap(g, &plain, 1);
+        for (const int threads : {1, 2, 3}) {
+            SCOPED_TRACE(std::to_string(hexes) + " hexes, " + std::to_string(threads) + " threads");
+            int calls = 0, given = 0;
+            HexOrbitLabels labels;
+            const GMapValidation v = validateHexGMap(g, &labels, threads, [&](int t) {
+                ++calls;
+                given = t;
+            });
+            EXPECT_EQ(calls, 1);
+            EXPECT_EQ(given, hexes > 1000 && threads >= 2 ? threads - 1 : threads);
+            EXPECT_EQ(v.summary(), expected.summary());
+            EXPECT_EQ(v.valid(), hexes > 1000);
+            EXPECT_EQ(labels.cell, plain.cell);
+            EXPECT_EQ(labels.face, plain.face);
+            EXPECT_EQ(labels.corner, plain.corner);
+            EXPECT_EQ(labels.cell_darts, plain.cell_darts);
+        }
+    }
 }

@@ -344,7 +344,7 @@ std::vector<int> labelOrbits(const GMap<3>& g, unsigned mask, int* n_labels) {
     return label;
 }
 
-GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int threads) {
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int threads, const std::function<void(int)>& beside) {
     GMapValidation v;
     const auto& L = g.links();
     const std::size_t n = g.n_darts();
@@ -417,11 +417,15 @@ GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels, int thr
             } else {
                 parallelChunks(n, chunks, checks);
                 if (!cornersInChecks && involutive()) corners = labelCorners(g);
+                if (beside) beside(checkThreads);
             }
         });
     } else {
         parallelChunks(n, chunks, checks);
     }
+    // Without the overlap the work beside runs first, on every thread (its result does not
+    // depend on the thread count), as if it were before the validation.
+    if (!overlap && beside) beside(std::max(1, threads));
     for (const auto& w : part) {
         v.darts += w.darts;
         v.not_involution += w.not_involution;

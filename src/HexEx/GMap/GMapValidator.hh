@@ -6,6 +6,7 @@
 
 #include "GMap.hh"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -71,7 +72,12 @@ struct HexOrbitLabels {
 /// order of their smallest dart. Corners are always numbered in order of their smallest dart.
 /// @p threads runs the checks (and the independent orbit labelings of the general case) in
 /// parallel; the result does not depend on it.
-GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1);
+/// @p beside, if given, is work that does not depend on the validation: it is called once,
+/// with the number of threads it may use, on the checks' threads after the checks when they
+/// run beside the sequential cell search (two or more threads, large maps), else after the
+/// validation's own work.
+GMapValidation validateHexGMap(const GMap<3>& g, HexOrbitLabels* labels = nullptr, int threads = 1,
+                               const std::function<void(int)>& beside = nullptr);
 
 /// Output vertices of each example's face: @p vertex_label gives the output vertex of every
 /// dart (-1 for none); the face is walked from the example dart by alpha_0 and alpha_1

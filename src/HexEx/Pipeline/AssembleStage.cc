@@ -1,6 +1,7 @@
 #include "AssembleStage.hh"
 
 #include "../Postprocessing/AssembledMeshCheck.hh"
+#include "../Postprocessing/OccurrenceRanks.hh"
 
 namespace HexEx {
 
@@ -11,14 +12,19 @@ AssembleOutput assembleStage(const AssembleInput& in) {
     {
         // The orbit labels (about 20 bytes per dart) are freed before the mesh check.
         HexOrbitLabels labels;
-        out.validation = validateHexGMap(*in.map, &labels, in.threads);
+        // The occurrences of the vertex union-find do not depend on the validation: with two
+        // or more threads they are ranked beside the validator's sequential cell search.
+        OccurrenceRanks ranks;
+        auto rank = [&](int threads) { ranks = rankOccurrences(*in.map, *in.implicit, threads); };
+        out.validation = validateHexGMap(*in.map, &labels, in.threads,
+                                         in.implicit ? std::function<void(int)>(rank) : std::function<void(int)>());
         // With the darts grouped by cell (cell_offset), the assembly does not read the cell
         // label per dart: its array (4 bytes per dart) is reused for the vertex labels.
         std::vector<int> storage;
         if (!labels.cell_offset.empty()) storage.swap(labels.cell);
         out.stats.violations = &out.validation;
         out.mesh = assembleHexMesh(*in.map, *in.geometry, labels, out.stats, in.implicit, in.threads,
-                                   in.want_hex_darts ? &out.hex_darts : nullptr, &storage, &privateVertices);
+                                   in.want_hex_darts ? &out.hex_darts : nullptr, &storage, &privateVertices, &ranks);
         out.stats.violations = nullptr;
     }
     if (out.stats.degenerate_faces > 0)

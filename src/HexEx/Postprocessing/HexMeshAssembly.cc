@@ -1,16 +1,13 @@
 #include "HexMeshAssembly.hh"
+#include "OccurrenceRanks.hh"
 
 #include "VertexPreimageChoice.hh"
 
-#include "../Core/BitCount.hh"
 #include "../Core/Parallel.hh"
 #include "../Core/ConcurrentUnionFind.hh"
 #include "../GMap/GMapValidator.hh"
 
 #include <algorithm>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 #include <cstdint>
 #include <iterator>
 
@@ -29,31 +26,12 @@ void groupByLabel(const std::vector<int>& label, int n_labels, std::vector<int>&
         if (label[d] >= 0) idx[static_cast<std::size_t>(fill[static_cast<std::size_t>(label[d])]++)] = static_cast<int>(d);
 }
 
-/// The occurrences that are elements of the vertex classes' union-find, as a bit set with
-/// the rank of each word's first element: element numbers in occurrence order.
-struct OccurrenceRanks {
-    /// 64 occurrences: bit o % 64 set if occurrence o is an element, and the number of
-    /// elements before the word (together: one cache access per rank).
-    struct Word {
-        std::uint64_t element;  ///< the elements' bits
-        std::int64_t first;     ///< elements before the word
-    };
-    std::vector<Word> word;            ///< per 64 occurrences
-    std::vector<std::uint64_t> used;   ///< per word: the used (labelled) occurrences' bits
-    long n = 0;                        ///< number of elements
-    long n_used = 0;                   ///< number of used occurrences
-    /// Element number of occurrence @p o (which must be an element).
-    int rank(int o) const {
-        const Word& w = word[static_cast<std::size_t>(o) >> 6];
-        return static_cast<int>(w.first) + bitCount64(w.element & ((std::uint64_t(1) << (o & 63)) - 1));
-    }
-};
 } // namespace
 
 
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
                         const ImplicitCells* implicit, int threads, std::vector<int>* hex_darts, std::vector<int>* label_storage,
-                        std::vector<std::uint64_t>* private_vertices) {
+                        std::vector<std::uint64_t>* private_vertices, OccurrenceRanks* occurrence_ranks) {
     HexMesh out;
     if (private_vertices) private_vertices->clear();
     const auto& L = g.links();
@@ -73,6 +51,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
     std::vector<int> occSlot;
     int nk = 0;  // corner orbits: occurrence o has the slot nk + occ.rank(o)
     OccurrenceRanks occ;
+    if (occurrence_ranks) occ = std::move(*occurrence_ranks);
     // Implicit cells: classes without darts (numbered nvDarts, nvDarts + 1, ...), each with
     // its first occurrence (ascending).
     std::vector<long> dartless;
@@ -105,72 +84,7 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         const auto& jo = implicit->joined_occurrences;
         const auto nOcc = static_cast<std::size_t>(nocc);
         const int ufChunks = nd + nOcc >= 16384 ? std::max(1, threads) : 1;
-        {
-            // Per occurrence: bit 0 used, bit 1 joined (parallel marks; all writers of a pass
-            // store the same bit).
-            std::vector<char> mark(nOcc, 0);
-            auto use = [&](int o) { __atomic_store_n(&mark[static_cast<std::size_t>(o)], char(1), __ATOMIC_RELAXED); };
-            parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
-                int lastOcc = -1;  // the darts of one grid point of a tet are consecutive
-                for (std::size_t d = d0; d < d1; ++d) {
-                    if (!g.is_alive(DartHandle(static_cast<int>(d)))) continue;
-                    const int o = dartOcc(d);
-                    if (o >= 0 && o != lastOcc) {
-                        lastOcc = o;
-                        use(o);
-                    }
-                    if (nocc > 0 && a3Occ[d] >= 0) use(a3Occ[d]);
-                }
-            });
-            parallelChunks(implicit->cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
-                for (std::size_t i = b; i < e; ++i)
-                    for (int o : implicit->cells[i]) use(o);
-            });
-            parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
-                for (std::size_t i = b; i < e; ++i) {
-                    __atomic_fetch_or(&mark[static_cast<std::size_t>(jo[i].first)], char(2), __ATOMIC_RELAXED);
-                    __atomic_fetch_or(&mark[static_cast<std::size_t>(jo[i].second)], char(2), __ATOMIC_RELAXED);
-                }
-            });
-            // The marks as two bit sets, 64 occurrences a word, with each word's first rank.
-            const std::size_t nWords = (nOcc + 63) / 64;
-            occ.word.resize(nWords);
-            occ.used.resize(nWords);
-            std::vector<long> inChunk(static_cast<std::size_t>(ufChunks) + 1, 0), usedInChunk(static_cast<std::size_t>(ufChunks), 0);
-            parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
-                long n = 0;
-                for (std::size_t w = w0; w < w1; ++w) {
-                    std::uint64_t el = 0, us = 0;
-                    const std::size_t o0 = 64 * w, o1 = std::min(o0 + 64, nOcc);
-#if defined(__SSE2__)
-                    if (o1 - o0 == 64) {
-                        for (int q = 0; q < 4; ++q) {
-                            const __m128i v = _mm_loadu_si128(reinterpret_cast<const __m128i*>(mark.data() + o0 + 16 * static_cast<std::size_t>(q)));
-                            const auto nonzero = static_cast<unsigned>(~_mm_movemask_epi8(_mm_cmpeq_epi8(v, _mm_setzero_si128()))) & 0xffffu;
-                            const auto bit0 = static_cast<unsigned>(_mm_movemask_epi8(_mm_slli_epi16(v, 7)));  // each byte's bit 0
-                            el |= static_cast<std::uint64_t>(nonzero) << (16 * q);
-                            us |= static_cast<std::uint64_t>(bit0) << (16 * q);
-                        }
-                    } else
-#endif
-                        for (std::size_t o = o0; o < o1; ++o) {
-                            el |= static_cast<std::uint64_t>(mark[o] != 0) << (o - o0);
-                            us |= static_cast<std::uint64_t>(mark[o] & 1) << (o - o0);
-                        }
-                    occ.word[w] = {el, n};
-                    occ.used[w] = us;
-                    n += bitCount64(el);
-                    usedInChunk[static_cast<std::size_t>(k)] += bitCount64(us);
-                }
-                inChunk[static_cast<std::size_t>(k) + 1] = n;
-            });
-            for (std::size_t k = 0; k < static_cast<std::size_t>(ufChunks); ++k) inChunk[k + 1] += inChunk[k];
-            parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
-                for (std::size_t w = w0; w < w1; ++w) occ.word[w].first += inChunk[static_cast<std::size_t>(k)];
-            });
-            occ.n = inChunk.back();
-            for (const long u : usedInChunk) occ.n_used += u;
-        }
+        if (!occ.ready) occ = rankOccurrences(g, *implicit, threads);
         const auto nElements = static_cast<std::size_t>(nk) + static_cast<std::size_t>(occ.n);
         ConcurrentUnionFind uf(nElements);
         auto element = [&](int o) { return nk + occ.rank(o); };
@@ -226,36 +140,46 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         // Labels by first appearance (alive darts in order, then used occurrences in order);
         // the root's slot in parent is reused for its label (encoded as -2 - label).
         // Every dart alive (involutive): each entry is written below, no -1 fill first.
-        if (!involutive || vlabel.size() != nd) vlabel.assign(nd, -1);
         std::vector<int>& parent = uf.parent;
-        auto labelOf = [&](int x) {
-            const int r = parent[static_cast<std::size_t>(x)];
-            if (r < 0) return -2 - r;  // x is a root that has a label already
-            int& slot = parent[static_cast<std::size_t>(r)];
-            if (slot < 0) return -2 - slot;
-            slot = -2 - nv;
-            return nv++;
-        };
-        for (std::size_t d = 0; d < nd; ++d)
-            if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(corner[d]);
-        // Classes first labelled here have no darts; they are numbered in order from nvDarts.
-        // After its label is taken, a used occurrence's own slot gets the label too (nothing
-        // is looked up through a non-root slot: the labelled elements point to their roots).
-        nvDarts = nv;
-        // The first occurrence of each dartless class is collected (ascending) when its label
-        // is taken; at most one per used occurrence is reserved.
-        dartless.reserve(static_cast<std::size_t>(occ.n_used));
-        const std::size_t nWords = occ.word.size();
-        for (std::size_t w = 0; w < nWords; ++w) {
-            int x = nk + static_cast<int>(occ.word[w].first);
-            for (std::uint64_t m = occ.word[w].element; m != 0; m &= m - 1, ++x) {
-                const int i = __builtin_ctzll(m);
-                if (!((occ.used[w] >> i) & 1)) continue;
-                const int l = labelOf(x);
-                parent[static_cast<std::size_t>(x)] = -2 - l;
-                if (l == nvDarts + static_cast<int>(dartless.size())) dartless.push_back(static_cast<long>(64 * w) + i);
+        // The hexes' array is sized (and zeroed) beside this sequential labelling: one entry
+        // per cell of darts, then the implicit cells (cut to the hexes at the end).
+        auto labelClasses = [&]() {
+            if (!involutive || vlabel.size() != nd) vlabel.assign(nd, -1);
+            auto labelOf = [&](int x) {
+                const int r = parent[static_cast<std::size_t>(x)];
+                if (r < 0) return -2 - r;  // x is a root that has a label already
+                int& slot = parent[static_cast<std::size_t>(r)];
+                if (slot < 0) return -2 - slot;
+                slot = -2 - nv;
+                return nv++;
+            };
+            for (std::size_t d = 0; d < nd; ++d)
+                if (g.is_alive(DartHandle(static_cast<int>(d)))) vlabel[d] = labelOf(corner[d]);
+            // Classes first labelled here have no darts; they are numbered in order from nvDarts.
+            // After its label is taken, a used occurrence's own slot gets the label too (nothing
+            // is looked up through a non-root slot: the labelled elements point to their roots).
+            nvDarts = nv;
+            // The first occurrence of each dartless class is collected (ascending) when its label
+            // is taken; at most one per used occurrence is reserved.
+            dartless.reserve(static_cast<std::size_t>(occ.n_used));
+            const std::size_t nWords = occ.word.size();
+            for (std::size_t w = 0; w < nWords; ++w) {
+                int x = nk + static_cast<int>(occ.word[w].first);
+                for (std::uint64_t m = occ.word[w].element; m != 0; m &= m - 1, ++x) {
+                    const int i = __builtin_ctzll(m);
+                    if (!((occ.used[w] >> i) & 1)) continue;
+                    const int l = labelOf(x);
+                    parent[static_cast<std::size_t>(x)] = -2 - l;
+                    if (l == nvDarts + static_cast<int>(dartless.size())) dartless.push_back(static_cast<long>(64 * w) + i);
+                }
             }
-        }
+        };
+        parallelChunks(2, std::min(2, std::max(1, threads)), [&](int, std::size_t b, std::size_t e) {
+            for (std::size_t job = b; job < e; ++job) {
+                if (job == 0) labelClasses();
+                else out.hexes.resize(labels.cell_size.size() + implicit->cells.size());
+            }
+        });
         occSlot = std::move(parent);
         if (private_vertices) {
             // A dartless class holds no corner, so its occurrences were united only across
@@ -408,21 +332,25 @@ HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbi
         nHex += P.hexes.size();
         nPoly += P.polyhedra.size();
     }
-    out.hexes.reserve(nHex + (implicit ? implicit->cells.size() : 0));
+    // With implicit cells the array was sized beside the labelling (one entry per cell).
+    if (!implicit) out.hexes.reserve(nHex);
     out.polyhedra.reserve(nPoly);
     if (hex_darts) {
         hex_darts->clear();
         hex_darts->reserve(nHex);
     }
+    std::size_t at = 0;
     for (CellPart& P : cellParts) {
-        out.hexes.insert(out.hexes.end(), P.hexes.begin(), P.hexes.end());
+        if (implicit) std::copy(P.hexes.begin(), P.hexes.end(), out.hexes.begin() + static_cast<std::ptrdiff_t>(at));
+        else out.hexes.insert(out.hexes.end(), P.hexes.begin(), P.hexes.end());
+        at += P.hexes.size();
         if (hex_darts) hex_darts->insert(hex_darts->end(), P.hexDarts.begin(), P.hexDarts.end());
         std::move(P.polyhedra.begin(), P.polyhedra.end(), std::back_inserter(out.polyhedra));
         stats.degenerate_faces += P.degenerate_faces;
         stats.collapsed_cells += P.collapsed_cells;
     }
     if (implicit) {
-        const std::size_t base = out.hexes.size();
+        const std::size_t base = nHex;
         out.hexes.resize(base + implicit->cells.size());
         // The corners' element numbers (ranks): the bottom four (0-3) are the previous cell's
         // top four (4-7) when the cells are consecutive along z, and a top corner that is the

@@ -18,6 +18,9 @@
 
 namespace HexEx {
 
+/// Occurrences of the vertex union-find and their ranks (OccurrenceRanks.hh).
+struct OccurrenceRanks;
+
 /// Counts produced by the assembly.
 struct AssemblyStats {
     long quads = 0;           ///< <alpha_0, alpha_1, alpha_3> orbits
@@ -76,8 +79,11 @@ struct ImplicitCells {
 /// dart sits on or links to and that is not joined across a face, so the only hexes with
 /// corner v are the implicit cells with that corner occurrence (checkAssembledHexes() need
 /// not file their twin faces). Without @p implicit it is left empty.
+/// With @p implicit, @p occurrence_ranks may hold rankOccurrences() of @p g and @p implicit
+/// computed before (it is taken over); if it is not filled, they are computed here.
 HexMesh assembleHexMesh(const GMap<3>& g, const DartGeometry& geo, const HexOrbitLabels& labels, AssemblyStats& stats,
                         const ImplicitCells* implicit = nullptr, int threads = 1, std::vector<int>* hex_darts = nullptr,
-                        std::vector<int>* label_storage = nullptr, std::vector<std::uint64_t>* private_vertices = nullptr);
+                        std::vector<int>* label_storage = nullptr, std::vector<std::uint64_t>* private_vertices = nullptr,
+                        OccurrenceRanks* occurrence_ranks = nullptr);
 
 } // namespace HexEx
