@@ -1,6 +1,7 @@
 #include "VertexMerging.hh"
 
 #include "../Core/Parallel.hh"
+#include "../Core/Prefetch.hh"
 
 #include <Eigen/Dense>
 
@@ -122,6 +123,25 @@ void groupByClass(const std::vector<int>& label, std::size_t nc, int threads, st
     });
 }
 
+/// How many classes ahead mergedVertexPositions() asks for the darts' placed points.
+constexpr std::size_t kPointsAhead = 16;
+/// How many classes ahead it asks for their positions and boundary faces.
+constexpr std::size_t kPositionsAhead = 8;
+
+/// Asks the CPU to load the placed-point index of every dart of class @p l early.
+void prefetchPoints(const int* idx, const std::vector<int>& off, const DartPlacement& darts, std::size_t l) {
+    for (int k = off[l]; k < off[l + 1]; ++k) prefetchKept(&darts.point[static_cast<std::size_t>(idx[k])]);
+}
+
+/// Asks the CPU to load the position and boundary faces of every dart of class @p l early.
+void prefetchPositions(const int* idx, const std::vector<int>& off, const DartPlacement& darts, std::size_t l) {
+    for (int k = off[l]; k < off[l + 1]; ++k) {
+        const auto q = static_cast<std::size_t>(darts.point[static_cast<std::size_t>(idx[k])]);
+        prefetchKept(&darts.position[q]);
+        prefetchKept(&darts.boundary_hf[q]);
+    }
+}
+
 /// Centroid of @p p (used only to regularize the boundary least-squares problem).
 Vec3d centroid(const std::vector<Vec3d>& p) {
     Vec3d c(0, 0, 0);
@@ -209,6 +229,12 @@ std::vector<Vec3d> mergedVertexPositions(const TetMesh& mesh, const std::vector<
         std::vector<Vec3d> supportPts;  // their positions
         std::vector<std::pair<Vec3d, double>> normals;  // boundary planes n.x = off
         for (std::size_t l = lb; l < le; ++l) {
+            // The darts of a class lie anywhere in the per-dart and per-point arrays, and the
+            // usual case below is a chain of two dependent loads per dart: ask for the darts'
+            // placed points kPointsAhead classes ahead, their positions and boundary faces
+            // kPositionsAhead classes ahead (by then the points have arrived).
+            if (l + kPointsAhead < le) prefetchPoints(idx.get(), off, darts, l + kPointsAhead);
+            if (l + kPositionsAhead < le) prefetchPositions(idx.get(), off, darts, l + kPositionsAhead);
             // Usual case: no extras and every dart of the class at the very same position
             // (operator==, as distinctPositions() compares). The rules below then give the
             // first boundary dart's position if the class has one (the boundary rule with one
