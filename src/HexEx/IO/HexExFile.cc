@@ -115,6 +115,38 @@ std::string listTets(const TetList& list, const std::vector<int>& lines) {
     return s;
 }
 
+/// Fast path for the vertex section: the 3 @p nv coordinates from the parser's place, in
+/// one pass over the text (no per-token bookkeeping of the token-by-token parser), the parser
+/// then moved past them. Returns false on anything unusual (a missing, malformed or
+/// non-finite number), with @p positions and the parser as they were: the caller's
+/// token-by-token loop then reports the exact error.
+bool parseVerticesFast(std::string_view text, Parser& in, long long nv, std::vector<Vec3d>& positions) {
+    const std::size_t n = text.size();
+    std::size_t p = in.offset();
+    long long breaks = 0;
+    for (long long v = 0; v < nv; ++v) {
+        Vec3d x;
+        for (int k = 0; k < 3; ++k) {
+            while (p < n && isSpaceFast(text[p])) {
+                breaks += text[p] == '\n';
+                ++p;
+            }
+            const std::size_t start = p;
+            while (p < n && !isSpaceFast(text[p])) ++p;
+            double value = 0;
+            if (p == start || detail::parseRealFast(text.substr(start, p - start), value) != detail::NumberParse::Ok ||
+                !std::isfinite(value)) {
+                positions.clear();
+                return false;
+            }
+            x[k] = value;
+        }
+        positions.push_back(x);
+    }
+    in.advance(p, breaks);
+    return true;
+}
+
 /// Tokens per tet: 4 vertex indices and 12 parameters.
 constexpr int kTetTokens = 16;
 
@@ -232,7 +264,8 @@ bool parseTetsParallel(std::string_view text, std::size_t begin, int firstLine, 
     return true;
 }
 
-/// readHexExBuffer(); @p chunked: large tet sections go through parseTetsParallel() first.
+/// readHexExBuffer(); @p chunked: the vertex section goes through parseVerticesFast() and large tet
+/// sections through parseTetsParallel() first.
 ParametrizedTetMesh readBuffer(std::string_view text, const std::string& name, ReadReport* report, int threads,
                                bool chunked) {
     Parser in(text, name);
@@ -244,7 +277,8 @@ ParametrizedTetMesh readBuffer(std::string_view text, const std::string& name, R
     // A vertex takes at least 6 bytes ("0 0 0\n"): never reserve more than the file can hold.
     in.setNote("file declares " + std::to_string(nv) + " vertices");
     positions.reserve(static_cast<std::size_t>(std::min<long long>(nv, in.remaining() / 5 + 1)));
-    for (long long v = 0; v < nv; ++v) {
+    const bool parsedVertices = chunked && parseVerticesFast(text, in, nv, positions);
+    for (long long v = parsedVertices ? nv : 0; v < nv; ++v) {
         Vec3d p;
         for (int k = 0; k < 3; ++k)
             p[k] = in.real([&] {

@@ -170,6 +170,12 @@ public:
     std::size_t remaining() const { return text_.size() - pos_; }
     /// Byte offset in the text.
     std::size_t offset() const { return pos_; }
+    /// Moves on to byte @p offset, @p lineBreaks line breaks further, after the caller
+    /// parsed the text up to there itself (a fast path over a run of tokens).
+    void advance(std::size_t offset, long long lineBreaks) {
+        pos_ = offset;
+        line_ += lineBreaks;
+    }
 
     /// The next token; fails at the end of the text, naming @p what was expected.
     Token next(const std::string& what) {
