@@ -7,6 +7,7 @@
 #include "../Core/Parallel.hh"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 
 namespace HexEx {
@@ -35,11 +36,10 @@ OccurrenceRanks rankOccurrences(const GMap<3>& g, const ImplicitCells& implicit,
             __atomic_fetch_or(&bits, b, __ATOMIC_RELAXED);
         }
     };
+    // A used occurrence is an element too: the used bits join the element bits with the
+    // prefix counts below (one OR per mark here).
     auto join = [&](int o) { set(occ.word[static_cast<std::size_t>(o) >> 6].element, o); };
-    auto use = [&](int o) {
-        set(occ.used[static_cast<std::size_t>(o) >> 6], o);
-        join(o);
-    };
+    auto use = [&](int o) { set(occ.used[static_cast<std::size_t>(o) >> 6], o); };
     parallelChunks(nd, ufChunks, [&](int, std::size_t d0, std::size_t d1) {
         int lastOcc = -1;  // the darts of one grid point of a tet are consecutive
         for (std::size_t d = d0; d < d1; ++d) {
@@ -53,8 +53,13 @@ OccurrenceRanks rankOccurrences(const GMap<3>& g, const ImplicitCells& implicit,
         }
     });
     parallelChunks(implicit.cells.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
-        for (std::size_t i = b; i < e; ++i)
-            for (int o : implicit.cells[i]) use(o);
+        const std::array<int, 8>* prev = nullptr;  // a cell's bottom is often the previous top
+        for (std::size_t i = b; i < e; ++i) {
+            const std::array<int, 8>& c = implicit.cells[i];
+            const bool onTop = prev && c[0] == (*prev)[4] && c[1] == (*prev)[5] && c[2] == (*prev)[6] && c[3] == (*prev)[7];
+            for (std::size_t k = onTop ? 4 : 0; k < 8; ++k) use(c[k]);
+            prev = &c;
+        }
     });
     parallelChunks(jo.size(), ufChunks, [&](int, std::size_t b, std::size_t e) {
         for (std::size_t i = b; i < e; ++i) {
@@ -67,6 +72,7 @@ OccurrenceRanks rankOccurrences(const GMap<3>& g, const ImplicitCells& implicit,
     parallelChunks(nWords, ufChunks, [&](int k, std::size_t w0, std::size_t w1) {
         long n = 0;
         for (std::size_t w = w0; w < w1; ++w) {
+            occ.word[w].element |= occ.used[w];
             occ.word[w].first = n;
             n += bitCount64(occ.word[w].element);
             usedInChunk[static_cast<std::size_t>(k)] += bitCount64(occ.used[w]);
