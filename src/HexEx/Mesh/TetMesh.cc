@@ -133,18 +133,35 @@ void TetMesh::build_adjacency(int threads) {
         unsigned long long key;  // the other two vertices, smaller one in the high half
         int hf;
     };
+    // The same pass over the star counts the edges' first pass (see "Edges" below): v's
+    // larger neighbours and the (tet, edge) incidences of its edges.
+    ve_off_.resize(nv + 1);
+    ve_off_[0] = 0;
+    std::vector<int> incidences(nv + 1);  // per vertex: (tet, edge) pairs of its edges; then prefix sums
+    incidences[0] = 0;
     std::vector<std::vector<Side>> buckets(static_cast<std::size_t>(vthreads));
+    std::vector<std::vector<int>> seenOf(static_cast<std::size_t>(vthreads));
     parallelBlocks(nv, kVertexBlock, vthreads, [&](int thread, std::size_t block, std::size_t vb, std::size_t ve) {
         std::vector<Side>& bucket = buckets[static_cast<std::size_t>(thread)];
+        std::vector<int>& seen = seenOf[static_cast<std::size_t>(thread)];  // seen[w] == v: w counted for v
+        if (seen.empty()) seen.assign(nv, -1);
         long long firstBad = -1, firstBadCount = 0;
         for (std::size_t v = vb; v < ve; ++v) {
             if (v + kStarAhead < ve)
                 prefetchStar(vc_idx_.data() + vc_off_[v + kStarAhead], vc_idx_.data() + vc_off_[v + kStarAhead + 1],
                              cells_.data(), 1);
             bucket.clear();
+            const int vi = static_cast<int>(v);
+            int distinct = 0, total = 0;
             for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o) {
                 const int c = vc_idx_[o];
                 const auto& cv = cells_[static_cast<std::size_t>(c)];
+                for (const auto w : cv) {
+                    if (w.idx() <= vi) continue;
+                    ++total;
+                    distinct += seen[w.uidx()] != vi;
+                    seen[w.uidx()] = vi;
+                }
                 for (int i = 0; i < 4; ++i) {
                     if (cv[i].uidx() == v) continue;  // the face opposite v does not contain it
                     int a = cv[kFaceCorners[i][0]].idx(), b = cv[kFaceCorners[i][1]].idx(), d = cv[kFaceCorners[i][2]].idx();
@@ -155,6 +172,8 @@ void TetMesh::build_adjacency(int threads) {
                     bucket.push_back({(static_cast<unsigned long long>(a) << 32) | static_cast<unsigned>(b), 4 * c + i});
                 }
             }
+            ve_off_[v + 1] = distinct;
+            incidences[v + 1] = total;
             std::sort(bucket.begin(), bucket.end(),
                       [](const Side& x, const Side& y) { return x.key < y.key || (x.key == y.key && x.hf < y.hf); });
             for (std::size_t k = 0; k < bucket.size();) {
@@ -172,6 +191,7 @@ void TetMesh::build_adjacency(int threads) {
         }
         badFace[block] = {firstBad, firstBadCount};
     });
+    std::vector<std::vector<int>>().swap(seenOf);
     std::array<long long, 2> bad = {-1, 0};
     for (const auto& b : badFace)
         if (b[0] >= 0 && (bad[0] < 0 || b[0] < bad[0])) bad = b;
@@ -225,32 +245,13 @@ void TetMesh::build_adjacency(int threads) {
 
     // Edges, grouped by smaller endpoint v and sorted by the larger one w; all their work is
     // done per vertex v, on the tets of its star (the tets of an edge (v, w) all contain v),
-    // in two parallel passes. Pass 1 counts v's larger neighbours and the (tet, edge)
-    // incidences of its edges (marks per chunk instead of sorting the neighbour lists);
+    // in two parallel passes. Pass 1 (within the face matching above) counts v's larger
+    // neighbours and the (tet, edge) incidences of its edges (marks per thread instead of
+    // sorting the neighbour lists);
     // after two prefix sums, pass 2 numbers the edges, fills the tets' edge slots, the
     // number of tets per edge, and walks every edge's ring of tets while the star is in the
     // cache. The walk starts at the last boundary face met in tet order (the star is in tet
     // order), else at the first tet: the same rule for any thread count.
-    ve_off_.resize(nv + 1);
-    ve_off_[0] = 0;
-    std::vector<int> incidences(nv + 1);  // per vertex: (tet, edge) pairs of its edges; then prefix sums
-    incidences[0] = 0;
-    parallelChunks(nv, vthreads, [&](int, std::size_t b, std::size_t e) {
-        std::vector<int> seen(nv, -1);  // seen[w] == v: w counted for v
-        for (std::size_t v = b; v < e; ++v) {
-            const int vi = static_cast<int>(v);
-            int distinct = 0, total = 0;
-            for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o)
-                for (const auto w : cells_[static_cast<std::size_t>(vc_idx_[o])]) {
-                    if (w.idx() <= vi) continue;
-                    ++total;
-                    distinct += seen[w.uidx()] != vi;
-                    seen[w.uidx()] = vi;
-                }
-            ve_off_[v + 1] = distinct;
-            incidences[v + 1] = total;
-        }
-    });
     for (std::size_t v = 0; v < nv; ++v) {
         ve_off_[v + 1] += ve_off_[v];
         incidences[v + 1] += incidences[v];
