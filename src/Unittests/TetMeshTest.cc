@@ -255,6 +255,48 @@ TEST(TetMesh, ThreeTetsOnOneFaceThrow) {
     EXPECT_FALSE(m.has_adjacency());
 }
 
+TEST(TetMesh, FirstNonManifoldFaceNamedTheSameOnAnyThreadCount) {
+    // A cube of 29,791 vertices (faces matched in blocks of vertices on several threads)
+    // with two faces made non-manifold by extra tets on them: one interior face of tet 20000
+    // shared by 3 tets, one of tet 100 shared by 4. The face whose smallest halfface comes
+    // first is named, with its tet count, for any thread count.
+    TetMesh clean = generateCube(30, 1).mesh;
+    ASSERT_GE(clean.n_vertices(), 20000u);
+    clean.build_adjacency(1);
+    auto interiorFace = [&](int c) {
+        for (int i = 0; i < 4; ++i)
+            if (clean.opposite_halfface(TetMesh::halfface(CellHandle(c), i)).is_valid()) return i;
+        return -1;
+    };
+    const int fLate = interiorFace(20000), fEarly = interiorFace(100);
+    ASSERT_GE(fLate, 0);
+    ASSERT_GE(fEarly, 0);
+    const int nbrEarly = TetMesh::cell(clean.opposite_halfface(TetMesh::halfface(CellHandle(100), fEarly))).idx();
+    TetMesh m = generateCube(30, 1).mesh;
+    auto addOnFace = [&](int c, int i, const Vec3d& apex) {
+        const VertexHandle x = m.add_vertex(apex);
+        const auto cv = m.cell_vertices(CellHandle(c));
+        m.add_cell({cv[TetMesh::kFaceCorners[i][0]], cv[TetMesh::kFaceCorners[i][1]], cv[TetMesh::kFaceCorners[i][2]], x});
+    };
+    addOnFace(20000, fLate, {5, 5, 5});
+    addOnFace(100, fEarly, {6, 5, 5});
+    addOnFace(100, fEarly, {7, 5, 5});
+    const int named = std::min(100, nbrEarly);
+    std::string first;
+    for (int threads = 1; threads <= 3; ++threads) {
+        try {
+            m.build_adjacency(threads);
+            ADD_FAILURE() << "expected InputError at " << threads << " threads";
+        } catch (const InputError& e) {
+            const std::string msg = e.what();
+            EXPECT_EQ(msg.rfind("non-manifold mesh: face (", 0), 0u) << msg;
+            EXPECT_NE(msg.find(") of tet " + std::to_string(named) + " is shared by 4 tets"), std::string::npos) << msg;
+            if (threads == 1) first = msg;
+            EXPECT_EQ(msg, first) << threads << " threads";
+        }
+    }
+}
+
 TEST(TetMesh, AdjacencyMatchesABruteForceReferenceOnAnyThreadCount) {
     // A cube mesh large enough for the parallel paths (>= 20,000 vertices, >= 50,000 tets),
     // its vertices and tets shuffled so that no order is inherited from the generator.

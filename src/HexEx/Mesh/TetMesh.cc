@@ -117,7 +117,7 @@ void TetMesh::build_adjacency(int threads) {
 
     // Opposite halffaces. Every face is matched within the bucket of its smallest vertex
     // v: the halffaces of the tets around v whose smallest vertex is v, keyed by their
-    // other two vertices and sorted; equal keys are the two sides of one face. A halfface
+    // other two vertices; equal keys are the two sides of one face. A halfface
     // lies in exactly one bucket, so the vertices run in parallel and each writes only the
     // slots of its own bucket. A key held by three or more halffaces is a non-manifold
     // face; the one whose first tet and face come first is reported (for any thread count).
@@ -129,9 +129,18 @@ void TetMesh::build_adjacency(int threads) {
     const int vthreads = nv < 20000 ? 1 : resolveThreadCount(threads);
     const std::size_t vblocks = (nv + kVertexBlock - 1) / kVertexBlock;
     std::vector<std::array<long long, 2>> badFace(std::max<std::size_t>(1, vblocks), {-1, 0});
-    struct Side {
-        unsigned long long key;  // the other two vertices, smaller one in the high half
-        int hf;
+    // A face's key: its other two vertices, the smaller one in the high half. Keys go into a
+    // small hash table per thread (open addressing; a slot belongs to the vertex in its stamp,
+    // so it is never cleared), which pairs the two sides of a face without sorting the bucket;
+    // the halffaces arrive in ascending order (the star is in tet order), so a key's first
+    // halfface is its smallest.
+    struct FaceSlot {
+        unsigned long long key;
+        int first, second, count, stamp;
+    };
+    struct FaceTable {
+        std::vector<FaceSlot> slot;
+        std::vector<std::size_t> used;  // the slots of the current vertex
     };
     // The same pass over the star counts the edges' first pass (see "Edges" below): v's
     // larger neighbours and the (tet, edge) incidences of its edges.
@@ -139,10 +148,10 @@ void TetMesh::build_adjacency(int threads) {
     ve_off_[0] = 0;
     std::vector<int> incidences(nv + 1);  // per vertex: (tet, edge) pairs of its edges; then prefix sums
     incidences[0] = 0;
-    std::vector<std::vector<Side>> buckets(static_cast<std::size_t>(vthreads));
+    std::vector<FaceTable> tables(static_cast<std::size_t>(vthreads));
     std::vector<std::vector<int>> seenOf(static_cast<std::size_t>(vthreads));
     parallelBlocks(nv, kVertexBlock, vthreads, [&](int thread, std::size_t block, std::size_t vb, std::size_t ve) {
-        std::vector<Side>& bucket = buckets[static_cast<std::size_t>(thread)];
+        FaceTable& table = tables[static_cast<std::size_t>(thread)];
         std::vector<int>& seen = seenOf[static_cast<std::size_t>(thread)];  // seen[w] == v: w counted for v
         if (seen.empty()) seen.assign(nv, -1);
         long long firstBad = -1, firstBadCount = 0;
@@ -150,8 +159,16 @@ void TetMesh::build_adjacency(int threads) {
             if (v + kStarAhead < ve)
                 prefetchStar(vc_idx_.data() + vc_off_[v + kStarAhead], vc_idx_.data() + vc_off_[v + kStarAhead + 1],
                              cells_.data(), 1);
-            bucket.clear();
             const int vi = static_cast<int>(v);
+            // At most three faces of each tet of the star contain v: at most half the slots used.
+            const std::size_t need = std::max<std::size_t>(16, 6 * static_cast<std::size_t>(vc_off_[v + 1] - vc_off_[v]));
+            if (table.slot.size() < need) {
+                std::size_t size = 16;
+                while (size < need) size *= 2;
+                table.slot.assign(size, FaceSlot{0, -1, -1, 0, -1});
+            }
+            const std::size_t mask = table.slot.size() - 1;
+            table.used.clear();
             int distinct = 0, total = 0;
             for (int o = vc_off_[v]; o < vc_off_[v + 1]; ++o) {
                 const int c = vc_idx_[o];
@@ -169,24 +186,29 @@ void TetMesh::build_adjacency(int threads) {
                     else if (b == static_cast<int>(v)) b = d;
                     if (a < static_cast<int>(v) || b < static_cast<int>(v)) continue;  // another vertex's bucket
                     if (b < a) std::swap(a, b);
-                    bucket.push_back({(static_cast<unsigned long long>(a) << 32) | static_cast<unsigned>(b), 4 * c + i});
+                    const unsigned long long key = (static_cast<unsigned long long>(a) << 32) | static_cast<unsigned>(b);
+                    std::size_t at = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+                    while (table.slot[at].stamp == vi && table.slot[at].key != key) at = (at + 1) & mask;
+                    FaceSlot& f = table.slot[at];
+                    if (f.stamp != vi) {
+                        f = FaceSlot{key, 4 * c + i, -1, 1, vi};
+                        table.used.push_back(at);
+                    } else if (++f.count == 2) {
+                        f.second = 4 * c + i;
+                    }
                 }
             }
             ve_off_[v + 1] = distinct;
             incidences[v + 1] = total;
-            std::sort(bucket.begin(), bucket.end(),
-                      [](const Side& x, const Side& y) { return x.key < y.key || (x.key == y.key && x.hf < y.hf); });
-            for (std::size_t k = 0; k < bucket.size();) {
-                std::size_t e = k + 1;
-                while (e < bucket.size() && bucket[e].key == bucket[k].key) ++e;
-                if (e - k == 2) {
-                    opposite_[static_cast<std::size_t>(bucket[k].hf)] = bucket[k + 1].hf;
-                    opposite_[static_cast<std::size_t>(bucket[k + 1].hf)] = bucket[k].hf;
-                } else if (e - k > 2 && (firstBad < 0 || bucket[k].hf < firstBad)) {
-                    firstBad = bucket[k].hf;
-                    firstBadCount = static_cast<long long>(e - k);
+            for (const std::size_t at : table.used) {
+                const FaceSlot& f = table.slot[at];
+                if (f.count == 2) {
+                    opposite_[static_cast<std::size_t>(f.first)] = f.second;
+                    opposite_[static_cast<std::size_t>(f.second)] = f.first;
+                } else if (f.count > 2 && (firstBad < 0 || f.first < firstBad)) {
+                    firstBad = f.first;
+                    firstBadCount = f.count;
                 }
-                k = e;
             }
         }
         badFace[block] = {firstBad, firstBadCount};
