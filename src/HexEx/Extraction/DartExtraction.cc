@@ -8,6 +8,11 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstring>
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 #include <new>
 #include <optional>
 #include <string>
@@ -424,6 +429,128 @@ void writeTetDarts(const TetSoS& T, int c, const GridBox& box, const DartSet::De
                 out = writeFrames(out, c, z, sign, n == 48 ? kAllFrames : pointFrames(T, S, di, x, y, zc, l, octantFrames));
             }
 }
+
+/// Where one chunk of the extraction writes its darts (extractInRegions()): its region of
+/// the one dart array while the darts fit, then a vector of its own.
+class DartWriter {
+public:
+    /// A writer into [@p begin, @p end).
+    DartWriter(Dart* begin, Dart* end) : at_(begin), end_(end) {}
+    /// Writes the darts of tet @p tet (sign @p sign) at @p z with the frames of @p frames.
+    void write(int tet, const Vec3i& z, int sign, std::uint64_t frames) {
+        const auto k = static_cast<std::size_t>(__builtin_popcountll(frames));
+        if (overflow_.empty() && static_cast<std::size_t>(end_ - at_) >= k) {
+            at_ = writeFrames(at_, tet, z, static_cast<signed char>(sign), frames);
+            return;
+        }
+        const std::size_t old = overflow_.size();
+        overflow_.resize(old + k);
+        writeFrames(overflow_.data() + old, tet, z, static_cast<signed char>(sign), frames);
+    }
+    /// One past the last dart written into the region.
+    Dart* regionEnd() const { return at_; }
+    /// The darts that did not fit into the region (in order after them).
+    DartVector& overflow() { return overflow_; }
+
+private:
+    Dart* at_;
+    Dart* end_;
+    DartVector overflow_;
+};
+
+/// Gives the pages of @p v beyond its size back to the system (the regions' margins that
+/// were written before the darts moved down): they would stay resident for as long as the
+/// darts live. Only where the system has madvise(); elsewhere they stay.
+void releaseTail(DartVector& v) {
+#if defined(__linux__)
+    const auto page = static_cast<std::uintptr_t>(sysconf(_SC_PAGESIZE));
+    const auto from = (reinterpret_cast<std::uintptr_t>(v.data() + v.size()) + page - 1) / page * page;
+    const auto to = reinterpret_cast<std::uintptr_t>(v.data() + v.capacity()) / page * page;
+    if (page > 0 && to > from) madvise(reinterpret_cast<void*>(from), to - from, MADV_DONTNEED);
+#else
+    (void)v;
+#endif
+}
+
+/// A guess of the darts of tets [b, e): 48 per unit cell of their parameter volume (maps
+/// without flipped tets; implicit cells and the domain's boundary only make it smaller).
+double expectedDarts(const std::vector<TetSoS>& tets, std::size_t b, std::size_t e) {
+    double v = 0;
+    for (std::size_t c = b; c < e; ++c) {
+        const Vec3d* p = tets[c].p;
+        if (tets[c].vol == 0 || !p) continue;
+        const Vec3d a = p[1] - p[0], u = p[2] - p[0], w = p[3] - p[0];
+        v += std::abs(a[0] * (u[1] * w[2] - u[2] * w[1]) - a[1] * (u[0] * w[2] - u[2] * w[0]) + a[2] * (u[0] * w[1] - u[1] * w[0])) / 6;
+    }
+    return 48 * v;
+}
+
+/// The extraction of a map without flipped tets on several threads, without joining copies:
+/// each chunk of tets (parallelChunks()) gets a region of one dart array, sized without
+/// zeroing from expectedDarts() with a margin, and @p body(k, b, e, writer) writes chunk k's
+/// darts there in order; the regions are then moved together (each down, in order: pages
+/// already touched) and the array cut to the total. A chunk whose darts outgrow its region
+/// goes on in a vector of its own; then all are joined into a new array (the guess is short
+/// only by more than its margin). Returns false (nothing done) if the guessed array is too
+/// large to ask for; then the caller extracts as before. Sets @p out.darts.
+template <class Body>
+bool extractInRegions(const std::vector<TetSoS>& tets, int chunks, DartSet& out, Body&& body) {
+    const std::size_t n = tets.size();
+    std::vector<double> guess(static_cast<std::size_t>(chunks), 0.0);
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) { guess[static_cast<std::size_t>(k)] = expectedDarts(tets, b, e); });
+    // At most 2^28 darts (5 GiB of address space; the guess overshoots where implicit cells
+    // have no darts, and only the pages written are ever touched).
+    constexpr double kMostDarts = 268435456.0;
+    std::vector<std::size_t> start(static_cast<std::size_t>(chunks) + 1, 0);
+    double size = 0;
+    for (std::size_t k = 0; k < guess.size(); ++k) {
+        size += std::ceil(1.03 * guess[k]) + 4096;  // a margin for the chunk's boundary
+        if (!(size <= kMostDarts)) return false;    // (also a non-finite guess)
+        start[k + 1] = static_cast<std::size_t>(size);
+    }
+    DartVector all;
+    try {
+        all.resize(start.back());  // default-initialized: only the pages written are touched
+    } catch (const std::bad_alloc&) {
+        return false;
+    }
+    std::vector<DartWriter> writers;
+    writers.reserve(static_cast<std::size_t>(chunks));
+    for (std::size_t k = 0; k < guess.size(); ++k) writers.emplace_back(all.data() + start[k], all.data() + start[k + 1]);
+    parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) { body(k, b, e, writers[static_cast<std::size_t>(k)]); });
+    std::size_t total = 0;
+    bool spilled = false;
+    for (std::size_t k = 0; k < writers.size(); ++k) {
+        total += static_cast<std::size_t>(writers[k].regionEnd() - (all.data() + start[k])) + writers[k].overflow().size();
+        spilled = spilled || !writers[k].overflow().empty();
+    }
+    if (spilled) {
+        // The guess fell short by more than the margin somewhere: join into a new array.
+        DartVector joined;
+        joined.resize(total);
+        Dart* to = joined.data();
+        for (std::size_t k = 0; k < writers.size(); ++k) {
+            to = std::copy(all.data() + start[k], writers[k].regionEnd(), to);
+            to = std::copy(writers[k].overflow().begin(), writers[k].overflow().end(), to);
+        }
+        out.darts = std::move(joined);
+        return true;
+    }
+    // Chunk k's darts go right after those before it, never above its region's start: the
+    // regions moved down in order overwrite only darts already moved. The pages they leave
+    // behind are given back (releaseTail()).
+    Dart* to = all.data();
+    for (std::size_t k = 0; k < writers.size(); ++k) {
+        const Dart* from = all.data() + start[k];
+        const auto m = static_cast<std::size_t>(writers[k].regionEnd() - from);
+        if (to != from && m > 0) std::memmove(static_cast<void*>(to), from, m * sizeof(Dart));
+        to += m;
+    }
+    all.resize(total);
+    releaseTail(all);
+    out.darts = std::move(all);
+    return true;
+}
 } // namespace
 
 DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_points, bool implicit_cells,
@@ -480,48 +607,57 @@ DartSet extractDarts(const std::vector<TetSoS>& tets, int threads, double max_po
     };
     DartSet s;
     if (!folds) {
-        // Without flipped tets every unit cell has its 48 darts once: the volume predicts the
-        // count, chunk 0 reserves room for all (untouched reserved memory costs no RSS) and
-        // the other chunks' darts are appended to it. One pass.
-        std::vector<DartVector> parts(static_cast<std::size_t>(chunks));
-        parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
-            auto& out = parts[static_cast<std::size_t>(k)];
-            const double cells = k == 0 ? expected_cells : expected_cells * static_cast<double>(e - b) / static_cast<double>(n);
-            try {
-                out.reserve(static_cast<std::size_t>(std::min(50.0 * std::max(0.0, cells) + 4096.0, 64.0 * 1024 * 1024)));
-            } catch (const std::bad_alloc&) {  // the estimate is only a hint
-            }
+        // Chunk k's darts in order, each point's to emit(tet, z, sign, frames).
+        auto extractChunk = [&](int k, std::size_t b, std::size_t e, auto&& emit) {
             for (std::size_t c = b; c < e; ++c) {
                 const TetSoS& T = tets[c];
                 if (T.vol == 0) continue;
                 GridBox box;
                 DartSet::DenseIndex* di = prepareTet(k, c, box);
                 const int tet = static_cast<int>(c);
-                const signed char sign = static_cast<signed char>(T.vol);
-                counted(c, visitTetDarts(T, box, di, octantFrames, capCheck, [&](const Vec3i& z, std::uint64_t frames) {
+                counted(c, visitTetDarts(T, box, di, octantFrames, capCheck,
+                                         [&](const Vec3i& z, std::uint64_t frames) { emit(tet, z, T.vol, frames); }));
+            }
+        };
+        // Without flipped tets every unit cell has its 48 darts once: the volume predicts the
+        // count. On several threads each chunk writes into its own region of one array
+        // (extractInRegions()); on one, or if that array is too large to ask for, chunk 0
+        // reserves room for all (untouched reserved memory costs no RSS) and the other
+        // chunks' darts are appended to it. One pass either way.
+        if (chunks == 1 || !extractInRegions(tets, chunks, s, [&](int k, std::size_t b, std::size_t e, DartWriter& out) {
+                extractChunk(k, b, e, [&](int tet, const Vec3i& z, int sign, std::uint64_t frames) { out.write(tet, z, sign, frames); });
+            })) {
+            std::vector<DartVector> parts(static_cast<std::size_t>(chunks));
+            parallelChunks(n, chunks, [&](int k, std::size_t b, std::size_t e) {
+                auto& out = parts[static_cast<std::size_t>(k)];
+                const double cells = k == 0 ? expected_cells : expected_cells * static_cast<double>(e - b) / static_cast<double>(n);
+                try {
+                    out.reserve(static_cast<std::size_t>(std::min(50.0 * std::max(0.0, cells) + 4096.0, 64.0 * 1024 * 1024)));
+                } catch (const std::bad_alloc&) {  // the estimate is only a hint
+                }
+                extractChunk(k, b, e, [&](int tet, const Vec3i& z, int sign, std::uint64_t frames) {
                     const std::size_t at = out.size();
                     out.resize(at + static_cast<std::size_t>(__builtin_popcountll(frames)));
-                    writeFrames(out.data() + at, tet, z, sign, frames);
-                }));
-            }
-        });
-        std::size_t total = 0;
-        for (const auto& p : parts) total += p.size();
-        s.darts = std::move(parts[0]);
-        // The other chunks' darts are appended by all threads (sized without zeroing: the
-        // copies touch the new pages in parallel), each thread an equal share of the range.
-        const std::size_t head = s.darts.size();
-        s.darts.resize(total);
-        parallelChunks(total - head, chunks, [&](int, std::size_t b, std::size_t e) {
-            std::size_t at = 0;  // start of part k in the appended range
-            for (std::size_t k = 1; k < parts.size(); ++k) {
-                const std::size_t lo = std::max(b, at), hi = std::min(e, at + parts[k].size());
-                if (lo < hi) std::copy(parts[k].begin() + static_cast<long>(lo - at), parts[k].begin() + static_cast<long>(hi - at),
-                                       s.darts.begin() + static_cast<long>(head + lo));
-                at += parts[k].size();
-            }
-        });
-        for (std::size_t k = 1; k < parts.size(); ++k) DartVector().swap(parts[k]);
+                    writeFrames(out.data() + at, tet, z, static_cast<signed char>(sign), frames);
+                });
+            });
+            std::size_t total = 0;
+            for (const auto& p : parts) total += p.size();
+            s.darts = std::move(parts[0]);
+            // The other chunks' darts are appended by all threads (sized without zeroing: the
+            // copies touch the new pages in parallel), each thread an equal share of the range.
+            const std::size_t head = s.darts.size();
+            s.darts.resize(total);
+            parallelChunks(total - head, chunks, [&](int, std::size_t b, std::size_t e) {
+                std::size_t at = 0;  // start of part k in the appended range
+                for (std::size_t k = 1; k < parts.size(); ++k) {
+                    const std::size_t lo = std::max(b, at), hi = std::min(e, at + parts[k].size());
+                    if (lo < hi) std::copy(parts[k].begin() + static_cast<long>(lo - at), parts[k].begin() + static_cast<long>(hi - at),
+                                           s.darts.begin() + static_cast<long>(head + lo));
+                    at += parts[k].size();
+                }
+            });
+        }
         s.tet_begin.assign(n + 1, 0);
         for (std::size_t c = 0; c < n; ++c) s.tet_begin[c + 1] = s.tet_begin[c] + count[c];
     } else {
