@@ -539,11 +539,16 @@ bool extractInRegions(const std::vector<TetSoS>& tets, int chunks, DartSet& out,
     // Chunk k's darts go right after those before it, never above its region's start: the
     // regions moved down in order overwrite only darts already moved. The pages they leave
     // behind are given back (releaseTail()).
+    // Apart (implicit cells leave much of the guessed room empty), a region is copied by all
+    // threads, as the joining path does.
     Dart* to = all.data();
     for (std::size_t k = 0; k < writers.size(); ++k) {
         const Dart* from = all.data() + start[k];
         const auto m = static_cast<std::size_t>(writers[k].regionEnd() - from);
-        if (to != from && m > 0) std::memmove(static_cast<void*>(to), from, m * sizeof(Dart));
+        if (static_cast<std::size_t>(from - to) >= m)
+            parallelChunks(m, chunks, [&](int, std::size_t b, std::size_t e) { std::copy(from + b, from + e, to + b); });
+        else if (to != from)
+            std::memmove(static_cast<void*>(to), from, m * sizeof(Dart));
         to += m;
     }
     all.resize(total);
