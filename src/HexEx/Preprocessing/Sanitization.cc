@@ -158,11 +158,13 @@ SanitizeStats sanitizeParameters(const TetMesh& mesh, CornerParams& params, cons
     // in two equal chunks), so blocks of vertices are handed out as threads finish.
     const int threads = std::max(1, opt.threads);
     const bool oneChart = tr.halfface.all_identity();
-    const std::size_t nBlocks = (mesh.n_vertices() + kVertexBlock - 1) / kVertexBlock;
+    // One block on one thread (nothing to balance).
+    const std::size_t blockSize = threads > 1 ? kVertexBlock : std::max<std::size_t>(1, mesh.n_vertices());
+    const std::size_t nBlocks = (mesh.n_vertices() + blockSize - 1) / blockSize;
     std::vector<int> snapped(nBlocks, 0);
     std::vector<std::vector<CornerRepair>> repaired(nBlocks);
     std::vector<StarScratch> scratch(static_cast<std::size_t>(threads));
-    parallelBlocks(mesh.n_vertices(), kVertexBlock, threads, [&](int thread, std::size_t block, std::size_t vbegin, std::size_t vend) {
+    parallelBlocks(mesh.n_vertices(), blockSize, threads, [&](int thread, std::size_t block, std::size_t vbegin, std::size_t vend) {
     StarScratch& S = scratch[static_cast<std::size_t>(thread)];
     std::vector<int>& star = S.star;
     std::vector<unsigned char>& slot = S.slot;

@@ -345,12 +345,14 @@ Transitions computeTransitions(const TetMesh& mesh, const CornerParams& params, 
     // handed out as threads finish: faces inside a chart cost a comparison, faces between
     // charts a fit, and the charts' faces are not spread evenly over the halfface range (on
     // pig x2 two equal chunks took 0.026 and 0.017 s).
-    const std::size_t nBlocks = (nhf + kFitBlock - 1) / kFitBlock;
+    // One block on one thread (nothing to balance; no per-block lists to join).
+    const std::size_t blockSize = threads > 1 ? kFitBlock : std::max<std::size_t>(1, nhf);
+    const std::size_t nBlocks = (nhf + blockSize - 1) / blockSize;
     std::vector<int> ambiguous(nBlocks, 0);
     std::vector<int> inconsistent(nBlocks, 0);
     std::vector<std::vector<std::pair<std::size_t, FaceFit>>> ambiguousFits(nBlocks);
     std::vector<std::vector<std::pair<int, Vec3i>>> translations(nBlocks);
-    parallelBlocks(nhf, kFitBlock, std::max(1, threads), [&](int, std::size_t block, std::size_t hb, std::size_t he) {
+    parallelBlocks(nhf, blockSize, std::max(1, threads), [&](int, std::size_t block, std::size_t hb, std::size_t he) {
         for (std::size_t h = hb; h < he; ++h) {
             // The neighbours' corners and parameters a few tets ahead (they lie anywhere in
             // the arrays; this tet's own are read in order).
