@@ -15,4 +15,10 @@ using Vec3i = OpenMesh::Vec3i;
 /// The integer grid point as a double vector (exact for |x| < 2^53).
 inline Vec3d toVec3d(const Vec3i& v) { return Vec3d(v[0], v[1], v[2]); }
 
+/// Six times the signed volume of the tet (@p a, @p b, @p c, @p d): (b - a) x (c - a) . (d - a),
+/// positive for a positively oriented tet.
+inline double tetVolume6(const Vec3d& a, const Vec3d& b, const Vec3d& c, const Vec3d& d) {
+    return ((b - a) % (c - a)) | (d - a);
+}
+
 } // namespace HexEx

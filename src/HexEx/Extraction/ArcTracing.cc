@@ -25,11 +25,11 @@ constexpr double kBorderTolerance = 1e-9;
 double subVolume(const TetSoS& T, int j, const Vec3d& x) {
     Vec3d q[4] = {T.p[0], T.p[1], T.p[2], T.p[3]};
     q[j] = x;
-    return ((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0]);
+    return tetVolume6(q[0], q[1], q[2], q[3]);
 }
 
 /// Signed parametric volume of T.
-double volume(const TetSoS& T) { return ((T.p[1] - T.p[0]) % (T.p[2] - T.p[0])) | (T.p[3] - T.p[0]); }
+double volume(const TetSoS& T) { return tetVolume6(T.p[0], T.p[1], T.p[2], T.p[3]); }
 
 /// 3D point with barycentric coordinates @p lam (normalized here) in tet @p t.
 Vec3d mapBack(const TetMesh& mesh, int t, const double lam[4]) {

@@ -479,8 +479,7 @@ double expectedDarts(const std::vector<TetSoS>& tets, std::size_t b, std::size_t
     for (std::size_t c = b; c < e; ++c) {
         const Vec3d* p = tets[c].p;
         if (tets[c].vol == 0 || !p) continue;
-        const Vec3d a = p[1] - p[0], u = p[2] - p[0], w = p[3] - p[0];
-        v += std::abs(a[0] * (u[1] * w[2] - u[2] * w[1]) - a[1] * (u[0] * w[2] - u[2] * w[0]) + a[2] * (u[0] * w[1] - u[1] * w[0])) / 6;
+        v += std::abs(tetVolume6(p[0], p[1], p[2], p[3])) / 6;
     }
     return 48 * v;
 }

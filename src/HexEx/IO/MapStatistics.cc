@@ -54,7 +54,7 @@ MapStatistics computeMapStatistics(const ParametrizedTetMesh& pm) {
         const int sign = orient3d(p[0], p[1], p[2], p[3]);
         if (sign < 0) ++s.flipped_tets;
         if (sign == 0) ++s.degenerate_tets;
-        const double det = ((p[1] - p[0]) % (p[2] - p[0])) | (p[3] - p[0]);
+        const double det = tetVolume6(p[0], p[1], p[2], p[3]);
         volume6.add(det);
         for (const auto& q : p) {
             if (first) {

@@ -68,7 +68,7 @@ double checkedAbsVolume(const CornerParams& params, int threads, std::vector<std
                             throw InputError("tet " + std::to_string(c) + ": parameter " + std::to_string(p[k]) +
                                              " is out of range (|u| <= 1e9)");
                     }
-                const double vol = std::fabs(((q[1] - q[0]) % (q[2] - q[0])) | (q[3] - q[0])) / 6.0;
+                const double vol = std::fabs(tetVolume6(q[0], q[1], q[2], q[3])) / 6.0;
                 blockSum[blk] += vol;
                 offerLargest(blockTop[blk], {static_cast<int>(c), vol});
             }

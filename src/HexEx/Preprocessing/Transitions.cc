@@ -509,7 +509,7 @@ Singularities findSingularities(const TetMesh& mesh, const CornerParams& params,
             Vec3d u = p[o[0]] - p[ia], v = p[o[1]] - p[ia];
             u -= d * ((u | d) / dl2);
             v -= d * ((v | d) / dl2);
-            const double vol = ((p[1] - p[0]) % (p[2] - p[0])) | (p[3] - p[0]);
+            const double vol = tetVolume6(p[0], p[1], p[2], p[3]);
             const double ang = std::atan2((u % v).norm(), u | v);
             angle += vol > 0 ? ang : vol < 0 ? -ang : 0.0;
         }
